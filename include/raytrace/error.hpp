@@ -1,0 +1,35 @@
+// User-facing errors. Thrown once where the problem is found, caught only in main(), printed as one line.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace rt {
+
+// A position in a scene file; line and column are 1-based, as editors show them.
+struct SourceLoc {
+  std::string file;
+  int line = 0;
+  int col = 0;
+
+  std::string str() const { return file + ":" + std::to_string(line) + ":" + std::to_string(col); }
+};
+
+// Any error the user can fix: bad arguments, unreadable files, impossible values.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// An error at a place in a scene file; what() reads "file:line:col: error: message".
+class ParseError : public Error {
+ public:
+  ParseError(const SourceLoc& loc, const std::string& message)
+      : Error(loc.str() + ": error: " + message), loc_(loc) {}
+  const SourceLoc& loc() const { return loc_; }
+
+ private:
+  SourceLoc loc_;
+};
+
+}  // namespace rt

@@ -1,0 +1,34 @@
+// An image in linear float colour and its safe conversion to an 8-bit PNG file.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "raytrace/math.hpp"
+#include "raytrace/scene_desc.hpp"
+
+namespace rt {
+
+class Image {
+ public:
+  Image(int width, int height) : width_(width), height_(height), pixels_(size_t(width) * height, Color(0)) {}
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // Pixel (x, y) with y growing upward, as the course numbers pixels (§a.0).
+  Color& at(int x, int y) { return pixels_[size_t(height_ - 1 - y) * width_ + x]; }
+  const Color& at(int x, int y) const { return pixels_[size_t(height_ - 1 - y) * width_ + x]; }
+
+ private:
+  int width_, height_;
+  std::vector<Color> pixels_;  // top row first, as PNG stores them
+};
+
+// One colour channel to a byte: clamp to [0,1], then round (course §a.0) or truncate (.cli §A.4).
+unsigned char toByte(float c, Conventions::ToByte mode);
+
+// Writes the image as PNG at `path` without ever leaving a partial file there: it is written beside the
+// target under a temporary name and renamed over it only once complete. Throws Error on failure.
+void writePng(const Image& image, const std::string& path, Conventions::ToByte mode);
+
+}  // namespace rt

@@ -1,0 +1,30 @@
+// Surface appearance as shading reads it, whichever scene language described it.
+#pragma once
+
+#include "raytrace/math.hpp"
+
+namespace rt {
+
+// A POV-Ray `finish` block as written (csc473-course.md §b); kept for `sceneinfo`.
+struct Finish {
+  double ambient = 0, diffuse = 0, specular = 0;
+  double roughness = 1;  // course default; Blinn-Phong exponent 2/roughness² − 2 (§c.1)
+  double reflection = 0;
+  double refraction = 0;  // parsed and ignored, as in the course: the pigment's filter drives refraction (§c.4)
+  double ior = 1;
+};
+
+struct Material {
+  Color pigment{0};   // C
+  float filter = 0;   // f, the fraction of light transmitted (rgbf's fourth component)
+  Color ambient{0};   // per-term colours: POV ka·C, kd·C, ks·C; .cli Ca, Cd, Cs
+  Color diffuse{0};
+  Color specular{0};
+  float exponent = 0;    // Blinn-Phong exponent: POV 2/roughness² − 2, .cli P
+  float roughness = 1;   // Cook-Torrance α = roughness² (§c.2)
+  float reflection = 0;  // POV `reflection`, .cli Krefl
+  float ior = 1;
+  Finish finish;         // the POV values as written
+};
+
+}  // namespace rt

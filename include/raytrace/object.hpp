@@ -1,0 +1,34 @@
+// The abstract scene object: every shape answers one query, the closest intersection inside an open interval.
+#pragma once
+
+#include <optional>
+
+#include "raytrace/aabb.hpp"
+#include "raytrace/hit.hpp"
+#include "raytrace/interval.hpp"
+#include "raytrace/material.hpp"
+#include "raytrace/ray.hpp"
+
+namespace rt {
+
+template <class T> class Object {
+ public:
+  Object(const Material& material, int id) : material_(material), id_(id) {}
+  virtual ~Object() = default;
+
+  // The closest intersection whose t lies strictly inside `range`, or nothing. On a hit, `point` lies on the
+  // surface (re-projected, not just ray.at(t)) and `normal` is the unit outward normal at it.
+  virtual std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const = 0;
+
+  // World-space bounds, or nothing for unbounded shapes (planes), which stay outside any hierarchy.
+  virtual std::optional<Aabb<T>> bounds() const = 0;
+
+  const Material& material() const { return material_; }
+  int id() const { return id_; }  // 1-based position in the scene file, as printrays shows it
+
+ private:
+  Material material_;
+  int id_;
+};
+
+}  // namespace rt

@@ -1,0 +1,13 @@
+// The POV-Ray subset of the Cal Poly CSC 473 course (csc473-course.md §b), read as POV-Ray 3.7 reads it.
+#pragma once
+
+#include <string>
+
+#include "raytrace/scene_desc.hpp"
+
+namespace rt {
+
+// Parses a whole .pov text. Throws ParseError ("file:line:col: error: …") at the first problem.
+SceneDesc parsePov(const std::string& text, const std::string& file);
+
+}  // namespace rt

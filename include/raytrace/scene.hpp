@@ -1,0 +1,42 @@
+// The renderable scene at one precision: objects, lights and the two ray queries every ray kind uses.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "raytrace/object.hpp"
+#include "raytrace/precision.hpp"
+#include "raytrace/scene_desc.hpp"
+
+namespace rt {
+
+template <class T> struct Light {
+  Vec3<T> position;
+  Color color;
+};
+
+template <class T> class Scene {
+ public:
+  // `arithmetic` must be resolved (no Auto) and match T; see chooseArithmetic().
+  Scene(const SceneDesc& desc, const Arithmetic& arithmetic);
+
+  // The closest hit strictly inside `range` over all objects. Equal t resolve to the object that comes first
+  // in the file, so results never depend on traversal order (stability.md F13).
+  std::optional<Hit<T>> closestHit(const Ray<T>& ray, Interval<T> range) const;
+  // Whether anything at all lies strictly inside `range`: the any-hit query of shadow rays.
+  bool occluded(const Ray<T>& ray, Interval<T> range) const;
+
+  const SceneDesc& desc() const { return desc_; }
+  const Arithmetic& arithmetic() const { return arithmetic_; }
+  const std::vector<Light<T>>& lights() const { return lights_; }
+  const std::vector<std::unique_ptr<Object<T>>>& objects() const { return objects_; }
+
+ private:
+  const SceneDesc& desc_;
+  Arithmetic arithmetic_;
+  std::vector<Light<T>> lights_;
+  std::vector<std::unique_ptr<Object<T>>> objects_;
+};
+
+}  // namespace rt

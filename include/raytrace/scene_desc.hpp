@@ -1,0 +1,71 @@
+// A parsed scene: what the file says, in double precision, before any precision choice or acceleration.
+// Both scene languages (POV subset and .cli) produce this; Scene<T> (scene.hpp) is built from it.
+#pragma once
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "raytrace/error.hpp"
+#include "raytrace/material.hpp"
+
+namespace rt {
+
+struct CameraDesc {
+  glm::dvec3 location{0, 0, 0};
+  glm::dvec3 up{0, 1, 0};
+  glm::dvec3 right{1.33333, 0, 0};  // carries the aspect ratio; not normalized (§d)
+  glm::dvec3 lookAt{0, 0, -1};
+  // Where in a pixel the eye ray passes, in pixel units from the pixel's lower-left corner. The course
+  // uses the centre (§d); the .cli reference images need (0, 1) (cs3451-course.md §A.4).
+  glm::dvec2 pixelOffset{0.5, 0.5};
+};
+
+struct LightDesc {
+  glm::dvec3 position{0};
+  Color color{1};
+};
+
+struct SphereDesc { glm::dvec3 center; double radius; };
+struct PlaneDesc { glm::dvec3 normal; double distance; };  // n·p = distance
+struct TriangleDesc { glm::dvec3 a, b, c; };
+struct BoxDesc { glm::dvec3 min, max; };
+struct ConeDesc { glm::dvec3 base; double baseRadius; glm::dvec3 cap; double capRadius; };
+struct CylinderDesc { glm::dvec3 base, cap; double radius; };  // capped at both ends
+
+using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc>;
+
+struct ObjectDesc {
+  ShapeDesc shape;
+  Material material;
+  glm::dmat4 worldFromObject{1.0};  // translate/rotate/scale composed in file order (§c.10)
+  SourceLoc loc;                     // where the object starts, for messages
+};
+
+// How a scene language wants its pictures made: the conventions that reproduce each course's reference
+// images. They belong to the language, not to the renderer, so each parser fills them in once.
+struct Conventions {
+  Color background{0};
+  enum class ToByte { Round, Truncate } toByte = ToByte::Round;  // course: round(c·255); .cli: (int)(c·255)
+  bool clampEachBounce = false;  // .cli clamps every shade() result to [0,1] before it is weighted
+  bool reflectionMixes = true;   // course: local·(1−f)(1−k) + k·C·reflected; .cli: local + k·reflected
+  bool tintReflection = true;    // course multiplies reflected light by the pigment (§c.3)
+  int maxDepth = 5;              // deepest secondary ray (primary = 0) that is traced (§c.9)
+  bool shadeDeepest = true;      // .cli: a ray at maxDepth that hits returns black (cs3451 §A.4)
+};
+
+struct SceneDesc {
+  std::string file;
+  CameraDesc camera;
+  std::vector<LightDesc> lights;
+  std::vector<ObjectDesc> objects;
+  Conventions conventions;
+  std::vector<std::string> warnings;  // "file:line:col: warning: …", printed before any output
+};
+
+// The type name the course prints ("Sphere", "Plane", …).
+const char* shapeName(const ShapeDesc& shape);
+
+}  // namespace rt

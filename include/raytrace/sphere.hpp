@@ -1,0 +1,22 @@
+#pragma once
+
+#include "raytrace/object.hpp"
+#include "raytrace/precision.hpp"
+
+namespace rt {
+
+template <class T> class Sphere final : public Object<T> {
+ public:
+  Sphere(const Vec3<T>& center, T radius, SphereMethod method, const Material& material, int id)
+      : Object<T>(material, id), center_(center), radius_(radius), robust_(method != SphereMethod::Textbook) {}
+
+  std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
+  std::optional<Aabb<T>> bounds() const override;
+
+ private:
+  Vec3<T> center_;
+  T radius_;
+  bool robust_;  // see chooseArithmetic(): the textbook formula is cheaper and exact enough for small R
+};
+
+}  // namespace rt

@@ -1,0 +1,25 @@
+// An object placed in the world by a matrix: the ray is taken into object space, the hit brought back.
+#pragma once
+
+#include <memory>
+
+#include "raytrace/object.hpp"
+
+namespace rt {
+
+template <class T> class Transformed final : public Object<T> {
+ public:
+  Transformed(std::unique_ptr<Object<T>> inner, const Mat4<T>& worldFromObject, const Material& material,
+              int id);
+
+  std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
+  std::optional<Aabb<T>> bounds() const override;
+
+ private:
+  std::unique_ptr<Object<T>> inner_;
+  Mat4<T> worldFromObject_;
+  Mat4<T> objectFromWorld_;
+  glm::mat<3, 3, T, glm::defaultp> worldFromObjectNormal_;  // (M⁻¹)ᵀ, for normals
+};
+
+}  // namespace rt

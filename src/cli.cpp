@@ -1,0 +1,206 @@
+#include "raytrace/cli.hpp"
+
+#include <cerrno>
+#include <cstdlib>
+#include <functional>
+#include <limits>
+
+#include "raytrace/camera.hpp"
+#include "raytrace/error.hpp"
+#include "raytrace/image.hpp"
+#include "raytrace/loader.hpp"
+#include "raytrace/precision.hpp"
+#include "raytrace/report.hpp"
+#include "raytrace/scene.hpp"
+
+namespace rt {
+
+namespace {
+
+constexpr int kMaxImageSide = 32768;  // per side; larger is certainly a typo
+
+struct Options {
+  Arithmetic arithmetic;  // --precision, --sphere
+};
+
+// What a command receives: the loaded scene and its checked numeric arguments.
+struct Invocation {
+  SceneDesc scene;
+  int width = 0, height = 0, x = 0, y = 0;
+  Options options;
+};
+
+struct Command {
+  const char* name;
+  const char* args;  // after the scene, for usage and messages
+  int numbers;       // 0, 2 (width height) or 4 (width height x y)
+  std::function<int(const Invocation&, std::ostream&)> run;
+};
+
+int parseInt(const std::string& s, const char* what, int lo, int hi) {
+  errno = 0;
+  char* end = nullptr;
+  const long v = std::strtol(s.c_str(), &end, 10);
+  if (s.empty() || *end != '\0' || errno == ERANGE) {
+    throw Error(std::string(what) + " must be a whole number, found '" + s + "'");
+  }
+  if (v < lo || v > hi) {
+    throw Error(std::string(what) + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
+                ", found " + s);
+  }
+  return int(v);
+}
+
+Options parseFlag(const std::string& flag, Options o) {
+  const auto value = [&](const std::string& name) -> const char* {
+    return flag.rfind(name + "=", 0) == 0 ? flag.c_str() + name.size() + 1 : nullptr;
+  };
+  if (const char* p = value("--precision")) {
+    const std::string v = p;
+    if (v == "float") o.arithmetic.precision = Precision::Float;
+    else if (v == "double") o.arithmetic.precision = Precision::Double;
+    else if (v == "auto") o.arithmetic.precision = Precision::Auto;
+    else throw Error("--precision must be float, double or auto, found '" + v + "'");
+    return o;
+  }
+  if (const char* p = value("--sphere")) {
+    const std::string v = p;
+    if (v == "textbook") o.arithmetic.sphere = SphereMethod::Textbook;
+    else if (v == "robust") o.arithmetic.sphere = SphereMethod::Robust;
+    else if (v == "auto") o.arithmetic.sphere = SphereMethod::Auto;
+    else throw Error("--sphere must be textbook, robust or auto, found '" + v + "'");
+    return o;
+  }
+  throw Error("unknown option '" + flag + "' (see raytrace --help)");
+}
+
+void printPixelRay(std::ostream& out, int x, int y, const glm::dvec3& origin, const glm::dvec3& dir) {
+  out << "Pixel: [" << x << ", " << y << "] Ray: " << braces(origin) << " -> " << braces(dir) << "\n";
+}
+
+// Runs f(scene, camera) at the precision the scene needs.
+template <class F> auto withScene(const Invocation& inv, F&& f) {
+  const Arithmetic arithmetic = chooseArithmetic(inv.scene, inv.options.arithmetic);
+  return withPrecision(arithmetic.precision, [&](auto tag) {
+    using T = decltype(tag);
+    const Scene<T> scene(inv.scene, arithmetic);
+    const Camera<T> camera(inv.scene.camera, inv.width, inv.height);
+    return f(scene, camera);
+  });
+}
+
+int sceneinfo(const Invocation& inv, std::ostream& out) {
+  printSceneInfo(out, inv.scene);
+  return 0;
+}
+
+int pixelray(const Invocation& inv, std::ostream& out) {
+  return withScene(inv, [&](const auto& scene, const auto& camera) {
+    (void)scene;
+    const auto ray = camera.pixelRay(inv.x, inv.y);
+    printPixelRay(out, inv.x, inv.y, glm::dvec3(ray.origin), glm::dvec3(ray.dir));
+    return 0;
+  });
+}
+
+int firsthit(const Invocation& inv, std::ostream& out) {
+  return withScene(inv, [&](const auto& scene, const auto& camera) {
+    const auto ray = camera.pixelRay(inv.x, inv.y);
+    printPixelRay(out, inv.x, inv.y, glm::dvec3(ray.origin), glm::dvec3(ray.dir));
+    const auto hit = scene.closestHit(ray, {});
+    if (!hit) {
+      out << "No Hit\n";
+      return 0;
+    }
+    const ObjectDesc& object = inv.scene.objects[size_t(hit->object->id() - 1)];
+    out << "T = " << fixed4(hit->t) << "\nObject Type: " << shapeName(object.shape)
+        << "\nColor: " << bare(hit->object->material().pigment) << "\n";
+    return 0;
+  });
+}
+
+// Each pixel gets the pigment of the closest object, or the background (Program 1's ray cast).
+int raycast(const Invocation& inv, std::ostream&) {
+  Image image(inv.width, inv.height);
+  withScene(inv, [&](const auto& scene, const auto& camera) {
+    for (int y = 0; y < inv.height; ++y) {
+      for (int x = 0; x < inv.width; ++x) {
+        const auto hit = scene.closestHit(camera.pixelRay(x, y), {});
+        image.at(x, y) = hit ? hit->object->material().pigment : inv.scene.conventions.background;
+      }
+    }
+    return 0;
+  });
+  writePng(image, "output.png", inv.scene.conventions.toByte);
+  return 0;
+}
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> table = {
+      {"raycast", "<width> <height>", 2, raycast},
+      {"sceneinfo", "", 0, sceneinfo},
+      {"pixelray", "<width> <height> <x> <y>", 4, pixelray},
+      {"firsthit", "<width> <height> <x> <y>", 4, firsthit},
+  };
+  return table;
+}
+
+std::string commandUsage(const Command& c) {
+  return std::string("raytrace ") + c.name + " <scene>" + (c.args[0] ? " " : "") + c.args;
+}
+
+}  // namespace
+
+std::string usage() {
+  std::string text = "usage:\n";
+  for (const Command& c : commands()) text += "  " + commandUsage(c) + " [options]\n";
+  text +=
+      "options:\n"
+      "  --precision=float|double|auto   arithmetic for geometry (default auto: chosen per scene)\n"
+      "  --sphere=textbook|robust|auto   ray-sphere formula (default auto: chosen per scene)\n";
+  return text;
+}
+
+int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  if (args.empty()) throw Error("no command given\n" + usage());
+  if (args[0] == "--help" || args[0] == "-h") {
+    out << usage();
+    return 0;
+  }
+  const Command* command = nullptr;
+  for (const Command& c : commands()) {
+    if (args[0] == c.name) command = &c;
+  }
+  if (!command) throw Error("unknown command '" + args[0] + "'\n" + usage());
+
+  // Flags start with '-' and a letter; anything else (a negative number too) is positional.
+  std::vector<std::string> positional;
+  Options options;
+  for (size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a.size() > 1 && a[0] == '-' && (std::isalpha(static_cast<unsigned char>(a[1])) || a[1] == '-')) {
+      options = parseFlag(a, options);
+    } else {
+      positional.push_back(a);
+    }
+  }
+  if (positional.size() != size_t(1 + command->numbers)) {
+    throw Error(std::string(command->name) + " takes " + std::to_string(1 + command->numbers) +
+                " arguments, found " + std::to_string(positional.size()) + "\nusage: " + commandUsage(*command));
+  }
+  Invocation inv;
+  inv.options = options;
+  if (command->numbers >= 2) {
+    inv.width = parseInt(positional[1], "width", 1, kMaxImageSide);
+    inv.height = parseInt(positional[2], "height", 1, kMaxImageSide);
+  }
+  if (command->numbers == 4) {
+    inv.x = parseInt(positional[3], "pixel x", 0, inv.width - 1);
+    inv.y = parseInt(positional[4], "pixel y", 0, inv.height - 1);
+  }
+  inv.scene = loadScene(positional[0]);
+  for (const std::string& w : inv.scene.warnings) err << w << "\n";
+  return command->run(inv, out);
+}
+
+}  // namespace rt

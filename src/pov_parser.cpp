@@ -1,0 +1,319 @@
+#include "raytrace/pov_parser.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "raytrace/tokenizer.hpp"
+
+namespace rt {
+
+namespace {
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+class PovParser {
+ public:
+  PovParser(const std::string& text, const std::string& file) : tokens_(tokenize(text, file)) {
+    scene_.file = file;
+  }
+
+  SceneDesc parse() {
+    bool haveCamera = false;
+    while (peek().kind != Token::Kind::End) {
+      const Token t = next();
+      if (t.kind != Token::Kind::Word) {
+        throw ParseError(t.loc, "expected 'camera', 'light_source' or an object, found " + t.quoted());
+      }
+      if (t.text == "camera") {
+        parseCamera(t);
+        haveCamera = true;
+      } else if (t.text == "light_source") {
+        parseLight();
+      } else if (t.text == "sphere" || t.text == "plane" || t.text == "triangle" || t.text == "box" ||
+                 t.text == "cone" || t.text == "cylinder") {
+        parseObject(t);
+      } else {
+        throw ParseError(t.loc, "unknown keyword " + t.quoted());
+      }
+    }
+    if (!haveCamera) throw ParseError(peek().loc, "the scene has no camera");
+    return scene_;
+  }
+
+ private:
+  const Token& peek() const { return tokens_[pos_]; }
+  Token next() {
+    const Token& t = tokens_[pos_];
+    if (t.kind != Token::Kind::End) ++pos_;
+    return t;
+  }
+  bool isPunct(const Token& t, char c) const { return t.kind == Token::Kind::Punct && t.text[0] == c; }
+
+  void expect(char c, const std::string& context) {
+    const Token t = next();
+    if (!isPunct(t, c)) {
+      throw ParseError(t.loc, std::string("expected '") + c + "' " + context + ", found " + t.quoted());
+    }
+  }
+
+  // `what` completes "expected a number …", e.g. "after 'ambient'" or "for the sphere radius".
+  double number(const std::string& what) {
+    const Token t = next();
+    if (t.kind != Token::Kind::Number) throw ParseError(t.loc, "expected a number " + what + ", found " + t.quoted());
+    return t.number;
+  }
+
+  // `<a, b, …>` with between minN and maxN components.
+  std::vector<double> vector(int minN, int maxN, const std::string& what) {
+    expect('<', "to start " + what);
+    std::vector<double> v{number("in " + what)};
+    while (isPunct(peek(), ',')) {
+      next();
+      v.push_back(number("in " + what));
+    }
+    const Token close = next();
+    if (!isPunct(close, '>')) {
+      throw ParseError(close.loc, "expected ',' or '>' in " + what + ", found " + close.quoted());
+    }
+    if (int(v.size()) < minN || int(v.size()) > maxN) {
+      const std::string want = minN == maxN ? std::to_string(minN) : std::to_string(minN) + " or " + std::to_string(maxN);
+      throw ParseError(close.loc, what + " needs " + want + " components, found " + std::to_string(v.size()));
+    }
+    return v;
+  }
+
+  glm::dvec3 vec3(const std::string& what) {
+    const auto v = vector(3, 3, what);
+    return {v[0], v[1], v[2]};
+  }
+
+  // [color|colour] rgb <r,g,b> | rgbf <r,g,b[,f]>; a missing filter is 0, as POV-Ray reads a 3-vector.
+  void color(Color& rgb, float& filter, const std::string& owner) {
+    Token t = next();
+    if (t.kind == Token::Kind::Word && (t.text == "color" || t.text == "colour")) t = next();
+    if (t.kind != Token::Kind::Word || (t.text != "rgb" && t.text != "rgbf")) {
+      throw ParseError(t.loc, "expected 'rgb' or 'rgbf' in the " + owner + " colour, found " + t.quoted());
+    }
+    const bool withFilter = t.text == "rgbf";
+    const SourceLoc at = peek().loc;
+    const auto v = vector(3, withFilter ? 4 : 3, "an '" + t.text + "' colour");
+    rgb = Color(float(v[0]), float(v[1]), float(v[2]));
+    filter = v.size() == 4 ? float(v[3]) : 0.0f;
+    if (filter < 0 || filter > 1) throw ParseError(at, "filter must be between 0 and 1, found " + num(filter));
+  }
+
+  void parseCamera(const Token& keyword) {
+    expect('{', "after 'camera'");
+    CameraDesc& cam = scene_.camera;
+    for (;;) {
+      const Token t = next();
+      if (isPunct(t, '}')) break;
+      if (t.kind == Token::Kind::End) throw ParseError(t.loc, unclosed("camera", keyword));
+      if (t.text == "location") {
+        cam.location = vec3("the camera location");
+      } else if (t.text == "up") {
+        cam.up = vec3("the camera up vector");
+      } else if (t.text == "right") {
+        cam.right = vec3("the camera right vector");
+      } else if (t.text == "look_at") {
+        cam.lookAt = vec3("the camera look_at point");
+      } else {
+        throw ParseError(t.loc, "unknown camera property " + t.quoted());
+      }
+    }
+    if (cam.lookAt == cam.location) throw ParseError(keyword.loc, "the camera's look_at equals its location");
+    if (cam.up == glm::dvec3(0)) throw ParseError(keyword.loc, "the camera's up vector is zero");
+    if (cam.right == glm::dvec3(0)) throw ParseError(keyword.loc, "the camera's right vector is zero");
+    if (glm::length(glm::cross(cam.up, cam.right)) == 0) {
+      throw ParseError(keyword.loc, "the camera's up and right vectors are parallel");
+    }
+  }
+
+  void parseLight() {
+    const Token& keyword = tokens_[pos_ - 1];
+    expect('{', "after 'light_source'");
+    LightDesc light;
+    light.position = vec3("the light position");
+    float filter = 0;
+    color(light.color, filter, "light");
+    const Token t = next();
+    if (t.kind == Token::Kind::End) throw ParseError(t.loc, unclosed("light_source", keyword));
+    if (!isPunct(t, '}')) throw ParseError(t.loc, "unknown light_source property " + t.quoted());
+    scene_.lights.push_back(light);
+  }
+
+  void parseObject(const Token& keyword) {
+    const std::string& kind = keyword.text;
+    expect('{', "after '" + kind + "'");
+    ObjectDesc obj;
+    obj.loc = keyword.loc;
+    if (kind == "sphere") {
+      const glm::dvec3 center = vec3("the sphere center");
+      expect(',', "after the sphere center");
+      obj.shape = SphereDesc{center, positive("the sphere radius")};
+    } else if (kind == "plane") {
+      const SourceLoc at = peek().loc;
+      const glm::dvec3 normal = vec3("the plane normal");
+      if (normal == glm::dvec3(0)) throw ParseError(at, "the plane normal is zero");
+      expect(',', "after the plane normal");
+      obj.shape = PlaneDesc{normal, number("for the plane distance")};
+    } else if (kind == "triangle") {
+      TriangleDesc tri;
+      tri.a = vec3("the first triangle vertex");
+      expect(',', "after the first triangle vertex");
+      tri.b = vec3("the second triangle vertex");
+      expect(',', "after the second triangle vertex");
+      tri.c = vec3("the third triangle vertex");
+      obj.shape = tri;
+    } else if (kind == "box") {
+      BoxDesc box;
+      box.min = vec3("the first box corner");
+      expect(',', "after the first box corner");
+      box.max = vec3("the second box corner");
+      obj.shape = box;
+    } else if (kind == "cone") {
+      ConeDesc cone;
+      const SourceLoc at = peek().loc;
+      cone.base = vec3("the cone base");
+      expect(',', "after the cone base");
+      cone.baseRadius = nonNegative("the cone base radius");
+      expect(',', "after the cone base radius");
+      cone.cap = vec3("the cone cap");
+      expect(',', "after the cone cap");
+      cone.capRadius = nonNegative("the cone cap radius");
+      if (cone.base == cone.cap) throw ParseError(at, "the cone's base and cap centres are the same point");
+      if (cone.baseRadius == 0 && cone.capRadius == 0) throw ParseError(at, "both cone radii are zero");
+      obj.shape = cone;
+    } else {
+      CylinderDesc cyl;
+      const SourceLoc at = peek().loc;
+      cyl.base = vec3("the cylinder base");
+      expect(',', "after the cylinder base");
+      cyl.cap = vec3("the cylinder cap");
+      expect(',', "after the cylinder cap");
+      cyl.radius = positive("the cylinder radius");
+      if (cyl.base == cyl.cap) throw ParseError(at, "the cylinder's base and cap centres are the same point");
+      obj.shape = cyl;
+    }
+    parseModifiers(obj, keyword);
+    scene_.objects.push_back(obj);
+  }
+
+  double positive(const std::string& what) {
+    const SourceLoc at = peek().loc;
+    const double v = number("for " + what);
+    if (!(v > 0)) throw ParseError(at, what + " must be greater than 0, found " + num(v));
+    return v;
+  }
+  double nonNegative(const std::string& what) {
+    const SourceLoc at = peek().loc;
+    const double v = number("for " + what);
+    if (v < 0) throw ParseError(at, what + " must not be negative, found " + num(v));
+    return v;
+  }
+
+  // pigment, finish and transforms, in any order and repeated, up to the object's closing brace.
+  void parseModifiers(ObjectDesc& obj, const Token& keyword) {
+    Finish finish;
+    for (;;) {
+      const Token t = next();
+      if (isPunct(t, '}')) break;
+      if (t.kind == Token::Kind::End) throw ParseError(t.loc, unclosed(keyword.text, keyword));
+      if (t.text == "pigment") {
+        expect('{', "after 'pigment'");
+        color(obj.material.pigment, obj.material.filter, "pigment");
+        expect('}', "to close the pigment");
+      } else if (t.text == "finish") {
+        parseFinish(finish);
+      } else if (t.text == "translate") {
+        obj.worldFromObject = glm::translate(glm::dmat4(1.0), vec3("the translation")) * obj.worldFromObject;
+      } else if (t.text == "scale") {
+        obj.worldFromObject = glm::scale(glm::dmat4(1.0), scaleFactors()) * obj.worldFromObject;
+      } else if (t.text == "rotate") {
+        // The course's order R = Rx·Ry·Rz, which turns about z first (csc473-course.md §c.10).
+        const glm::dvec3 deg = vec3("the rotation");
+        glm::dmat4 r(1.0);
+        r = glm::rotate(r, glm::radians(deg.x), glm::dvec3(1, 0, 0));
+        r = glm::rotate(r, glm::radians(deg.y), glm::dvec3(0, 1, 0));
+        r = glm::rotate(r, glm::radians(deg.z), glm::dvec3(0, 0, 1));
+        obj.worldFromObject = r * obj.worldFromObject;
+      } else {
+        throw ParseError(t.loc, "unknown " + keyword.text + " property " + t.quoted());
+      }
+    }
+    Material& m = obj.material;
+    m.finish = finish;
+    m.ambient = float(finish.ambient) * m.pigment;
+    m.diffuse = float(finish.diffuse) * m.pigment;
+    m.specular = float(finish.specular) * m.pigment;
+    m.roughness = float(finish.roughness);
+    m.exponent = float(2.0 / (finish.roughness * finish.roughness) - 2.0);  // §c.1
+    m.reflection = float(finish.reflection);
+    m.ior = float(finish.ior);
+  }
+
+  // `scale <x,y,z>` or POV-Ray's uniform `scale s`; a zero factor would make the object unrenderable.
+  glm::dvec3 scaleFactors() {
+    const SourceLoc at = peek().loc;
+    const glm::dvec3 s = peek().kind == Token::Kind::Number ? glm::dvec3(number("for the scale")) : vec3("the scale");
+    if (s.x == 0 || s.y == 0 || s.z == 0) throw ParseError(at, "a scale factor is zero");
+    return s;
+  }
+
+  void parseFinish(Finish& f) {
+    const Token& keyword = tokens_[pos_ - 1];
+    expect('{', "after 'finish'");
+    for (;;) {
+      const Token t = next();
+      if (isPunct(t, '}')) break;
+      if (t.kind == Token::Kind::End) throw ParseError(t.loc, unclosed("finish", keyword));
+      const std::string after = "after " + t.quoted();
+      const SourceLoc at = peek().loc;
+      if (t.text == "ambient") {
+        f.ambient = number(after);
+      } else if (t.text == "diffuse") {
+        f.diffuse = number(after);
+      } else if (t.text == "specular") {
+        f.specular = number(after);
+      } else if (t.text == "roughness") {
+        f.roughness = number(after);
+        // 0 would make the exponent 2/roughness² − 2 infinite.
+        if (!(f.roughness > 0)) throw ParseError(at, "roughness must be greater than 0, found " + num(f.roughness));
+      } else if (t.text == "reflection") {
+        f.reflection = number(after);
+      } else if (t.text == "refraction") {
+        f.refraction = number(after);
+      } else if (t.text == "ior") {
+        f.ior = number(after);
+        if (!(f.ior > 0)) throw ParseError(at, "ior must be greater than 0, found " + num(f.ior));
+      } else if (t.text == "metallic") {
+        // A real POV-Ray finish keyword that this renderer does not model: read, said, and ignored.
+        number(after);
+        scene_.warnings.push_back(t.loc.str() + ": warning: 'metallic' is not modelled and is ignored");
+      } else {
+        throw ParseError(t.loc, "unknown finish property " + t.quoted());
+      }
+    }
+  }
+
+  static std::string unclosed(const std::string& what, const Token& opener) {
+    return "end of file inside the " + what + " started at line " + std::to_string(opener.loc.line) +
+           "; expected '}'";
+  }
+
+  std::vector<Token> tokens_;
+  size_t pos_ = 0;
+  SceneDesc scene_;
+};
+
+}  // namespace
+
+SceneDesc parsePov(const std::string& text, const std::string& file) { return PovParser(text, file).parse(); }
+
+}  // namespace rt

@@ -1,0 +1,70 @@
+#include "raytrace/scene.hpp"
+
+#include <type_traits>
+
+#include "raytrace/plane.hpp"
+#include "raytrace/sphere.hpp"
+#include "raytrace/transformed.hpp"
+
+namespace rt {
+
+namespace {
+
+template <class T>
+std::unique_ptr<Object<T>> makeObject(const ObjectDesc& desc, const Arithmetic& arithmetic, int id) {
+  const Material& m = desc.material;
+  return std::visit(
+      [&](const auto& s) -> std::unique_ptr<Object<T>> {
+        using S = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<S, SphereDesc>) {
+          return std::make_unique<Sphere<T>>(Vec3<T>(s.center), T(s.radius), arithmetic.sphere, m, id);
+        } else if constexpr (std::is_same_v<S, PlaneDesc>) {
+          return std::make_unique<Plane<T>>(Vec3<T>(glm::normalize(s.normal)), T(s.distance), m, id);
+        } else {
+          throw ParseError(desc.loc, std::string(shapeName(s)) + " objects cannot be rendered yet");
+        }
+      },
+      desc.shape);
+}
+
+}  // namespace
+
+template <class T>
+Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic) : desc_(desc), arithmetic_(arithmetic) {
+  for (const LightDesc& l : desc.lights) lights_.push_back(Light<T>{Vec3<T>(l.position), l.color});
+  int id = 1;
+  for (const ObjectDesc& o : desc.objects) {
+    auto object = makeObject<T>(o, arithmetic, id);
+    // An identity transform (`translate <0,0,0>`) costs nothing: the shape is used as it is.
+    if (o.worldFromObject != glm::dmat4(1.0)) {
+      object = std::make_unique<Transformed<T>>(std::move(object), Mat4<T>(o.worldFromObject), o.material, id);
+    }
+    objects_.push_back(std::move(object));
+    ++id;
+  }
+}
+
+template <class T>
+std::optional<Hit<T>> Scene<T>::closestHit(const Ray<T>& ray, Interval<T> range) const {
+  std::optional<Hit<T>> closest;
+  for (const auto& object : objects_) {
+    // Narrowing to the strict interval keeps the earlier object on an exact tie.
+    if (auto hit = object->intersect(ray, range)) {
+      range.max = hit->t;
+      closest = hit;
+    }
+  }
+  return closest;
+}
+
+template <class T> bool Scene<T>::occluded(const Ray<T>& ray, Interval<T> range) const {
+  for (const auto& object : objects_) {
+    if (object->intersect(ray, range)) return true;
+  }
+  return false;
+}
+
+template class Scene<float>;
+template class Scene<double>;
+
+}  // namespace rt
