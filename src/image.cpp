@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 
@@ -11,8 +12,18 @@
 #include <stb/stb_image_write.h>
 
 #include "raytrace/error.hpp"
+#include "raytrace/limits.hpp"
 
 namespace rt {
+
+Image::Image(int width, int height) : width_(width), height_(height) {
+  // The float pixels and the 8-bit copy that writePng makes of them.
+  const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * (sizeof(Color) + 3);
+  const std::string what = "a " + std::to_string(width) + "x" + std::to_string(height) + " image";
+  const std::string shortage = memoryShortage(what, bytes, availableMemory());
+  if (!shortage.empty()) throw Error(shortage);
+  pixels_.assign(size_t(width) * size_t(height), Color(0));
+}
 
 unsigned char toByte(float c, Conventions::ToByte mode) {
   const float v = std::isnan(c) ? 0.0f : glm::clamp(c, 0.0f, 1.0f) * 255.0f;

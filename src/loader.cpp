@@ -2,25 +2,51 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
+#include "raytrace/limits.hpp"
 #include "raytrace/pov_parser.hpp"
 
 namespace rt {
 
+namespace {
+
+// Closes the descriptor however readFile() leaves.
+struct FileDescriptor {
+  int fd;
+  ~FileDescriptor() { close(fd); }
+};
+
+}  // namespace
+
+// POSIX calls rather than a stream, so that every failure has its errno and a FIFO or a device is refused
+// instead of read forever (O_NONBLOCK keeps the open of a FIFO without a writer from hanging).
 std::string readFile(const std::string& path) {
+  const FileDescriptor file{open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
+  if (file.fd < 0) throw Error("cannot open '" + path + "': " + std::strerror(errno));
   struct stat st;
-  if (stat(path.c_str(), &st) != 0) throw Error("cannot open '" + path + "': " + std::strerror(errno));
+  if (fstat(file.fd, &st) != 0) throw Error("cannot read '" + path + "': " + std::strerror(errno));
   if (S_ISDIR(st.st_mode)) throw Error("cannot read '" + path + "': it is a directory, not a scene file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open '" + path + "': " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw Error("cannot read '" + path + "': " + std::strerror(errno));
-  return text.str();
+  if (!S_ISREG(st.st_mode)) throw Error("cannot read '" + path + "': it is not a regular file");
+  if (std::uint64_t(st.st_size) > kMaxSceneFileBytes) {
+    throw Error("cannot read '" + path + "': it is " + std::to_string(st.st_size >> 20) +
+                " MiB, more than the " +
+                std::to_string(kMaxSceneFileBytes >> 20) + " MiB a scene file may have");
+  }
+  std::string text(size_t(st.st_size), '\0');
+  size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = read(file.fd, &text[done], text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw Error("cannot read '" + path + "': " + std::strerror(errno));
+    if (n == 0) break;  // the file shrank since fstat: parse what is there
+    done += size_t(n);
+  }
+  text.resize(done);
+  return text;
 }
 
 SceneDesc loadScene(const std::string& path) { return parsePov(readFile(path), path); }

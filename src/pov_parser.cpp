@@ -1,10 +1,12 @@
 #include "raytrace/pov_parser.hpp"
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "raytrace/limits.hpp"
 #include "raytrace/tokenizer.hpp"
 
 namespace rt {
@@ -19,7 +21,7 @@ std::string num(double v) {
 
 class PovParser {
  public:
-  PovParser(const std::string& text, const std::string& file) : tokens_(tokenize(text, file)) {
+  PovParser(const std::string& text, const std::string& file) : tokens_(text, file), current_(tokens_.next()) {
     scene_.file = file;
   }
 
@@ -34,7 +36,7 @@ class PovParser {
         parseCamera(t);
         haveCamera = true;
       } else if (t.text == "light_source") {
-        parseLight();
+        parseLight(t);
       } else if (t.text == "sphere" || t.text == "plane" || t.text == "triangle" || t.text == "box" ||
                  t.text == "cone" || t.text == "cylinder") {
         parseObject(t);
@@ -47,10 +49,10 @@ class PovParser {
   }
 
  private:
-  const Token& peek() const { return tokens_[pos_]; }
+  const Token& peek() const { return current_; }
   Token next() {
-    const Token& t = tokens_[pos_];
-    if (t.kind != Token::Kind::End) ++pos_;
+    Token t = std::move(current_);
+    current_ = t.kind == Token::Kind::End ? t : tokens_.next();
     return t;
   }
   bool isPunct(const Token& t, char c) const { return t.kind == Token::Kind::Punct && t.text[0] == c; }
@@ -135,8 +137,7 @@ class PovParser {
     }
   }
 
-  void parseLight() {
-    const Token& keyword = tokens_[pos_ - 1];
+  void parseLight(const Token& keyword) {
     expect('{', "after 'light_source'");
     LightDesc light;
     light.position = vec3("the light position");
@@ -202,7 +203,18 @@ class PovParser {
       obj.shape = cyl;
     }
     parseModifiers(obj, keyword);
+    reserveObject(keyword.loc);
     scene_.objects.push_back(obj);
+  }
+
+  // Millions of tiny objects fit in a file of allowed size but not always in memory: each time the object
+  // count doubles (from 65536 on, so small scenes never ask), the next doubling must fit (limits.hpp).
+  void reserveObject(const SourceLoc& at) {
+    const size_t n = scene_.objects.size();
+    if (n < 65536 || (n & (n - 1)) != 0) return;
+    const std::string shortage = memoryShortage("going beyond " + std::to_string(n) + " objects",
+                                                n * kBytesPerObject, availableMemory());
+    if (!shortage.empty()) throw ParseError(at, shortage);
   }
 
   double positive(const std::string& what) {
@@ -230,7 +242,7 @@ class PovParser {
         color(obj.material.pigment, obj.material.filter, "pigment");
         expect('}', "to close the pigment");
       } else if (t.text == "finish") {
-        parseFinish(finish);
+        parseFinish(finish, t);
       } else if (t.text == "translate") {
         obj.worldFromObject = glm::translate(glm::dmat4(1.0), vec3("the translation")) * obj.worldFromObject;
       } else if (t.text == "scale") {
@@ -266,8 +278,7 @@ class PovParser {
     return s;
   }
 
-  void parseFinish(Finish& f) {
-    const Token& keyword = tokens_[pos_ - 1];
+  void parseFinish(Finish& f, const Token& keyword) {
     expect('{', "after 'finish'");
     for (;;) {
       const Token t = next();
@@ -307,8 +318,8 @@ class PovParser {
            "; expected '}'";
   }
 
-  std::vector<Token> tokens_;
-  size_t pos_ = 0;
+  Tokenizer tokens_;
+  Token current_;  // the one token of lookahead
   SceneDesc scene_;
 };
 

@@ -13,105 +13,85 @@ bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isWordStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool isWordChar(char c) { return isWordStart(c) || isDigit(c); }
 
-class Lexer {
- public:
-  Lexer(const std::string& text, const std::string& file) : s_(text), file_(file) {}
+}  // namespace
 
-  std::vector<Token> run() {
-    std::vector<Token> tokens;
-    for (;;) {
-      skipSpaceAndComments();
-      Token t;
-      t.loc = here();
-      if (i_ >= s_.size()) {
-        tokens.push_back(t);
-        return tokens;
-      }
-      const char c = s_[i_];
-      if (startsNumber()) {
-        lexNumber(t);
-      } else if (isWordStart(c)) {
-        t.kind = Token::Kind::Word;
-        while (i_ < s_.size() && isWordChar(s_[i_])) t.text += s_[i_], advance();
-      } else if (std::isprint(static_cast<unsigned char>(c))) {
-        t.kind = Token::Kind::Punct;
-        t.text = c;
-        advance();
-      } else {
-        char hex[8];
-        std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned char>(c));
-        throw ParseError(t.loc, std::string("unexpected byte ") + hex + " (is this a text scene file?)");
-      }
-      tokens.push_back(t);
-    }
+Token Tokenizer::next() {
+  skipSpaceAndComments();
+  Token t;
+  t.loc = here();
+  if (i_ >= s_.size()) return t;
+  const size_t start = i_;
+  const char c = s_[i_];
+  if (startsNumber()) {
+    lexNumber(t);
+  } else if (isWordStart(c)) {
+    t.kind = Token::Kind::Word;
+    while (i_ < s_.size() && isWordChar(s_[i_])) advance();
+  } else if (std::isprint(static_cast<unsigned char>(c))) {
+    t.kind = Token::Kind::Punct;
+    advance();
+  } else {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned char>(c));
+    throw ParseError(t.loc, std::string("unexpected byte ") + hex + " (is this a text scene file?)");
   }
-
- private:
-  SourceLoc here() const { return SourceLoc{file_, line_, col_}; }
-  char peek(size_t k = 0) const { return i_ + k < s_.size() ? s_[i_ + k] : '\0'; }
-  void advance() {
-    if (s_[i_] == '\n') {
-      ++line_;
-      col_ = 1;
-    } else {
-      ++col_;
-    }
-    ++i_;
-  }
-
-  void skipSpaceAndComments() {
-    while (i_ < s_.size()) {
-      const char c = s_[i_];
-      if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
-        advance();
-      } else if (c == '/' && peek(1) == '/') {
-        while (i_ < s_.size() && s_[i_] != '\n') advance();
-      } else if (c == '/' && peek(1) == '*') {
-        const SourceLoc start = here();
-        advance(), advance();
-        while (i_ < s_.size() && !(s_[i_] == '*' && peek(1) == '/')) advance();
-        if (i_ >= s_.size()) throw ParseError(start, "comment '/*' is never closed");
-        advance(), advance();
-      } else {
-        return;
-      }
-    }
-  }
-
-  // A number starts with a digit, or a '.' followed by one, optionally after one sign.
-  bool startsNumber() const {
-    size_t k = 0;
-    if (peek() == '-' || peek() == '+') k = 1;
-    return isDigit(peek(k)) || (peek(k) == '.' && isDigit(peek(k + 1)));
-  }
-
-  void lexNumber(Token& t) {
-    t.kind = Token::Kind::Number;
-    auto take = [&] { t.text += s_[i_], advance(); };
-    if (peek() == '-' || peek() == '+') take();
-    while (isDigit(peek())) take();
-    if (peek() == '.') take();
-    while (isDigit(peek())) take();
-    // An exponent only if digits follow, so that `1e` stays a number and a word.
-    if ((peek() == 'e' || peek() == 'E') &&
-        (isDigit(peek(1)) || ((peek(1) == '-' || peek(1) == '+') && isDigit(peek(2))))) {
-      take(), take();
-      while (isDigit(peek())) take();
-    }
+  t.text.assign(s_, start, i_ - start);
+  if (t.kind == Token::Kind::Number) {
     t.number = std::strtod(t.text.c_str(), nullptr);
     if (!std::isfinite(t.number)) throw ParseError(t.loc, "number '" + t.text + "' is out of range");
   }
+  return t;
+}
 
-  const std::string& s_;
-  std::string file_;
-  size_t i_ = 0;
-  int line_ = 1, col_ = 1;
-};
+// Only ever called inside the text, and never across a newline inside a token.
+void Tokenizer::advance() {
+  if (s_[i_] == '\n') {
+    ++line_;
+    col_ = 1;
+  } else {
+    ++col_;
+  }
+  ++i_;
+}
 
-}  // namespace
+void Tokenizer::skipSpaceAndComments() {
+  while (i_ < s_.size()) {
+    const char c = s_[i_];
+    if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
+      advance();
+    } else if (c == '/' && peek(1) == '/') {
+      while (i_ < s_.size() && s_[i_] != '\n') advance();
+    } else if (c == '/' && peek(1) == '*') {
+      const SourceLoc start = here();
+      advance(), advance();
+      while (i_ < s_.size() && !(s_[i_] == '*' && peek(1) == '/')) advance();
+      if (i_ >= s_.size()) throw ParseError(start, "comment '/*' is never closed");
+      advance(), advance();
+    } else {
+      return;
+    }
+  }
+}
 
-std::vector<Token> tokenize(const std::string& text, const std::string& file) {
-  return Lexer(text, file).run();
+// A number starts with a digit, or a '.' followed by one, optionally after one sign.
+bool Tokenizer::startsNumber() const {
+  size_t k = 0;
+  if (peek() == '-' || peek() == '+') k = 1;
+  return isDigit(peek(k)) || (peek(k) == '.' && isDigit(peek(k + 1)));
+}
+
+void Tokenizer::lexNumber(Token& t) {
+  t.kind = Token::Kind::Number;
+  if (peek() == '-' || peek() == '+') advance();
+  while (isDigit(peek())) advance();
+  if (peek() == '.') advance();
+  while (isDigit(peek())) advance();
+  // An exponent only if digits follow, so that `1e` stays a number and a word.
+  if ((peek() == 'e' || peek() == 'E') &&
+      (isDigit(peek(1)) || ((peek(1) == '-' || peek(1) == '+') && isDigit(peek(2))))) {
+    advance(), advance();
+    while (isDigit(peek())) advance();
+  }
 }
 
 }  // namespace rt

@@ -11,7 +11,8 @@ namespace rt {
 
 class Image {
  public:
-  Image(int width, int height) : width_(width), height_(height), pixels_(size_t(width) * height, Color(0)) {}
+  // Throws Error, before taking any, when the machine has not the memory for the image (limits.hpp).
+  Image(int width, int height);
 
   int width() const { return width_; }
   int height() const { return height_; }

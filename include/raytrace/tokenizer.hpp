@@ -1,8 +1,8 @@
 // The POV-subset tokenizer: numbers, words and single punctuation characters, each with its source location.
 #pragma once
 
+#include <cstddef>
 #include <string>
-#include <vector>
 
 #include "raytrace/error.hpp"
 
@@ -18,9 +18,31 @@ struct Token {
   std::string quoted() const { return kind == Kind::End ? "end of file" : "'" + text + "'"; }
 };
 
-// Splits POV text into tokens ending with one End token. Whitespace (including CR, tabs and form feeds) and
-// `//` and `/* */` comments separate tokens. Numbers are written as POV-Ray reads them: `.94`, `-.001`, `1.`,
-// `-0`, `1e-05`, `+2`. Throws ParseError for an unterminated comment, a number out of range or a control byte.
-std::vector<Token> tokenize(const std::string& text, const std::string& file);
+// Splits POV text into tokens, one at a time, so that a huge scene never holds more than one token in memory
+// (a million-sphere file would otherwise need gigabytes of tokens). Whitespace (including CR, tabs and form
+// feeds) and `//` and `/* */` comments separate tokens. Numbers are written as POV-Ray reads them: `.94`,
+// `-.001`, `1.`, `-0`, `1e-05`, `+2`. next() throws ParseError for an unterminated comment, a number out of
+// range or a byte that cannot be in a text file.
+class Tokenizer {
+ public:
+  // `text` must outlive the tokenizer.
+  Tokenizer(const std::string& text, const std::string& file) : s_(text), file_(file) {}
+
+  // The next token; at the end of the text an End token, as often as asked.
+  Token next();
+
+ private:
+  SourceLoc here() const { return SourceLoc{file_, line_, col_}; }
+  char peek(size_t k = 0) const { return i_ + k < s_.size() ? s_[i_ + k] : '\0'; }
+  void advance();
+  void skipSpaceAndComments();
+  bool startsNumber() const;
+  void lexNumber(Token& t);
+
+  const std::string& s_;
+  std::string file_;
+  size_t i_ = 0;
+  int line_ = 1, col_ = 1;
+};
 
 }  // namespace rt

@@ -1,0 +1,1 @@
+camera{location<0,0,1>look_at<0,0,0>}sphere{<0,0,0>,1 pigment{rgb<1,1,1>}}

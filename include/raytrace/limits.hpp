@@ -1,0 +1,26 @@
+// Limits that keep a file from a stranger from exhausting the machine. Each is checked where the memory would
+// be taken, before taking it, and reported as one message the user can act on.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace rt {
+
+// The largest scene file read: 1 GiB, about seven million spheres written the course's way. The text is held
+// in memory while it is parsed, so a bigger file is far more likely a mistake (a disk image, a log) than a
+// scene.
+constexpr std::uint64_t kMaxSceneFileBytes = std::uint64_t(1) << 30;
+
+// Memory budgeted per scene object: its description, its renderable copy and its share of the acceleration
+// structure. Measured: a million spheres peak at 0.89 GB including the 155 MB file text, so 1 KiB has room.
+constexpr std::uint64_t kBytesPerObject = 1024;
+
+// Bytes this process can still take without pushing the machine into swap or the OOM killer: the kernel's
+// MemAvailable, or less if an address-space limit (ulimit -v) leaves less.
+std::uint64_t availableMemory();
+
+// "<what> needs N MiB of memory, but only M MiB are available", or "" when `needed` fits in `available`.
+std::string memoryShortage(const std::string& what, std::uint64_t needed, std::uint64_t available);
+
+}  // namespace rt
