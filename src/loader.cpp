@@ -32,9 +32,8 @@ std::string readFile(const std::string& path) {
   if (S_ISDIR(st.st_mode)) throw Error("cannot read '" + path + "': it is a directory, not a scene file");
   if (!S_ISREG(st.st_mode)) throw Error("cannot read '" + path + "': it is not a regular file");
   if (std::uint64_t(st.st_size) > kMaxSceneFileBytes) {
-    throw Error("cannot read '" + path + "': it is " + std::to_string(st.st_size >> 20) +
-                " MiB, more than the " +
-                std::to_string(kMaxSceneFileBytes >> 20) + " MiB a scene file may have");
+    throw Error("cannot read '" + path + "': it is larger than " + std::to_string(kMaxSceneFileBytes >> 20) +
+                " MiB, the most a scene file may have");
   }
   std::string text(size_t(st.st_size), '\0');
   size_t done = 0;

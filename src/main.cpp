@@ -1,4 +1,5 @@
 // raytrace: the command-line entry point. The only place errors are caught.
+#include <csignal>
 #include <iostream>
 #include <new>
 
@@ -7,6 +8,9 @@
 
 int main(int argc, char** argv) {
   std::ios::sync_with_stdio(false);
+  // Past a file size limit (ulimit -f) a write then fails with EFBIG, which writePng reports and cleans up
+  // after, instead of the signal killing us and leaving its temporary file behind.
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     return rt::runCommand(std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
   } catch (const rt::ParseError& e) {

@@ -25,8 +25,9 @@ struct Token {
 // range or a byte that cannot be in a text file.
 class Tokenizer {
  public:
-  // `text` must outlive the tokenizer.
+  // `text` must outlive the tokenizer, so a temporary is refused at compile time.
   Tokenizer(const std::string& text, const std::string& file) : s_(text), file_(file) {}
+  Tokenizer(std::string&& text, const std::string& file) = delete;
 
   // The next token; at the end of the text an End token, as often as asked.
   Token next();
