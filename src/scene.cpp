@@ -2,6 +2,9 @@
 
 #include <type_traits>
 
+#include "raytrace/box.hpp"
+#include "raytrace/cone.hpp"
+#include "raytrace/cylinder.hpp"
 #include "raytrace/plane.hpp"
 #include "raytrace/sphere.hpp"
 #include "raytrace/transformed.hpp"
@@ -20,6 +23,12 @@ std::unique_ptr<Object<T>> makeObject(const ObjectDesc& desc, const Arithmetic& 
           return std::make_unique<Sphere<T>>(Vec3<T>(s.center), T(s.radius), arithmetic.sphere, m, id);
         } else if constexpr (std::is_same_v<S, PlaneDesc>) {
           return std::make_unique<Plane<T>>(Vec3<T>(glm::normalize(s.normal)), T(s.distance), m, id);
+        } else if constexpr (std::is_same_v<S, BoxDesc>) {
+          return std::make_unique<Box<T>>(Vec3<T>(s.min), Vec3<T>(s.max), m, id);
+        } else if constexpr (std::is_same_v<S, ConeDesc>) {
+          return std::make_unique<Cone<T>>(Vec3<T>(s.base), T(s.baseRadius), Vec3<T>(s.cap), T(s.capRadius), m, id);
+        } else if constexpr (std::is_same_v<S, CylinderDesc>) {
+          return std::make_unique<Cylinder<T>>(Vec3<T>(s.base), Vec3<T>(s.cap), T(s.radius), m, id);
         } else {
           throw ParseError(desc.loc, std::string(shapeName(s)) + " objects cannot be rendered yet");
         }
