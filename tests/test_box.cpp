@@ -85,13 +85,18 @@ TEMPLATE_TEST_CASE("rays lying in a face plane or along an edge graze the box wi
   CHECK(along->normal == Vec3<T>(1, 0, 0));
 }
 
-TEMPLATE_TEST_CASE("a ray through a corner hits it", "[box]", float, double) {
+TEMPLATE_TEST_CASE("rays through a corner or touching an edge hit it", "[box]", float, double) {
   using T = TestType;
   const auto hit = unitBox<T>().intersect(Ray<T>{Vec3<T>(-3, -3, -3), Vec3<T>(1, 1, 1)}, Interval<T>{});
   REQUIRE(hit);
   CHECK(hit->t == T(2));
   CHECK(hit->point == Vec3<T>(-1, -1, -1));
   CHECK(glm::length(hit->normal) == T(1));
+  // Touching only the edge x = y = −1 (entry and exit at the same t): inclusive, so it is hit there.
+  const auto edge = unitBox<T>().intersect(Ray<T>{Vec3<T>(-2, 0, 0), Vec3<T>(1, -1, 0)}, Interval<T>{});
+  REQUIRE(edge);
+  CHECK(edge->t == T(1));
+  CHECK(edge->point == Vec3<T>(-1, -1, 0));
 }
 
 TEMPLATE_TEST_CASE("the box answers only inside the open interval", "[box]", float, double) {
