@@ -144,3 +144,22 @@ TEST_CASE("the scene builds boxes, cones and cylinders, transformed or not", "[t
   CHECK(side->object->id() == 3);
   CHECK(side->normal == glm::dvec3(1, 0, 0));
 }
+
+TEST_CASE("a sphere moved by a similarity becomes a plain sphere; other transforms are kept", "[transformed][scene]") {
+  const SceneDesc desc = parsePov(std::string(kCamera) +
+                                      "sphere { <1, 0, 0>, 2 rotate <0, 90, 0> scale 0.5 translate <1, 2, 3> }\n"
+                                      "sphere { <0, 0, 0>, 1 scale <2, 1, 1> }\n",
+                                  "spheres.pov");
+  const Scene<double> scene(desc, Arithmetic{Precision::Double, SphereMethod::Robust});
+  // Ry(90) takes the centre (1, 0, 0) to (0, 0, −1); halved and moved: (1, 2, 2.5), radius 1.
+  const auto* folded = dynamic_cast<const Sphere<double>*>(scene.objects().at(0).get());
+  REQUIRE(folded);
+  const auto bounds = folded->bounds();
+  checkNear(bounds->min, glm::dvec3(0, 1, 1.5), 1e-12);
+  checkNear(bounds->max, glm::dvec3(2, 3, 3.5), 1e-12);
+  const auto hit = scene.closestHit(Ray<double>{{1, 2, 12}, {0, 0, -1}}, Interval<double>{});
+  REQUIRE(hit);
+  CHECK(hit->t == Approx(8.5));
+  CHECK(hit->object->id() == 1);
+  CHECK(dynamic_cast<const Transformed<double>*>(scene.objects().at(1).get()));
+}
