@@ -354,3 +354,20 @@ TEST_CASE("pov: errors are ParseErrors carrying their location") {
     CHECK(e.loc().str() == "s.pov:2:19");
   }
 }
+
+TEST_CASE("pov: commas between shape parameters") {
+  CHECK(errorOf("plane { <0,1,0> 1 }") == "s.pov:2:17: error: expected ',' after the plane normal, found '1'");
+  CHECK(errorOf("triangle { <0,0,0> <1,0,0>, <0,1,0> }") ==
+        "s.pov:2:20: error: expected ',' after the first triangle vertex, found '<'");
+  CHECK(errorOf("triangle { <0,0,0>, <1,0,0> <0,1,0> }") ==
+        "s.pov:2:29: error: expected ',' after the second triangle vertex, found '<'");
+  CHECK(errorOf("box { <0,0,0> <1,1,1> }") == "s.pov:2:15: error: expected ',' after the first box corner, found '<'");
+  CHECK(errorOf("cone { <0,0,0>, 1 <0,1,0>, 0 }") ==
+        "s.pov:2:19: error: expected ',' after the cone base radius, found '<'");
+  CHECK(errorOf("cone { <0,0,0>, 1, <0,1,0>, -2 }") ==
+        "s.pov:2:29: error: the cone cap radius must not be negative, found -2");
+  CHECK(errorOf("cylinder { <0,0,0> <0,1,0>, 1 }") ==
+        "s.pov:2:20: error: expected ',' after the cylinder base, found '<'");
+  CHECK(errorOf("plane { <0,1,0>, 1 pigment { rgb <1,1,1> } ior 2 }") ==
+        "s.pov:2:44: error: unknown plane property 'ior'");
+}
