@@ -36,15 +36,20 @@ float cookTorranceSpecular(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l,
   // Light or viewer below the surface: χ⁺ in G makes the whole term 0 (§c.2).
   if (!(nl > 0.0f && nv > 0.0f)) return 0.0f;
   const Vec3<T> h = glm::normalize(l + v);  // l + v ≠ 0: both lie above the surface
-  const float alpha = roughness * roughness;
+  const float alpha = ggxAlpha(roughness);
   const float nh = saturate(float(glm::dot(n, h)));
   const float a2 = alpha * alpha;
-  const float k = nh * nh * (a2 - 1.0f) + 1.0f;  // between min(α², 1) and max(α², 1): never 0
+  // D's denominator (n·h)²(α² − 1) + 1, written as sin²θh + (n·h)²α² so that it keeps its α² near the peak
+  // instead of cancelling to 0 in float (1 − 1 + α²).
+  const Vec3<T> across = glm::cross(n, h);
+  const float k = float(glm::dot(across, across)) + nh * nh * a2;
   const float d = a2 / (glm::pi<float>() * k * k);
   const float g = smithG1(nv, alpha) * smithG1(nl, alpha);
   const float f = schlick(float(glm::dot(v, h)), ior);
   return d * g * f / (4.0f * std::max(1.0f / 16.0f, nv));
 }
+
+float ggxAlpha(float roughness) { return std::max(roughness * roughness, kMinGgxAlpha); }
 
 float schlick(float cosTheta, float ior) {
   const float r = (ior - 1.0f) / (ior + 1.0f);

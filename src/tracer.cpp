@@ -17,7 +17,7 @@ float brightest(const Color& c) { return std::max(c.r, std::max(c.g, c.b)); }
 // ≥ 0); for Cook-Torrance D ≤ max(1/(πα²), α²/π), G ≤ 1, F ≤ 1 and the denominator is at least 4/16.
 float specularBound(const Material& m, Brdf brdf) {
   if (brdf == Brdf::BlinnPhong) return 1.0f;
-  const float alpha = m.roughness * m.roughness;
+  const float alpha = ggxAlpha(m.roughness);
   return 4.0f * std::max(1.0f / (glm::pi<float>() * alpha * alpha), alpha * alpha / glm::pi<float>());
 }
 

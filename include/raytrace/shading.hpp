@@ -23,6 +23,11 @@ template <class T> float blinnPhongSpecular(const Vec3<T>& n, const Vec3<T>& v, 
 template <class T>
 float cookTorranceSpecular(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, float roughness, float ior);
 
+// GGX's α = roughness² (§c.2), floored at kMinGgxAlpha: a perfect mirror has no finite D, and below this
+// (roughness 3e-4) the highlight is a single over-exposed pixel anyway. The floor keeps D ≤ 1/(πα²) finite.
+constexpr float kMinGgxAlpha = 1e-7f;
+float ggxAlpha(float roughness);
+
 // Schlick's approximation F0 + (1 − F0)(1 − cosθ)^5 with F0 = ((ior − 1)/(ior + 1))² (§c.5).
 float schlick(float cosTheta, float ior);
 
