@@ -159,6 +159,7 @@ int renderImage(const Invocation& inv, std::ostream&) {
   return 0;
 }
 
+// A colour as the course prints it, "(r, g, b)" in bytes (§a.0).
 std::string bytes(const Color& c, Conventions::ToByte mode) {
   return "(" + std::to_string(toByte(c.r, mode)) + ", " + std::to_string(toByte(c.g, mode)) + ", " +
          std::to_string(toByte(c.b, mode)) + ")";
@@ -189,9 +190,7 @@ int rayTrees(const Invocation& inv, std::ostream& out, bool decorated) {
     const Tracer tracer(scene, inv.options);
     std::vector<RayRecord> trees;
     const Color color = tracer.pixel(camera, inv.x, inv.y, &trees);
-    const Conventions::ToByte mode = inv.scene.conventions.toByte;
-    const glm::ivec3 rgb(toByte(color.r, mode), toByte(color.g, mode), toByte(color.b, mode));
-    printRayTrees(out, inv.x, inv.y, rgb, trees, decorated);
+    printRayTrees(out, inv.x, inv.y, bytes(color, inv.scene.conventions.toByte), trees, decorated);
     return 0;
   });
 }

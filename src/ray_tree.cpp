@@ -67,9 +67,9 @@ void printNode(std::ostream& out, const std::string& prefix, const RayRecord& r,
 
 }  // namespace
 
-void printRayTrees(std::ostream& out, int x, int y, const glm::ivec3& color, const std::vector<RayRecord>& trees,
+void printRayTrees(std::ostream& out, int x, int y, const std::string& color, const std::vector<RayRecord>& trees,
                    bool decorated) {
-  out << "Pixel: [" << x << ", " << y << "] Color: (" << color.r << ", " << color.g << ", " << color.b << ")\n";
+  out << "Pixel: [" << x << ", " << y << "] Color: " << color << "\n";
   for (const RayRecord& tree : trees) printNode(out, "", tree, decorated);
   out << "\n" << std::string(80, '-') << "\n\n";
 }

@@ -21,7 +21,8 @@ float smithG1(float xn, float alpha) {
 
 }  // namespace
 
-template <class T> float blinnPhongSpecular(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, float exponent) {
+template <class T>
+float blinnPhongSpecular(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, float exponent) {
   const Vec3<T> sum = l + v;
   const T len = glm::length(sum);
   if (!(len > T(0))) return 0.0f;  // l = −v: no half vector

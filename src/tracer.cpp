@@ -145,8 +145,8 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float we
   const float reflectWeight = weight * w.reflection * brightest(reflectTint);
   if (child <= conventions_.maxDepth && w.reflection > 0 && matters(reflectWeight, child)) {
     RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
-    const Traced r =
-        trace(spawnRay(hit, reflectDirection(ray.dir, n), options_.offset), RayRecord::Kind::Reflection, child, reflectWeight, sub);
+    const Ray<T> mirrored = spawnRay(hit, reflectDirection(ray.dir, n), options_.offset);
+    const Traced r = trace(mirrored, RayRecord::Kind::Reflection, child, reflectWeight, sub);
     reflection = w.reflection * reflectTint * r.color;
   }
 

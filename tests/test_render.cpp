@@ -1,7 +1,10 @@
 #include <cmath>
+#include <sstream>
 
 #include <catch2/catch.hpp>
 
+#include "raytrace/cli.hpp"
+#include "raytrace/error.hpp"
 #include "raytrace/loader.hpp"
 #include "raytrace/render.hpp"
 #include "raytrace/tracer.hpp"
@@ -44,7 +47,9 @@ void add(SceneDesc& scene, const ShapeDesc& shape, const Material& m) {
   scene.objects.push_back(o);
 }
 
-Color centre(const SceneDesc& scene, const RenderOptions& options = {}) { return render(scene, 1, 1, options).at(0, 0); }
+Color centre(const SceneDesc& scene, const RenderOptions& options = {}) {
+  return render(scene, 1, 1, options).at(0, 0);
+}
 
 void checkColor(const Color& actual, const Color& expected, double tolerance = 1e-5) {
   CAPTURE(actual.r, actual.g, actual.b, expected.r, expected.g, expected.b);
@@ -222,4 +227,22 @@ TEST_CASE("Rendered images are finite whatever the flags and materials", "[rende
     add(scene, PlaneDesc{{0, 1, 0}, -1}, odd);
     each(scene);
   }
+}
+
+TEST_CASE("Bad shading flags are reported with the accepted values", "[render]") {
+  const auto error = [](std::vector<std::string> args) -> std::string {
+    std::ostringstream out, err;
+    try {
+      runCommand(args, out, err);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  CHECK(error({"render", "scene.pov", "4", "4", "-ss=0"}) == "-ss must be between 1 and 64, found 0");
+  CHECK(error({"render", "scene.pov", "4", "4", "-ss=x"}) == "-ss must be a whole number, found 'x'");
+  CHECK(error({"printrays", "scene.pov", "4", "4", "0", "0", "--offset=epsilon"}) ==
+        "--offset must be course or relative, found 'epsilon'");
+  CHECK(error({"pixelcolor", "scene.pov", "4", "4", "0", "0", "-altbrdff"}) ==
+        "unknown option '-altbrdff' (see raytrace --help)");
 }

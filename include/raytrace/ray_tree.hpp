@@ -35,9 +35,9 @@ struct RayRecord {
   Color color{0};                      // what the ray returned: the sum above (clamped where the scene asks)
 };
 
-// Prints the trees of one pixel (one per sample) after the line "Pixel: [x, y] Color: (r, g, b)".
-// `decorated` selects the pixeltrace layout with tree branches and shadow rays.
-void printRayTrees(std::ostream& out, int x, int y, const glm::ivec3& color, const std::vector<RayRecord>& trees,
+// Prints the trees of one pixel (one per sample) after the line "Pixel: [x, y] Color: <color>", with the
+// pixel's colour already formatted. `decorated` selects the pixeltrace layout with branches and shadow rays.
+void printRayTrees(std::ostream& out, int x, int y, const std::string& color, const std::vector<RayRecord>& trees,
                    bool decorated);
 
 }  // namespace rt
