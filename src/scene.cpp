@@ -9,6 +9,7 @@
 #include "raytrace/plane.hpp"
 #include "raytrace/sphere.hpp"
 #include "raytrace/transformed.hpp"
+#include "raytrace/triangle.hpp"
 
 namespace rt {
 
@@ -24,14 +25,15 @@ std::unique_ptr<Object<T>> makeObject(const ObjectDesc& desc, const Arithmetic& 
           return std::make_unique<Sphere<T>>(Vec3<T>(s.center), T(s.radius), arithmetic.sphere, m, id);
         } else if constexpr (std::is_same_v<S, PlaneDesc>) {
           return std::make_unique<Plane<T>>(Vec3<T>(glm::normalize(s.normal)), T(s.distance), m, id);
+        } else if constexpr (std::is_same_v<S, TriangleDesc>) {
+          return std::make_unique<Triangle<T>>(Vec3<T>(s.a), Vec3<T>(s.b), Vec3<T>(s.c), m, id);
         } else if constexpr (std::is_same_v<S, BoxDesc>) {
           return std::make_unique<Box<T>>(Vec3<T>(s.min), Vec3<T>(s.max), m, id);
         } else if constexpr (std::is_same_v<S, ConeDesc>) {
           return std::make_unique<Cone<T>>(Vec3<T>(s.base), T(s.baseRadius), Vec3<T>(s.cap), T(s.capRadius), m, id);
-        } else if constexpr (std::is_same_v<S, CylinderDesc>) {
-          return std::make_unique<Cylinder<T>>(Vec3<T>(s.base), Vec3<T>(s.cap), T(s.radius), m, id);
         } else {
-          throw ParseError(desc.loc, std::string(shapeName(s)) + " objects cannot be rendered yet");
+          static_assert(std::is_same_v<S, CylinderDesc>, "every ShapeDesc kind must be built here");
+          return std::make_unique<Cylinder<T>>(Vec3<T>(s.base), Vec3<T>(s.cap), T(s.radius), m, id);
         }
       },
       desc.shape);
