@@ -40,21 +40,13 @@ std::optional<Hit<T>> Cone<T>::intersect(const Ray<T>& ray, Interval<T> range) c
     const Vec3<T> u = len > T(0) ? radial / len : Vec3<T>(0);
     hit.normal = glm::normalize(u - slope_ * frame_.axis());
     // Re-projected onto the side (stability.md F4): at the radius of its height, between the ends.
-    const T y = glm::clamp(s.oy + t * s.dy, T(0), frame_.height());
-    hit.point = frame_.base() + y * frame_.axis() + (baseRadius_ + slope_ * y) * u;
+    const T y = frame_.heightAt(s, t);
+    hit.point = frame_.at(y, (baseRadius_ + slope_ * y) * u);
   } else {
     hit = frame_.diskHit(s, *nearest.part, t);
   }
   hit.object = this;
   return hit;
-}
-
-template <class T> std::optional<Aabb<T>> Cone<T>::bounds() const {
-  using Part = typename Axial<T>::Part;
-  Aabb<T> box;
-  frame_.expandByDisk(box, Part::Base, baseRadius_);
-  frame_.expandByDisk(box, Part::Cap, capRadius_);
-  return box;
 }
 
 template class Cone<float>;

@@ -27,21 +27,12 @@ std::optional<Hit<T>> Cylinder<T>::intersect(const Ray<T>& ray, Interval<T> rang
     hit.t = t;
     hit.normal = glm::normalize(s.op + t * s.dp);
     // Re-projected onto the side (stability.md F4): at the radius, between the ends.
-    const T y = glm::clamp(s.oy + t * s.dy, T(0), frame_.height());
-    hit.point = frame_.base() + y * frame_.axis() + radius_ * hit.normal;
+    hit.point = frame_.at(frame_.heightAt(s, t), radius_ * hit.normal);
   } else {
     hit = frame_.diskHit(s, *nearest.part, t);
   }
   hit.object = this;
   return hit;
-}
-
-template <class T> std::optional<Aabb<T>> Cylinder<T>::bounds() const {
-  using Part = typename Axial<T>::Part;
-  Aabb<T> box;
-  frame_.expandByDisk(box, Part::Base, radius_);
-  frame_.expandByDisk(box, Part::Cap, radius_);
-  return box;
 }
 
 template class Cylinder<float>;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <utility>
 
 #include "raytrace/aabb.hpp"
 #include "raytrace/hit.hpp"
@@ -23,9 +24,14 @@ template <class T> class Axial {
   Axial(const Vec3<T>& base, const Vec3<T>& cap)
       : base_(base), axis_(glm::normalize(cap - base)), height_(glm::length(cap - base)) {}
 
-  const Vec3<T>& base() const { return base_; }
   const Vec3<T>& axis() const { return axis_; }
   T height() const { return height_; }
+
+  // The point at height y with the radial offset `across` (perpendicular to the axis).
+  Vec3<T> at(T y, const Vec3<T>& across) const { return base_ + y * axis_ + across; }
+
+  // The height of a side hit, clamped to the ends: the re-projected point must not leave the side (F4).
+  T heightAt(const Split& s, T t) const { return glm::clamp(s.oy + t * s.dy, T(0), height_); }
 
   Split split(const Ray<T>& ray) const {
     const Vec3<T> o = ray.origin - base_;
@@ -55,17 +61,21 @@ template <class T> class Axial {
     Hit<T> hit;
     hit.t = t;
     const T y = end == Part::Cap ? height_ : T(0);
-    hit.point = base_ + y * axis_ + (s.op + t * s.dp);
+    hit.point = at(y, s.op + t * s.dp);
     hit.normal = end == Part::Cap ? axis_ : -axis_;
     return hit;
   }
 
-  // Grows `box` by the end disk of radius `radius`: across axis i a disk reaches radius·√(1 − axisᵢ²).
-  void expandByDisk(Aabb<T>& box, Part end, T radius) const {
-    const Vec3<T> centre = base_ + (end == Part::Cap ? height_ : T(0)) * axis_;
-    const Vec3<T> reach = radius * glm::sqrt(glm::max(Vec3<T>(0), Vec3<T>(1) - axis_ * axis_));
-    box.expand(centre - reach);
-    box.expand(centre + reach);
+  // The exact bounds of the two end disks, hence of the whole shape: across axis i a disk of radius ρ reaches
+  // ρ·√(1 − axisᵢ²) from its centre.
+  Aabb<T> bounds(T baseRadius, T capRadius) const {
+    const Vec3<T> across = glm::sqrt(glm::max(Vec3<T>(0), Vec3<T>(1) - axis_ * axis_));
+    Aabb<T> box;
+    for (const auto& [y, radius] : {std::pair<T, T>{T(0), baseRadius}, {height_, capRadius}}) {
+      box.expand(at(y, -radius * across));
+      box.expand(at(y, radius * across));
+    }
+    return box;
   }
 
  private:

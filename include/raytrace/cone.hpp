@@ -17,7 +17,7 @@ template <class T> class Cone final : public Object<T> {
         slope_((capRadius - baseRadius) / frame_.height()) {}
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
-  std::optional<Aabb<T>> bounds() const override;
+  std::optional<Aabb<T>> bounds() const override { return frame_.bounds(baseRadius_, capRadius_); }
 
  private:
   Axial<T> frame_;

@@ -13,7 +13,7 @@ template <class T> class Cylinder final : public Object<T> {
       : Object<T>(material, id), frame_(base, cap), radius_(radius) {}
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
-  std::optional<Aabb<T>> bounds() const override;
+  std::optional<Aabb<T>> bounds() const override { return frame_.bounds(radius_, radius_); }
 
  private:
   Axial<T> frame_;
