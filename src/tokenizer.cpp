@@ -43,9 +43,9 @@ Token Tokenizer::next() {
   return t;
 }
 
-// Only ever called inside the text, and never across a newline inside a token.
+// Only ever called inside the text.
 void Tokenizer::advance() {
-  if (s_[i_] == '\n') {
+  if (endsLine()) {
     ++line_;
     col_ = 1;
   } else {
@@ -60,7 +60,7 @@ void Tokenizer::skipSpaceAndComments() {
     if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
       advance();
     } else if (c == '/' && peek(1) == '/') {
-      while (i_ < s_.size() && s_[i_] != '\n') advance();
+      while (i_ < s_.size() && !endsLine()) advance();
     } else if (c == '/' && peek(1) == '*') {
       const SourceLoc start = here();
       advance(), advance();

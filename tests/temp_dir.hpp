@@ -1,48 +1,54 @@
-// A fresh directory for one test's files, removed with everything in it when the test ends.
+// A fresh directory for one test, removed with everything in it when the test ends.
 #pragma once
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
-#include <unistd.h>
+#include <stdlib.h>
 
 namespace rt::test {
 
 class TempDir {
  public:
-  explicit TempDir(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() /
-              ("raytrace-test-" + name + "-" + std::to_string(getpid()))) {
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
+  TempDir() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "raytrace-test-XXXXXX").string();
+    path_ = mkdtemp(pattern.data());
   }
   ~TempDir() {
     std::error_code ignored;
+    std::filesystem::permissions(path_, std::filesystem::perms::owner_all, ignored);
     std::filesystem::remove_all(path_, ignored);
   }
   TempDir(const TempDir&) = delete;
   TempDir& operator=(const TempDir&) = delete;
 
-  // The path of `file` in the directory, optionally created with `content`.
-  std::string file(const std::string& file) const { return (path_ / file).string(); }
-  std::string write(const std::string& file, const std::string& content) const {
-    std::ofstream(path_ / file, std::ios::binary) << content;
-    return (path_ / file).string();
+  std::string path() const { return path_.string(); }
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+  // Writes `text` to `name` inside the directory and returns its path.
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(file(name), std::ios::binary) << text;
+    return file(name);
   }
-  static std::string read(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }
-  // How many entries the directory holds: no stray temporary file may be left behind.
-  size_t entries() const {
-    size_t n = 0;
-    for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(path_)) ++n;
-    return n;
+
+  // The names in the directory, sorted.
+  std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    for (const auto& e : std::filesystem::directory_iterator(path_)) out.push_back(e.path().filename().string());
+    std::sort(out.begin(), out.end());
+    return out;
   }
 
  private:
   std::filesystem::path path_;
 };
+
+inline std::string readAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
 
 }  // namespace rt::test

@@ -25,13 +25,13 @@ std::string errorOf(const std::string& path) {
 }  // namespace
 
 TEST_CASE("readFile returns the bytes exactly, NUL bytes included", "[loader]") {
-  const TempDir dir("read");
+  const TempDir dir;
   const std::string bytes("a\0b\r\n\xFF", 6);
   CHECK(rt::readFile(dir.write("x.pov", bytes)) == bytes);
 }
 
 TEST_CASE("files that are not scenes are refused with one reason", "[loader]") {
-  const TempDir dir("refuse");
+  const TempDir dir;
   const std::string missing = dir.file("missing.pov");
   CHECK(errorOf(missing) == "cannot open '" + missing + "': No such file or directory");
 
@@ -47,21 +47,21 @@ TEST_CASE("files that are not scenes are refused with one reason", "[loader]") {
 }
 
 TEST_CASE("a file that vanishes before it is read is a missing file", "[loader]") {
-  const TempDir dir("vanish");
+  const TempDir dir;
   const std::string path = dir.write("gone.pov", "camera {}");
   REQUIRE(unlink(path.c_str()) == 0);
   CHECK(errorOf(path) == "cannot open '" + path + "': No such file or directory");
 }
 
 TEST_CASE("a scene file over the size limit is refused before it is read", "[loader]") {
-  const TempDir dir("big");
+  const TempDir dir;
   const std::string path = dir.write("big.pov", "");
   REQUIRE(truncate(path.c_str(), off_t(rt::kMaxSceneFileBytes + 1)) == 0);  // sparse: no disk used
   CHECK(errorOf(path) == "cannot read '" + path + "': it is larger than 1024 MiB, the most a scene file may have");
 }
 
 TEST_CASE("empty and binary files are located parse errors", "[loader]") {
-  const TempDir dir("content");
+  const TempDir dir;
   const std::string empty = dir.write("empty.pov", "");
   CHECK(errorOf(empty) == empty + ":1:1: error: the scene has no camera");
   const std::string png = dir.write("image.pov", "\x89PNG\r\n\x1A\n");

@@ -44,10 +44,10 @@ const Malformed kCases[] = {
      "camera { location <0,0,5> look_at <0,0,0> }\n"
      "sphere { <0,0,0>, 1 pigment { color rgba <1,0,0,0> } }\n"s,
      "m.pov:2:37: error: expected 'rgb' or 'rgbf' in the pigment colour, found 'rgba'"},
-    {"color_rgb4",
+    {"color_rgb5",
      "camera { location <0,0,5> look_at <0,0,0> }\n"
-     "sphere { <0,0,0>, 1 pigment { color rgb <1,0,0,0> } }\n"s,
-     "m.pov:2:49: error: an 'rgb' colour needs 3 components, found 4"},
+     "sphere { <0,0,0>, 1 pigment { color rgb <1,0,0,0,0> } }\n"s,
+     "m.pov:2:51: error: an 'rgb' colour needs 3 or 4 components, found 5"},
     {"comment_open",
      "camera { location <0,0,5> look_at <0,0,0> }\n"
      "/* a comment\nthat never ends\n"s,

@@ -19,10 +19,10 @@ struct Token {
 };
 
 // Splits POV text into tokens, one at a time, so that a huge scene never holds more than one token in memory
-// (a million-sphere file would otherwise need gigabytes of tokens). Whitespace (including CR, tabs and form
-// feeds) and `//` and `/* */` comments separate tokens. Numbers are written as POV-Ray reads them: `.94`,
-// `-.001`, `1.`, `-0`, `1e-05`, `+2`. next() throws ParseError for an unterminated comment, a number out of
-// range or a byte that cannot be in a text file.
+// (a million-sphere file would otherwise need gigabytes of tokens). Whitespace (including tabs and form feeds)
+// and `//` and `/* */` comments separate tokens. Numbers are written as POV-Ray reads them: `.94`, `-.001`,
+// `1.`, `-0`, `1e-05`, `+2`. Lines end at LF, CRLF or a lone CR; a tab counts as one column. next() throws
+// ParseError for an unterminated comment, a number out of range or a byte that cannot be in a text file.
 class Tokenizer {
  public:
   // `text` must outlive the tokenizer, so a temporary is refused at compile time.
@@ -35,6 +35,8 @@ class Tokenizer {
  private:
   SourceLoc here() const { return SourceLoc{file_, line_, col_}; }
   char peek(size_t k = 0) const { return i_ + k < s_.size() ? s_[i_ + k] : '\0'; }
+  // A line ends at LF, CRLF or a lone CR (old Mac files, which POV-Ray reads too).
+  bool endsLine() const { return s_[i_] == '\n' || (s_[i_] == '\r' && peek(1) != '\n'); }
   void advance();
   void skipSpaceAndComments();
   bool startsNumber() const;
