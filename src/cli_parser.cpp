@@ -125,7 +125,9 @@ class CliParser {
     } else if (name == "write") {
       write(words);
     } else {
-      throw ParseError(command.loc, "unknown command '" + name + "'");
+      std::string known;
+      for (const char* c : kCommands) known += std::string(known.empty() ? "" : ", ") + c;
+      throw ParseError(command.loc, "unknown command '" + name + "' (the commands are " + known + ")");
     }
   }
 
@@ -163,8 +165,8 @@ class CliParser {
 
   // The eye at the origin looking down −z with y up; `fov` is the full angle and the image plane at z = −1
   // spans ±tan(fov/2) (§A.4.1). No half-pixel offset: pixel (i, j), row j from the top, looks through
-  // x = (i − W/2)·2k/W, y = −(j − H/2)·2k/H. In the camera's pixel units (y up, row = H−1−j) that is the point
-  // (i + 0, y + 1) of the pixel.
+  // x = (i − W/2)·2k/W, y = −(j − H/2)·2k/H. In the camera's pixel units (y up, pixel y = H−1−j) that is the
+  // pixel's upper-left corner, offset (0, 1) from its lower-left one.
   void setFov(double degrees) {
     const double k = std::tan(glm::radians(degrees) / 2);
     CameraDesc& cam = scene_.camera;

@@ -13,6 +13,7 @@ namespace {
 
 SceneDesc parse(const std::string& text) { return parseCli(text, "t.cli"); }
 
+const std::string kKnown = " (the commands are fov, background, light, surface, sphere, cylinder, write)";
 const std::string kHeader = "fov 60\nsurface .1 .2 .3  .4 .5 .6  .7 .8 .9  20 .5\n";
 
 }  // namespace
@@ -175,9 +176,9 @@ TEST_CASE("cli: errors are located and whole") {
     REQUIRE_THROWS_WITH(parse(text), message);
   };
   SECTION("unknown commands") {
-    error("fov 60\ntriangle 0 0 0\n", "t.cli:2:1: error: unknown command 'triangle'");
-    error("FOV 60\n", "t.cli:1:1: error: unknown command 'FOV'");
-    error("fov 60\n  eye 0 0 0\n", "t.cli:2:3: error: unknown command 'eye'");
+    error("fov 60\ntriangle 0 0 0\n", "t.cli:2:1: error: unknown command 'triangle'" + kKnown);
+    error("FOV 60\n", "t.cli:1:1: error: unknown command 'FOV'" + kKnown);
+    error("fov 60\n  eye 0 0 0\n", "t.cli:2:3: error: unknown command 'eye'" + kKnown);
   }
   SECTION("argument counts") {
     error(kHeader + "cylinder 1 1.5 -6 -2.5\n", "t.cli:3:1: error: 'cylinder' needs 5 numbers, found 4");

@@ -10,7 +10,7 @@ namespace rt {
 // The whole file as bytes. Throws Error with a one-line reason for a missing, unreadable or non-regular file.
 std::string readFile(const std::string& path);
 
-// A file name's extension in lower case without the dot: "PNG" for "a/b.PNG", "" for "a.d/b" or ".png" (a
+// A file name's extension in lower case without the dot: "png" for "a/b.PNG", "" for "a.d/b" or ".png" (a
 // hidden file's name is no extension).
 std::string extension(const std::string& path);
 
