@@ -41,10 +41,11 @@ int parseInt(const std::string& s, const char* what, int lo, int hi) {
   errno = 0;
   char* end = nullptr;
   const long v = std::strtol(s.c_str(), &end, 10);
-  if (s.empty() || *end != '\0' || errno == ERANGE) {
+  if (s.empty() || *end != '\0') {
     throw Error(std::string(what) + " must be a whole number, found '" + s + "'");
   }
-  if (v < lo || v > hi) {
+  // A number too long for a long (ERANGE) is still a whole number, just out of range.
+  if (errno == ERANGE || v < lo || v > hi) {
     throw Error(std::string(what) + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
                 ", found " + s);
   }

@@ -18,7 +18,7 @@ const std::string kHeader = "fov 60\nsurface .1 .2 .3  .4 .5 .6  .7 .8 .9  20 .5
 
 }  // namespace
 
-TEST_CASE("cli: fov gives the course camera at the origin looking down -z (cs3451 A.4.1)") {
+TEST_CASE("cli_parser: fov gives the course camera at the origin looking down -z (cs3451 A.4.1)") {
   const SceneDesc s = parse("fov 90\n");
   const CameraDesc& c = s.camera;
   CHECK(c.location == glm::dvec3(0));
@@ -32,7 +32,7 @@ TEST_CASE("cli: fov gives the course camera at the origin looking down -z (cs345
   CHECK(c.rightFollowsImage);
 }
 
-TEST_CASE("cli: pixel rays follow x = (i - W/2)2k/W, y = -(j - H/2)2k/H with no half-pixel offset") {
+TEST_CASE("cli_parser: pixel rays follow x = (i - W/2)2k/W, y = -(j - H/2)2k/H with no half-pixel offset") {
   const SceneDesc s = parse("fov 60\n");
   const double k = std::tan(glm::radians(30.0));
   const int w = 300, h = 300;
@@ -52,7 +52,7 @@ TEST_CASE("cli: pixel rays follow x = (i - W/2)2k/W, y = -(j - H/2)2k/H with no 
   CHECK(camera.pixelRay(150, h - 1 - 150).dir == glm::dvec3(0, 0, -1));
 }
 
-TEST_CASE("cli: a wide image keeps fov vertical and its pixels square") {
+TEST_CASE("cli_parser: a wide image keeps fov vertical and its pixels square") {
   const SceneDesc s = parse("fov 90\n");
   const Camera<double> camera(s.camera, 600, 300);
   // Top-left pixel: x spans ±2 (twice the height's ±1), y = 1.
@@ -63,7 +63,7 @@ TEST_CASE("cli: a wide image keeps fov vertical and its pixels square") {
   CHECK(d.z == Approx(want.z).margin(1e-15));
 }
 
-TEST_CASE("cli: every command, in the course's argument orders (cs3451 A.2)") {
+TEST_CASE("cli_parser: every command, in the course's argument orders (cs3451 A.2)") {
   const SceneDesc s = parse(
       "fov 60\n"
       "background .2 .3 1\n"
@@ -104,7 +104,7 @@ TEST_CASE("cli: every command, in the course's argument orders (cs3451 A.2)") {
   CHECK(s.writes[0].scene.writes.empty());
 }
 
-TEST_CASE("cli: the language's conventions are set for every scene (cs3451 A.4)") {
+TEST_CASE("cli_parser: the language's conventions are set for every scene (cs3451 A.4)") {
   const Conventions c = parse("fov 60\n").conventions;
   CHECK(c.background == Color(0));  // the starter's background(0,0,0)
   CHECK(c.toByte == Conventions::ToByte::Truncate);
@@ -115,7 +115,7 @@ TEST_CASE("cli: the language's conventions are set for every scene (cs3451 A.4)"
   CHECK_FALSE(c.shadeDeepest);
 }
 
-TEST_CASE("cli: commands run in order; each write keeps the scene as it stood") {
+TEST_CASE("cli_parser: commands run in order; each write keeps the scene as it stood") {
   const SceneDesc s = parse(kHeader +
                             "sphere 0 0 -4 1\n"
                             "write a.png\n"
@@ -144,7 +144,7 @@ TEST_CASE("cli: commands run in order; each write keeps the scene as it stood") 
   CHECK(s.objects.size() == 2);
 }
 
-TEST_CASE("cli: CRLF, comments, blank lines, tabs and number spellings") {
+TEST_CASE("cli_parser: CRLF, comments, blank lines, tabs and number spellings") {
   const SceneDesc s = parse(
       "# a comment\r\n"
       "\r\n"
@@ -163,14 +163,14 @@ TEST_CASE("cli: CRLF, comments, blank lines, tabs and number spellings") {
   CHECK(s.writes[0].path == "x.png");
 }
 
-TEST_CASE("cli: a file without objects or writes is a valid, empty scene") {
+TEST_CASE("cli_parser: a file without objects or writes is a valid, empty scene") {
   const SceneDesc s = parse("fov 45\n");
   CHECK(s.objects.empty());
   CHECK(s.lights.empty());
   CHECK(s.writes.empty());
 }
 
-TEST_CASE("cli: errors are located and whole") {
+TEST_CASE("cli_parser: errors are located and whole") {
   const auto error = [](const std::string& text, const std::string& message) {
     CAPTURE(text);
     REQUIRE_THROWS_WITH(parse(text), message);
@@ -235,7 +235,7 @@ TEST_CASE("cli: errors are located and whole") {
   }
 }
 
-TEST_CASE("cli: looksLikeCli reads the first line that is not blank or a comment") {
+TEST_CASE("cli_parser: looksLikeCli reads the first line that is not blank or a comment") {
   CHECK(looksLikeCli("fov 60\n"));
   CHECK(looksLikeCli("# colored lights\r\n\r\nfov 60\r\n"));
   CHECK(looksLikeCli("  \n\tsphere 0 0 -4 1\n"));

@@ -1,13 +1,10 @@
-#include <cstdio>
-#include <cstdlib>
 #include <sstream>
-
-#include <unistd.h>
 
 #include <catch2/catch.hpp>
 
 #include "raytrace/cli.hpp"
 #include "raytrace/loader.hpp"
+#include "temp_dir.hpp"
 
 using namespace rt;
 
@@ -41,43 +38,26 @@ TEST_CASE("loader: without a known extension the first meaningful line decides, 
 
 namespace {
 
-// A scene file on disk for the length of a test, named with the given suffix.
-class TempScene {
- public:
-  TempScene(const std::string& suffix, const std::string& text) {
-    std::string name = "/tmp/raytrace_test_XXXXXX" + suffix;
-    const int fd = mkstemps(name.data(), int(suffix.size()));
-    REQUIRE(fd >= 0);
-    REQUIRE(write(fd, text.data(), text.size()) == ssize_t(text.size()));
-    close(fd);
-    path_ = name;
-  }
-  ~TempScene() { std::remove(path_.c_str()); }
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
-
 const std::string kCliScene = "fov 60\nsurface 0 0 0  .4 .5 .6  0 0 0  1 0\nsphere 0 0 -4 1\n";
 
 }  // namespace
 
 TEST_CASE("loader: loadScene parses each language by its extension or, without one, its text") {
-  CHECK(loadScene(TempScene(".cli", kCliScene).path()).language == SceneLanguage::Cli);
-  CHECK(loadScene(TempScene("", kCliScene).path()).language == SceneLanguage::Cli);
+  const test::TempDir dir;
+  CHECK(loadScene(dir.write("a.cli", kCliScene)).language == SceneLanguage::Cli);
+  CHECK(loadScene(dir.write("b", kCliScene)).language == SceneLanguage::Cli);
   const std::string pov = "camera { location <0,0,0> up <0,1,0> right <1,0,0> look_at <0,0,-1> }\n";
-  CHECK(loadScene(TempScene("", pov).path()).language == SceneLanguage::Pov);
-  const TempScene wrong(".pov", kCliScene);
-  REQUIRE_THROWS_WITH(loadScene(wrong.path()),
-                      wrong.path() + ":1:1: error: expected 'camera', 'light_source' or an object, found 'fov'");
+  CHECK(loadScene(dir.write("c", pov)).language == SceneLanguage::Pov);
+  const std::string wrong = dir.write("d.pov", kCliScene);
+  REQUIRE_THROWS_WITH(loadScene(wrong),
+                      wrong + ":1:1: error: expected 'camera', 'light_source' or an object, found 'fov'");
 }
 
 TEST_CASE("loader: the ray commands take a .cli scene") {
-  const TempScene scene(".cli", kCliScene);
+  const test::TempDir dir;
   std::ostringstream out, err;
   // Pixel (150, 149) of 300 × 300 is the course's row 150, which looks straight down −z (cs3451 §A.4.1).
-  REQUIRE(runCommand({"firsthit", scene.path(), "300", "300", "150", "149"}, out, err) == 0);
+  REQUIRE(runCommand({"firsthit", dir.write("s.cli", kCliScene), "300", "300", "150", "149"}, out, err) == 0);
   CHECK(out.str() ==
         "Pixel: [150, 149] Ray: {0.0000 0.0000 0.0000} -> {0.0000 0.0000 -1.0000}\n"
         "T = 3.0000\n"
