@@ -50,7 +50,7 @@ TEST_CASE("loader: loadScene parses each language by its extension or, without o
   CHECK(loadScene(dir.write("c", pov)).language == SceneLanguage::Pov);
   const std::string wrong = dir.write("d.pov", kCliScene);
   REQUIRE_THROWS_WITH(loadScene(wrong),
-                      wrong + ":1:1: error: expected 'camera', 'light_source' or an object, found 'fov'");
+                      wrong + ":1:1: error: unknown keyword 'fov'");
 }
 
 TEST_CASE("loader: the ray commands take a .cli scene") {
