@@ -49,8 +49,7 @@ TEST_CASE("loader: loadScene parses each language by its extension or, without o
   const std::string pov = "camera { location <0,0,0> up <0,1,0> right <1,0,0> look_at <0,0,-1> }\n";
   CHECK(loadScene(dir.write("c", pov)).language == SceneLanguage::Pov);
   const std::string wrong = dir.write("d.pov", kCliScene);
-  REQUIRE_THROWS_WITH(loadScene(wrong),
-                      wrong + ":1:1: error: unknown keyword 'fov'");
+  REQUIRE_THROWS_WITH(loadScene(wrong), wrong + ":1:1: error: unknown keyword 'fov'");
 }
 
 TEST_CASE("loader: the ray commands take a .cli scene") {
