@@ -1,10 +1,14 @@
 #include <cmath>
 #include <random>
+#include <sstream>
 
 #include <catch2/catch.hpp>
+#include <stb/stb_image.h>
 
 #include "raytrace/camera.hpp"
+#include "raytrace/cli.hpp"
 #include "raytrace/cli_parser.hpp"
+#include "temp_dir.hpp"
 
 using namespace rt;
 using namespace std::string_literals;
@@ -247,4 +251,62 @@ TEST_CASE("cli_parser: looksLikeCli reads the first line that is not blank or a 
   CHECK_FALSE(looksLikeCli("fovea 60\n"));
   CHECK_FALSE(looksLikeCli("# just a comment\n"));
   CHECK_FALSE(looksLikeCli(""));
+}
+
+namespace {
+
+struct Png {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;  // top row first
+  glm::ivec3 at(int col, int row) const {
+    const size_t i = (size_t(row) * width + col) * 3;
+    return {rgb[i], rgb[i + 1], rgb[i + 2]};
+  }
+};
+
+Png readPng(const std::string& path) {
+  Png png;
+  int channels = 0;
+  unsigned char* data = stbi_load(path.c_str(), &png.width, &png.height, &channels, 3);
+  REQUIRE(data);
+  png.rgb.assign(data, data + size_t(png.width) * png.height * 3);
+  stbi_image_free(data);
+  return png;
+}
+
+}  // namespace
+
+TEST_CASE("cli_parser: render makes each write's PNG from the scene as it stood, in truncated bytes") {
+  const test::TempDir dir;
+  const std::string scene = dir.write("s.cli",
+                                      "fov 90\n"
+                                      "background .2 .5 .8\n"
+                                      "surface .3 .6 .9  0 0 0  0 0 0  1 0\n"
+                                      "write " + dir.file("empty.png") + "\n"
+                                      "sphere 0 0 -3 1\n"
+                                      "write " + dir.file("sphere.png") + "\n");
+  std::ostringstream out, err;
+  REQUIRE(runCommand({"render", scene, "3", "3"}, out, err) == 0);
+  CHECK(dir.names() == std::vector<std::string>{"empty.png", "s.cli", "sphere.png"});  // no output.png
+  // Truncation, not rounding (cs3451 §A.4.2): .2 .5 .8 → 51 127 204 and .3 .6 .9 → 76 153 229.
+  const Png empty = readPng(dir.file("empty.png"));
+  REQUIRE(empty.width == 3);
+  REQUIRE(empty.height == 3);
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < 3; ++col) CHECK(empty.at(col, row) == glm::ivec3(51, 127, 204));
+  }
+  // With no light the sphere shows its ambient colour alone; the corner ray misses it.
+  const Png sphere = readPng(dir.file("sphere.png"));
+  CHECK(sphere.at(1, 1) == glm::ivec3(76, 153, 229));
+  CHECK(sphere.at(0, 2) == glm::ivec3(51, 127, 204));
+}
+
+TEST_CASE("cli_parser: render without a size makes the course's 300 x 300 image") {
+  const test::TempDir dir;
+  const std::string scene = dir.write("s.cli", "fov 60\nwrite " + dir.file("out.png") + "\n");
+  std::ostringstream out, err;
+  REQUIRE(runCommand({"render", scene}, out, err) == 0);
+  const Png png = readPng(dir.file("out.png"));
+  CHECK(png.width == 300);
+  CHECK(png.height == 300);
 }
