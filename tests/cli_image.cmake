@@ -1,15 +1,17 @@
-# `render` of a .cli scene must write exactly the PNG its `write` names, at the requested size, into the
-# working directory. -DBIN=<raytrace> -DSCENE=<scene> -DIMAGE=<name.png> -DWIDTH=… -DHEIGHT=… -DDIR=<directory>
+# An image command must write exactly IMAGE, a PNG of the requested size, into its working directory: raycast
+# and render write output.png, render of a .cli scene the file its `write` names.
+#   -DBIN=<raytrace> -DCOMMAND=<raycast|render> -DSCENE=<scene> -DWIDTH=… -DHEIGHT=… -DIMAGE=<name.png>
+#   -DDIR=<empty working directory to use>
 file(REMOVE_RECURSE "${DIR}")
 file(MAKE_DIRECTORY "${DIR}")
-execute_process(COMMAND "${BIN}" render "${SCENE}" ${WIDTH} ${HEIGHT} WORKING_DIRECTORY "${DIR}"
+execute_process(COMMAND "${BIN}" ${COMMAND} "${SCENE}" ${WIDTH} ${HEIGHT} WORKING_DIRECTORY "${DIR}"
                 RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0)
-  message(FATAL_ERROR "render failed (${status}):\n${err}")
+  message(FATAL_ERROR "${COMMAND} failed (${status}):\n${err}")
 endif()
 file(GLOB written RELATIVE "${DIR}" "${DIR}/*")
 if(NOT written STREQUAL "${IMAGE}")
-  message(FATAL_ERROR "render left '${written}' in its directory, expected only ${IMAGE}")
+  message(FATAL_ERROR "${COMMAND} left '${written}' in its directory, expected only ${IMAGE}")
 endif()
 # The PNG signature, then the IHDR chunk: length, "IHDR", width and height as big-endian 32-bit numbers.
 file(READ "${DIR}/${IMAGE}" header LIMIT 24 HEX)
