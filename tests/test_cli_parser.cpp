@@ -283,7 +283,7 @@ TEST_CASE("cli_parser: render makes each write's PNG from the scene as it stood,
                                       "background .2 .5 .8\n"
                                       "surface .3 .6 .9  0 0 0  0 0 0  1 0\n"
                                       "write " + dir.file("empty.png") + "\n"
-                                      "sphere 0 0 -3 1\n"
+                                      "sphere 0 0 -3 2\n"
                                       "write " + dir.file("sphere.png") + "\n");
   std::ostringstream out, err;
   REQUIRE(runCommand({"render", scene, "3", "3"}, out, err) == 0);
@@ -295,7 +295,8 @@ TEST_CASE("cli_parser: render makes each write's PNG from the scene as it stood,
   for (int row = 0; row < 3; ++row) {
     for (int col = 0; col < 3; ++col) CHECK(empty.at(col, row) == glm::ivec3(51, 127, 204));
   }
-  // With no light the sphere shows its ambient colour alone; the corner ray misses it.
+  // With no light the sphere shows its ambient colour alone. The centre pixel looks along (−1/3, 1/3, −1),
+  // 1.28 from the centre; the corner pixel along (−1, −1/3, −1), 2.18 from it.
   const Png sphere = readPng(dir.file("sphere.png"));
   CHECK(sphere.at(1, 1) == glm::ivec3(76, 153, 229));
   CHECK(sphere.at(0, 2) == glm::ivec3(51, 127, 204));
