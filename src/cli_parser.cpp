@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "raytrace/limits.hpp"
 #include "raytrace/loader.hpp"
 
 namespace rt {
@@ -19,42 +20,58 @@ struct Word {
 
 bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 
-// The words of every line, in order; a line with no words (blank, or a comment) gives an empty list. A word
-// starting with '#' comments out the rest of its line, and a CR anywhere counts as a space, so CRLF files read
-// like LF files. Control bytes are refused: a binary file should fail on its first line, not its hundredth.
-// `end` receives the location just after the text, for errors about what the file lacks.
-std::vector<std::vector<Word>> splitLines(const std::string& text, const std::string& file, SourceLoc& end) {
-  std::vector<std::vector<Word>> lines(1);
-  int line = 1, col = 1;
-  bool inWord = false, inComment = false;
-  for (const char c : text) {
-    if (c == '\n') {
-      lines.emplace_back();
-      ++line, col = 1;
-      inWord = inComment = false;
-      continue;
+// Splits the text into lines of whitespace-separated words, one line at a time, so that a huge file never
+// holds more than one line's words (a million spheres would otherwise take gigabytes). A word starting with
+// '#' comments out the rest of its line, and a CR anywhere counts as a space, so CRLF files read like LF
+// files. Control bytes are refused: a binary file should fail on its first line, not its hundredth.
+class LineSplitter {
+ public:
+  // `text` must outlive the splitter, so a temporary is refused at compile time.
+  LineSplitter(const std::string& text, const std::string& file) : text_(text), file_(file) {}
+  LineSplitter(std::string&& text, const std::string& file) = delete;
+
+  // The words of the next line (none for a blank or comment line); false once every line has been given.
+  bool next(std::vector<Word>& words) {
+    if (done_) return false;
+    words.clear();
+    bool inWord = false, inComment = false;
+    for (; i_ < text_.size(); ++i_, ++col_) {
+      const char c = text_[i_];
+      if (c == '\n') {
+        ++i_, ++line_, col_ = 1;
+        return true;
+      }
+      const auto byte = static_cast<unsigned char>(c);
+      if ((byte < 0x20 && !isSpace(c)) || byte == 0x7F) {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "0x%02X", byte);
+        throw ParseError(here(), std::string("unexpected byte ") + hex + " (is this a text scene file?)");
+      }
+      if (inComment) continue;
+      if (isSpace(c)) {
+        inWord = false;
+      } else if (!inWord && c == '#') {
+        inComment = true;
+      } else {
+        if (!inWord) words.push_back(Word{"", here()});
+        words.back().text += c;
+        inWord = true;
+      }
     }
-    const SourceLoc here{file, line, col++};
-    const auto byte = static_cast<unsigned char>(c);
-    if ((byte < 0x20 && !isSpace(c)) || byte == 0x7F) {
-      char hex[8];
-      std::snprintf(hex, sizeof hex, "0x%02X", byte);
-      throw ParseError(here, std::string("unexpected byte ") + hex + " (is this a text scene file?)");
-    }
-    if (inComment) continue;
-    if (isSpace(c)) {
-      inWord = false;
-    } else if (!inWord && c == '#') {
-      inComment = true;
-    } else {
-      if (!inWord) lines.back().push_back(Word{"", here});
-      lines.back().back().text += c;
-      inWord = true;
-    }
+    done_ = true;  // the last line, which no newline ends
+    return true;
   }
-  end = SourceLoc{file, line, col};
-  return lines;
-}
+
+  // Where the text ends, for errors about what the file lacks; meant for after the last line.
+  SourceLoc here() const { return SourceLoc{file_, line_, col_}; }
+
+ private:
+  const std::string& text_;
+  std::string file_;
+  size_t i_ = 0;
+  int line_ = 1, col_ = 1;
+  bool done_ = false;
+};
 
 // A .cli number as the course's Python `float()` reads the files' values (`.5`, `-1`, `1e-3`), but nothing
 // else strtod would take: no `nan`, `inf` or hexadecimal.
@@ -71,7 +88,7 @@ constexpr const char* kCommands[] = {"fov", "background", "light", "surface", "s
 
 class CliParser {
  public:
-  CliParser(const std::string& text, const std::string& file) : lines_(splitLines(text, file, end_)) {
+  CliParser(const std::string& text, const std::string& file) : lines_(text, file) {
     scene_.file = file;
     scene_.language = SceneLanguage::Cli;
     // The conventions that reproduce the course's reference images (cs3451-course.md §A.4).
@@ -85,10 +102,11 @@ class CliParser {
   }
 
   SceneDesc parse() {
-    for (const std::vector<Word>& words : lines_) {
+    std::vector<Word> words;
+    while (lines_.next(words)) {
       if (!words.empty()) run(words);
     }
-    if (!haveFov_) throw ParseError(end_, "the scene has no 'fov'");
+    if (!haveFov_) throw ParseError(lines_.here(), "the scene has no 'fov'");
     scene_.writes = std::move(writes_);
     return scene_;
   }
@@ -200,6 +218,9 @@ class CliParser {
     if (!haveSurface_) {
       throw ParseError(command.loc, "'" + command.text + "' comes before any 'surface', so it has no material");
     }
+    const size_t n = scene_.objects.size();  // a file of tiny objects can outgrow memory (limits.hpp)
+    const std::string shortage = objectMemoryShortage(n, n + 1, "a scene");
+    if (!shortage.empty()) throw ParseError(command.loc, shortage);
     ObjectDesc o;
     o.shape = shape;
     o.material = material_;
@@ -219,14 +240,19 @@ class CliParser {
       throw ParseError(words[1].loc, "'write' makes PNG files: the name must end in .png, found '" + path + "'");
     }
     if (!haveFov_) throw ParseError(command.loc, "'write' comes before any 'fov', so there is no camera");
+    // Each write keeps its own copy of the scene so far: many objects times many writes could fill memory.
+    const std::string shortage =
+        objectMemoryShortage(keptObjects_, keptObjects_ + scene_.objects.size(), "keeping the scene of each 'write'");
+    if (!shortage.empty()) throw ParseError(command.loc, shortage);
+    keptObjects_ += scene_.objects.size();
     writes_.push_back(WriteDesc{path, command.loc, scene_});
   }
 
-  SourceLoc end_;
-  std::vector<std::vector<Word>> lines_;
+  LineSplitter lines_;
   SceneDesc scene_;
   std::vector<WriteDesc> writes_;
   Material material_;
+  size_t keptObjects_ = 0;  // objects in all the writes' scenes
   bool haveSurface_ = false;
   bool haveFov_ = false;
 };

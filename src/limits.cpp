@@ -42,4 +42,13 @@ std::string memoryShortage(const std::string& what, std::uint64_t needed, std::u
          " MiB are available";
 }
 
+std::string objectMemoryShortage(std::uint64_t previous, std::uint64_t count, const std::string& what) {
+  std::uint64_t power = 65536;
+  if (count < power) return "";
+  while (power <= count / 2) power *= 2;  // the largest power of two not above count
+  if (previous >= power) return "";
+  return memoryShortage(what + " beyond " + std::to_string(power) + " objects", power * kBytesPerObject,
+                        availableMemory());
+}
+
 }  // namespace rt

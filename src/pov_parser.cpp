@@ -207,18 +207,10 @@ class PovParser {
       obj.shape = cyl;
     }
     parseModifiers(obj, keyword);
-    reserveObject(keyword.loc);
+    const size_t n = scene_.objects.size();  // a file of tiny objects can outgrow memory (limits.hpp)
+    const std::string shortage = objectMemoryShortage(n, n + 1, "a scene");
+    if (!shortage.empty()) throw ParseError(keyword.loc, shortage);
     scene_.objects.push_back(obj);
-  }
-
-  // Millions of tiny objects fit in a file of allowed size but not always in memory: each time the object
-  // count doubles (from 65536 on, so small scenes never ask), the next doubling must fit (limits.hpp).
-  void reserveObject(const SourceLoc& at) {
-    const size_t n = scene_.objects.size();
-    if (n < 65536 || (n & (n - 1)) != 0) return;
-    const std::string shortage = memoryShortage("going beyond " + std::to_string(n) + " objects",
-                                                n * kBytesPerObject, availableMemory());
-    if (!shortage.empty()) throw ParseError(at, shortage);
   }
 
   double positive(const std::string& what) {

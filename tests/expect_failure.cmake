@@ -1,10 +1,17 @@
 # Runs RAYTRACE with ARGS in a fresh WORK directory holding the files of SOURCE and a previous output.png
-# (under `ulimit ULIMIT` if given), and checks what every failure must look like: a non-zero exit, exactly
+# (under `ulimit ULIMIT` if given; SCENE_NAME below adds a generated scene), and checks what every failure must look like: a non-zero exit, exactly
 # EXPECTED as the one line on stderr (or a line matching EXPECTED_MATCH when it holds a machine-dependent
 # number), nothing on stdout, the previous output.png unchanged and no file written.
 file(REMOVE_RECURSE "${WORK}")
 file(COPY "${SOURCE}/" DESTINATION "${WORK}")
 file(WRITE "${WORK}/output.png" "previous render")
+# A scene too big to keep in the repository is made here: SCENE_HEAD, then SCENE_BODY SCENE_TIMES times, with
+# ';' between lines.
+if(DEFINED SCENE_NAME)
+  string(REPEAT "${SCENE_BODY};" ${SCENE_TIMES} body)
+  string(REPLACE ";" "\n" text "${SCENE_HEAD};${body}")
+  file(WRITE "${WORK}/${SCENE_NAME}" "${text}")
+endif()
 file(GLOB before RELATIVE "${WORK}" "${WORK}/*")
 
 set(command "${RAYTRACE}" ${ARGS})

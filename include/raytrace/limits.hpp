@@ -23,4 +23,10 @@ std::uint64_t availableMemory();
 // "<what> needs N MiB of memory, but only M MiB are available", or "" when `needed` fits in `available`.
 std::string memoryShortage(const std::string& what, std::uint64_t needed, std::uint64_t available);
 
+// Millions of tiny objects fit in a file of allowed size but not always in memory. A parser calls this as its
+// object count grows from `previous` to `count`: each time the count passes a power of two P from 65536 on
+// (so small scenes never ask), P more objects must fit. Returns "" or the message "<what> beyond P objects
+// needs …".
+std::string objectMemoryShortage(std::uint64_t previous, std::uint64_t count, const std::string& what);
+
 }  // namespace rt
