@@ -5,6 +5,7 @@
 #include "raytrace/plane.hpp"
 #include "raytrace/sphere.hpp"
 #include "raytrace/transformed.hpp"
+#include "raytrace/triangle.hpp"
 
 namespace rt {
 
@@ -20,6 +21,8 @@ std::unique_ptr<Object<T>> makeObject(const ObjectDesc& desc, const Arithmetic& 
           return std::make_unique<Sphere<T>>(Vec3<T>(s.center), T(s.radius), arithmetic.sphere, m, id);
         } else if constexpr (std::is_same_v<S, PlaneDesc>) {
           return std::make_unique<Plane<T>>(Vec3<T>(glm::normalize(s.normal)), T(s.distance), m, id);
+        } else if constexpr (std::is_same_v<S, TriangleDesc>) {
+          return std::make_unique<Triangle<T>>(Vec3<T>(s.a), Vec3<T>(s.b), Vec3<T>(s.c), m, id);
         } else {
           throw ParseError(desc.loc, std::string(shapeName(s)) + " objects cannot be rendered yet");
         }
