@@ -6,6 +6,7 @@
 #include <memory>
 #include <random>
 
+#include "raytrace/cylinder.hpp"
 #include "raytrace/plane.hpp"
 #include "raytrace/spawn.hpp"
 #include "raytrace/sphere.hpp"
@@ -14,20 +15,24 @@
 namespace rt {
 namespace {
 
-enum class ShapeKind { Sphere, Plane };
+enum class ShapeKind { Sphere, Plane, Cylinder };
 
-// A shape of size r (sphere radius; for planes the spread of the hits) whose hits lie about |pos| from the
-// world origin, and a way to find hits on it from either side.
+// A shape of size r (sphere radius; cylinder radius and half-height; for planes the spread of the hits)
+// whose hits lie about |pos| from the world origin, and a way to find hits on it from either side.
 template <class T> struct Target {
+  ShapeKind kind;
   std::unique_ptr<Object<T>> object;
-  glm::dvec3 centre;  // sphere centre, or the plane's point nearest the hits
+  glm::dvec3 centre;  // sphere or cylinder centre, or the plane's point nearest the hits
   glm::dvec3 normal;  // plane only
   double r;
 
-  Target(ShapeKind kind, double radius, double pos, std::mt19937_64& rng) : r(radius) {
+  Target(ShapeKind k, double radius, double pos, std::mt19937_64& rng) : kind(k), r(radius) {
     centre = pos * test::randomUnit(rng);
     if (kind == ShapeKind::Sphere) {
       object = std::make_unique<Sphere<T>>(Vec3<T>(centre), T(r), SphereMethod::Robust, Material{}, 1);
+    } else if (kind == ShapeKind::Cylinder) {
+      const glm::dvec3 axis = r * test::randomUnit(rng);
+      object = std::make_unique<Cylinder<T>>(Vec3<T>(centre - axis), Vec3<T>(centre + axis), T(r), Material{}, 1);
     } else {
       normal = test::randomUnit(rng);
       const Vec3<T> n(normal);  // the plane as the renderer holds it: rounded unit normal, rounded distance
@@ -36,8 +41,8 @@ template <class T> struct Target {
   }
 
   // A point at distance about s from the hit in direction w (on the hit's outer side), moved out further
-  // until, rounded to T, it lies strictly outside the shape and on w's side of the tangent plane both
-  // exactly and as spawnRayTo() sees it: the target of a shadow segment.
+  // until, rounded to T, it lies on w's side of the tangent plane both exactly and as spawnRayTo() sees it
+  // (and, for spheres, strictly outside): the target of a shadow segment. Sphere and cylinder are convex.
   Vec3<T> outside(const Hit<T>& hit, const glm::dvec3& w, double s) const {
     using H = test::WiderT<T>;
     const T side = glm::dot(Vec3<T>(w), hit.normal) > T(0) ? T(1) : T(-1);
@@ -47,20 +52,19 @@ template <class T> struct Target {
       const test::WideVec<H> fromCentre = test::WideVec<H>(light) - test::WideVec<H>(Vec3<T>(centre));
       const bool above = fromHit.dot(test::WideVec<H>(hit.normal)) * H(side) > H(0) &&
                          glm::dot(glm::normalize(light - hit.point), hit.normal) * side > T(0);
-      const bool out = !sphere() || fromCentre.dot(fromCentre) > H(r) * H(r);
+      const bool out = kind != ShapeKind::Sphere || fromCentre.dot(fromCentre) > H(r) * H(r);
       if (above && out) return light;
     }
   }
 
-  bool sphere() const { return dynamic_cast<const Sphere<T>*>(object.get()) != nullptr; }
-
-  // A hit from a ray that starts outside or inside (sphere) or on either side (plane) of the surface.
+  // A hit from a ray that starts outside or inside (sphere, cylinder) or on either side (plane) of the surface.
   std::optional<Hit<T>> randomHit(std::mt19937_64& rng) const {
     std::uniform_real_distribution<double> u(0, 1);
-    const glm::dvec3 from = sphere() ? centre + (u(rng) < 0.5 ? 4.0 : 0.5) * r * test::randomUnit(rng)
+    const bool solid = kind != ShapeKind::Plane;
+    const glm::dvec3 from = solid ? centre + (u(rng) < 0.5 ? 4.0 : 0.5) * r * test::randomUnit(rng)
                                    : centre + r * (test::randomUnit(rng) + (u(rng) < 0.5 ? 2.0 : -2.0) * normal);
     glm::dvec3 to = centre + 0.9 * r * std::cbrt(u(rng)) * test::randomUnit(rng);
-    if (!sphere()) to -= glm::dot(to - centre, normal) * normal;
+    if (!solid) to -= glm::dot(to - centre, normal) * normal;
     return object->intersect(Ray<T>{Vec3<T>(from), Vec3<T>(glm::normalize(to - from))}, Interval<T>{});
   }
 };
@@ -73,13 +77,13 @@ template <class T> double ulp(double pos) {
 
 struct Rehits {
   int hits = 0;      // surface points tried
-  int leaving = 0;   // rays leaving by the outer side of a sphere or either side of a plane that hit it again
-  int entering = 0;  // rays into a sphere that did not reach its far side first (re-hit near side or escaped);
-                     // tried only if offsets (up to 256 ulps) fit inside the sphere
+  int leaving = 0;   // rays leaving by the outer side of a solid or either side of a plane that hit it again
+  int entering = 0;  // rays into a solid that did not reach its far side first (re-hit near side or escaped);
+                     // tried only if offsets (up to 256 ulps) fit inside it
   int segments = 0;  // shadow segments to a point outside that the surface itself blocked
 };
 
-// For each of `hits` surface points: one ray leaving, one entering (spheres), one segment to a point outside.
+// For each of `hits` surface points: one ray leaving, one entering (solids), one segment to a point outside.
 // Below 8 ulps of the position a shape is not representable as a shape at all: callers skip those cells
 // (stability.md T3).
 template <class T>
@@ -99,7 +103,7 @@ Rehits rehits(ShapeKind kind, double r, double pos, OffsetPolicy policy, int hit
 
     if (target.object->intersect(spawnRay(*hit, Vec3<T>(w), policy), Interval<T>{})) ++out.leaving;
 
-    if (kind == ShapeKind::Sphere && r >= 256 * ulp<T>(pos)) {
+    if (kind != ShapeKind::Plane && r >= 256 * ulp<T>(pos)) {
       const Vec3<T> in(-w);
       const auto exit = target.object->intersect(spawnRay(*hit, in, policy), Interval<T>{});
       if (!exit || !(glm::dot(exit->normal, in) > T(0))) ++out.entering;
@@ -132,22 +136,26 @@ int grazingRehits(ShapeKind kind, double pos, double elevation, OffsetPolicy pol
 }  // namespace
 
 // T3: the production policy, Relative, gives exactly zero re-hits on every representable cell, in float and
-// double, for rays leaving, rays entering and shadow segments.
+// double, for rays leaving, rays entering and shadow segments, on spheres, planes and capped cylinders
+// (side and cap hits alike, about a third of the cylinder's hits are on its caps).
 TEMPLATE_TEST_CASE("relative offsets never re-hit their own surface", "[stability][spawn]", float, double) {
-  const ShapeKind kind = GENERATE(ShapeKind::Sphere, ShapeKind::Plane);
+  const ShapeKind kind = GENERATE(ShapeKind::Sphere, ShapeKind::Plane, ShapeKind::Cylinder);
   const double r = GENERATE(1e-3, 1.0, 1e3);
   const double pos = GENERATE(0.0, 1e2, 1e4, 1e6);
   const uint64_t seed = 0x5EED0100;
   if (r < 8 * ulp<TestType>(pos)) return;
   CAPTURE(int(kind), r, pos, seed);
-  const Rehits e = rehits<TestType>(kind, r, pos, OffsetPolicy::Relative, 3000, seed);
-  CHECK(e.hits == 3000);
+  const Rehits e = rehits<TestType>(kind, r, pos, OffsetPolicy::Relative, 20000, seed);
+  CHECK(e.hits == 20000);
   CHECK(e.leaving == 0);
   CHECK(e.entering == 0);
   CHECK(e.segments == 0);
 }
 
-// Wächter–Binder, the chart's other scale-aware policy, meets the same bar.
+// Wächter–Binder, the chart's other scale-aware policy, meets the same bar on spheres and planes. Not on
+// capped cylinders: its steps are ulps of each coordinate, so the offset is not parallel to n where the
+// coordinates differ in magnitude, and near a rim an entering ray's origin can slip out through the cap
+// (float, measured: 28 of 3000 entering rays at |p| = 1e4, r = 1).
 TEMPLATE_TEST_CASE("Waechter-Binder offsets never re-hit their own surface", "[stability][spawn]", float, double) {
   const ShapeKind kind = GENERATE(ShapeKind::Sphere, ShapeKind::Plane);
   const double r = GENERATE(1e-3, 1.0, 1e3);
