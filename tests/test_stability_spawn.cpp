@@ -132,38 +132,26 @@ int grazingRehits(ShapeKind kind, double pos, double elevation, OffsetPolicy pol
   return count;
 }
 
-
 }  // namespace
 
 // T3: the production policy, Relative, gives exactly zero re-hits on every representable cell, in float and
 // double, for rays leaving, rays entering and shadow segments, on spheres, planes and capped cylinders
-// (side and cap hits alike, about a third of the cylinder's hits are on its caps).
-TEMPLATE_TEST_CASE("relative offsets never re-hit their own surface", "[stability][spawn]", float, double) {
+// (side and cap hits alike, about a third of the cylinder's hits are on its caps). Wächter–Binder, the
+// chart's other scale-aware policy, meets the same bar on spheres and planes. Not on capped cylinders: its
+// steps are ulps of each coordinate, so the offset is not parallel to n where the coordinates differ in
+// magnitude, and near a rim an entering ray's origin slips out through the cap (float, |p| = 1e4, r = 1:
+// 322 of 30000 entering rays).
+TEMPLATE_TEST_CASE("scale-aware offsets never re-hit their own surface", "[stability][spawn]", float, double) {
+  const OffsetPolicy policy = GENERATE(OffsetPolicy::Relative, OffsetPolicy::WaechterBinder);
   const ShapeKind kind = GENERATE(ShapeKind::Sphere, ShapeKind::Plane, ShapeKind::Cylinder);
   const double r = GENERATE(1e-3, 1.0, 1e3);
   const double pos = GENERATE(0.0, 1e2, 1e4, 1e6);
   const uint64_t seed = 0x5EED0100;
   if (r < 8 * ulp<TestType>(pos)) return;
-  CAPTURE(int(kind), r, pos, seed);
-  const Rehits e = rehits<TestType>(kind, r, pos, OffsetPolicy::Relative, 20000, seed);
+  if (policy == OffsetPolicy::WaechterBinder && kind == ShapeKind::Cylinder) return;
+  CAPTURE(int(policy), int(kind), r, pos, seed);
+  const Rehits e = rehits<TestType>(kind, r, pos, policy, 20000, seed);
   CHECK(e.hits == 20000);
-  CHECK(e.leaving == 0);
-  CHECK(e.entering == 0);
-  CHECK(e.segments == 0);
-}
-
-// Wächter–Binder, the chart's other scale-aware policy, meets the same bar on spheres and planes. Not on
-// capped cylinders: its steps are ulps of each coordinate, so the offset is not parallel to n where the
-// coordinates differ in magnitude, and near a rim an entering ray's origin can slip out through the cap
-// (float, measured: 28 of 3000 entering rays at |p| = 1e4, r = 1).
-TEMPLATE_TEST_CASE("Waechter-Binder offsets never re-hit their own surface", "[stability][spawn]", float, double) {
-  const ShapeKind kind = GENERATE(ShapeKind::Sphere, ShapeKind::Plane);
-  const double r = GENERATE(1e-3, 1.0, 1e3);
-  const double pos = GENERATE(0.0, 1e2, 1e4, 1e6);
-  const uint64_t seed = 0x5EED0101;
-  if (r < 8 * ulp<TestType>(pos)) return;
-  CAPTURE(int(kind), r, pos, seed);
-  const Rehits e = rehits<TestType>(kind, r, pos, OffsetPolicy::WaechterBinder, 3000, seed);
   CHECK(e.leaving == 0);
   CHECK(e.entering == 0);
   CHECK(e.segments == 0);
