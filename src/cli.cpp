@@ -21,6 +21,7 @@ namespace rt {
 namespace {
 
 constexpr int kMaxImageSide = 32768;  // per side; larger is certainly a typo
+constexpr int kDefaultSide = 300;     // the CS 3451 starter's size(300, 300) (cs3451-course.md §A.2)
 
 using Options = RenderOptions;
 
@@ -36,6 +37,7 @@ struct Command {
   const char* args;  // after the scene, for usage and messages
   int numbers;       // 0, 2 (width height) or 4 (width height x y)
   std::function<int(const Invocation&, std::ostream&)> run;
+  bool sizeOptional = false;  // width and height may be left out for kDefaultSide × kDefaultSide
 };
 
 int parseInt(const std::string& s, const char* what, int lo, int hi) {
@@ -159,10 +161,15 @@ int raycast(const Invocation& inv, std::ostream&) {
   return 0;
 }
 
-// The Whitted render of Programs 2-4, written to output.png.
+// The Whitted render of Programs 2-4, written to output.png; a file that names its own images (.cli `write`)
+// gets each of them instead, in file order, each showing the scene as it stood at its command.
 int renderImage(const Invocation& inv, std::ostream&) {
-  const Image image = render(inv.scene, inv.width, inv.height, inv.options);
-  writePng(image, "output.png", inv.scene.conventions.toByte);
+  if (inv.scene.writes.empty()) {
+    writePng(render(inv.scene, inv.width, inv.height, inv.options), "output.png", inv.scene.conventions.toByte);
+  }
+  for (const WriteDesc& w : inv.scene.writes) {
+    writePng(render(w.scene, inv.width, inv.height, inv.options), w.path, w.scene.conventions.toByte);
+  }
   return 0;
 }
 
@@ -210,7 +217,7 @@ const std::vector<Command>& commands() {
       {"sceneinfo", "", 0, sceneinfo},
       {"pixelray", "<width> <height> <x> <y>", 4, pixelray},
       {"firsthit", "<width> <height> <x> <y>", 4, firsthit},
-      {"render", "<width> <height>", 2, renderImage},
+      {"render", "[<width> <height>]", 2, renderImage, true},
       {"pixelcolor", "<width> <height> <x> <y>", 4, pixelcolor},
       {"printrays", "<width> <height> <x> <y>", 4, printrays},
       {"pixeltrace", "<width> <height> <x> <y>", 4, pixeltrace},
@@ -267,13 +274,17 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
       positional.push_back(a);
     }
   }
-  if (positional.size() != size_t(1 + command->numbers)) {
-    throw Error(std::string(command->name) + " takes " + std::to_string(1 + command->numbers) +
-                " arguments, found " + std::to_string(positional.size()) + "\nusage: " + commandUsage(*command));
+  const bool defaultSize = command->sizeOptional && positional.size() == 1;
+  if (positional.size() != size_t(1 + command->numbers) && !defaultSize) {
+    throw Error(std::string(command->name) + " takes " + (command->sizeOptional ? "1 or " : "") +
+                std::to_string(1 + command->numbers) + " arguments, found " + std::to_string(positional.size()) +
+                "\nusage: " + commandUsage(*command));
   }
   Invocation inv;
   inv.options = options;
-  if (command->numbers >= 2) {
+  if (defaultSize) {
+    inv.width = inv.height = kDefaultSide;
+  } else if (command->numbers >= 2) {
     inv.width = parseInt(positional[1], "width", 1, kMaxImageSide);
     inv.height = parseInt(positional[2], "height", 1, kMaxImageSide);
   }
