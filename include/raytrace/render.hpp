@@ -1,6 +1,8 @@
 // Whole-image rendering: what `render` (and a .cli `write`) produces.
 #pragma once
 
+#include <optional>
+
 #include "raytrace/image.hpp"
 #include "raytrace/precision.hpp"
 #include "raytrace/scene_desc.hpp"
@@ -18,6 +20,7 @@ struct RenderOptions {
   bool beers = false;                            // -beers: Beer's-law absorption instead of the ×C tint (§c.6)
   bool normals = false;                          // -normals: colour = n/2 + 0.5, a debug view
   int samples = 1;                               // -ss=N: N×N stratified eye rays per pixel (§c.12)
+  std::optional<int> depth;                      // --depth=N: deepest secondary ray, instead of the scene's
 };
 
 // Renders the scene at width × height.
