@@ -62,7 +62,8 @@ class LineSplitter {
     return true;
   }
 
-  // Where the text ends, for errors about what the file lacks; meant for after the last line.
+  // The position reached: a word's or a bad byte's start, and after the last line the end of the text, for
+  // errors about what the file lacks.
   SourceLoc here() const { return SourceLoc{file_, line_, col_}; }
 
  private:

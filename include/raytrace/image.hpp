@@ -11,7 +11,7 @@ namespace rt {
 
 class Image {
  public:
-  // Throws Error, before taking any, when the machine has not the memory for the image (limits.hpp).
+  // Throws Error, before taking any memory, when the machine lacks the memory for the image (limits.hpp).
   Image(int width, int height);
 
   int width() const { return width_; }

@@ -7,7 +7,8 @@
 
 namespace rt {
 
-// The whole file as bytes. Throws Error with a one-line reason for a missing, unreadable or non-regular file.
+// The whole file as bytes. Throws Error with a one-line reason for a missing, unreadable or non-regular file
+// (a directory, a FIFO, a device) and for one larger than kMaxSceneFileBytes (limits.hpp).
 std::string readFile(const std::string& path);
 
 // A file name's extension in lower case without the dot: "png" for "a/b.PNG", "" for "a.d/b" or ".png" (a
