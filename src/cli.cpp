@@ -55,6 +55,7 @@ Options parseFlag(const std::string& flag, Options o) {
   const auto value = [&](const std::string& name) -> const char* {
     return flag.rfind(name + "=", 0) == 0 ? flag.c_str() + name.size() + 1 : nullptr;
   };
+  if (flag == "-sds") return o;  // the course's "use a hierarchy": ours decides per scene (Scene, Hierarchy)
   if (const char* p = value("--precision")) {
     const std::string v = p;
     if (v == "float") o.arithmetic.precision = Precision::Float;
@@ -135,12 +136,28 @@ int raycast(const Invocation& inv, std::ostream&) {
   return 0;
 }
 
+// The hierarchy the scene's bounded objects get, printed whether or not renders would use it.
+int printbvh(const Invocation& inv, std::ostream& out) {
+  const Arithmetic arithmetic = chooseArithmetic(inv.scene, inv.options.arithmetic);
+  return withPrecision(arithmetic.precision, [&](auto tag) {
+    const Scene<decltype(tag)> scene(inv.scene, arithmetic, Hierarchy::Always);
+    const size_t bounded = scene.hierarchy()->objects().size();
+    out << scene.objects().size() << " objects: " << bounded << " bounded, "
+        << scene.objects().size() - bounded << " unbounded (tested one by one). Renders use the hierarchy from "
+        << kHierarchyMinObjects << " bounded objects on: " << (bounded >= kHierarchyMinObjects ? "yes" : "no")
+        << ".\n";
+    scene.hierarchy()->print(out);
+    return 0;
+  });
+}
+
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
       {"raycast", "<width> <height>", 2, raycast},
       {"sceneinfo", "", 0, sceneinfo},
       {"pixelray", "<width> <height> <x> <y>", 4, pixelray},
       {"firsthit", "<width> <height> <x> <y>", 4, firsthit},
+      {"printbvh", "", 0, printbvh},
   };
   return table;
 }

@@ -1,0 +1,46 @@
+// Bounding volume hierarchy over the bounded objects of a scene (csc473-course.md §c.13; the build is the
+// binned SAH of Wald, "On fast Construction of SAH-based Bounding Volume Hierarchies", 2007).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <ostream>
+#include <vector>
+
+#include "raytrace/object.hpp"
+
+namespace rt {
+
+template <class T> class Bvh {
+ public:
+  // A node of the flattened tree. The two children of an inner node are stored side by side, the first at
+  // `first`; a leaf holds objects_[first, first + count).
+  struct Node {
+    Aabb<T> box;
+    uint32_t first = 0;
+    uint32_t count = 0;  // 0 for an inner node
+
+    bool leaf() const { return count != 0; }
+  };
+
+  // Builds over `objects`, all of which must have bounds(), in O(n log n).
+  explicit Bvh(const std::vector<const Object<T>*>& objects);
+
+  // The closest hit strictly inside `range`, or `best` when nothing is closer. Equal t resolve to the lower
+  // object id, so the answer is the one a scan in file order gives (Scene::closestHit).
+  std::optional<Hit<T>> closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>> best) const;
+  // Whether any object has a hit strictly inside `range`.
+  bool occluded(const Ray<T>& ray, Interval<T> range) const;
+
+  const std::vector<Node>& nodes() const { return nodes_; }
+  const std::vector<const Object<T>*>& objects() const { return objects_; }
+
+  // The tree, one node per line, indented by depth: boxes, object ids in the leaves, and totals.
+  void print(std::ostream& out) const;
+
+ private:
+  std::vector<Node> nodes_;               // nodes_[0] is the root; empty when there are no objects
+  std::vector<const Object<T>*> objects_;  // in leaf order
+};
+
+}  // namespace rt
