@@ -38,27 +38,6 @@ template <class T> Aabb<T> paddedBounds(const Object<T>& object) {
   return b;
 }
 
-// Far distances, the slabs' and the query's, are scaled up by 1 + 2γ₃ so that rounding never rejects a box
-// the exact ray enters before tMax (Ize, "Robust BVH Ray Traversal", JCGT 2013).
-template <class T> constexpr T kFarScale = T(1) + T(2) * (T(3) * std::numeric_limits<T>::epsilon()) /
-                                                      (T(1) - T(3) * std::numeric_limits<T>::epsilon());
-
-// The ray parameter where the ray enters `box` within [tMin, tMax], or +∞ when it misses. Slab test (Kay &
-// Kajiya 1986). A NaN from 0·∞ (origin on a slab plane, ray parallel to it) leaves the bounds unchanged.
-template <class T>
-T entry(const Aabb<T>& box, const Vec3<T>& origin, const Vec3<T>& invDir, T tMin, T tMax) {
-  tMax *= kFarScale<T>;
-  for (int a = 0; a < 3; ++a) {
-    T t0 = (box.min[a] - origin[a]) * invDir[a];
-    T t1 = (box.max[a] - origin[a]) * invDir[a];
-    if (t0 > t1) std::swap(t0, t1);
-    t1 *= kFarScale<T>;
-    tMin = t0 > tMin ? t0 : tMin;
-    tMax = t1 < tMax ? t1 : tMax;
-  }
-  return tMin <= tMax ? tMin : std::numeric_limits<T>::infinity();
-}
-
 }  // namespace
 
 template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
@@ -159,7 +138,7 @@ std::optional<Hit<T>> Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, s
   constexpr T inf = std::numeric_limits<T>::infinity();
   // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
   T limit = best ? std::nextafter(best->t, inf) : range.max;
-  if (entry(nodes_[0].box, ray.origin, invDir, range.min, limit) == inf) return best;
+  if (rayBoxEntry(nodes_[0].box, ray.origin, invDir, range.min, limit) == inf) return best;
 
   struct Pending {
     const Node* node;
@@ -182,8 +161,8 @@ std::optional<Hit<T>> Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, s
       // Visit the nearer child first so that its hits cut off the farther one.
       const Node* near = &nodes_[node->first];
       const Node* far = near + 1;
-      T tNear = entry(near->box, ray.origin, invDir, range.min, limit);
-      T tFar = entry(far->box, ray.origin, invDir, range.min, limit);
+      T tNear = rayBoxEntry(near->box, ray.origin, invDir, range.min, limit);
+      T tFar = rayBoxEntry(far->box, ray.origin, invDir, range.min, limit);
       if (tFar < tNear) std::swap(near, far), std::swap(tNear, tFar);
       if (tNear != inf) {
         if (tFar != inf) stack[size++] = {far, tFar};
@@ -204,7 +183,7 @@ template <class T> bool Bvh<T>::occluded(const Ray<T>& ray, Interval<T> range) c
   if (nodes_.empty()) return false;
   const Vec3<T> invDir = T(1) / ray.dir;
   constexpr T inf = std::numeric_limits<T>::infinity();
-  if (entry(nodes_[0].box, ray.origin, invDir, range.min, range.max) == inf) return false;
+  if (rayBoxEntry(nodes_[0].box, ray.origin, invDir, range.min, range.max) == inf) return false;
   std::array<const Node*, kMaxDepth> stack;
   int size = 0;
   const Node* node = &nodes_[0];
@@ -215,8 +194,8 @@ template <class T> bool Bvh<T>::occluded(const Ray<T>& ray, Interval<T> range) c
       }
     } else {
       const Node* a = &nodes_[node->first];
-      const bool hitA = entry(a->box, ray.origin, invDir, range.min, range.max) != inf;
-      const bool hitB = entry(a[1].box, ray.origin, invDir, range.min, range.max) != inf;
+      const bool hitA = rayBoxEntry(a->box, ray.origin, invDir, range.min, range.max) != inf;
+      const bool hitB = rayBoxEntry(a[1].box, ray.origin, invDir, range.min, range.max) != inf;
       if (hitA || hitB) {
         if (hitA && hitB) stack[size++] = a + 1;
         node = hitA ? a : a + 1;

@@ -3,13 +3,37 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <optional>
+#include <utility>
 #include <ostream>
 #include <vector>
 
 #include "raytrace/object.hpp"
 
 namespace rt {
+
+// Far distances, the slabs' and the query's, are scaled up by 1 + 2γ₃ so that rounding never rejects a box
+// the exact ray enters before tMax (Ize, "Robust BVH Ray Traversal", JCGT 2013).
+template <class T> constexpr T kFarScale = T(1) + T(2) * (T(3) * std::numeric_limits<T>::epsilon()) /
+                                                      (T(1) - T(3) * std::numeric_limits<T>::epsilon());
+
+// The ray parameter where the ray o + t·d enters `box` within [tMin, tMax], or +∞ when it misses; invDir is
+// 1/d. Slab test (Kay & Kajiya 1986). A NaN from 0·∞ (origin on a slab plane, ray parallel to it) leaves the
+// bounds unchanged, so such a ray is never wrongly rejected.
+template <class T>
+inline T rayBoxEntry(const Aabb<T>& box, const Vec3<T>& origin, const Vec3<T>& invDir, T tMin, T tMax) {
+  tMax *= kFarScale<T>;
+  for (int a = 0; a < 3; ++a) {
+    T t0 = (box.min[a] - origin[a]) * invDir[a];
+    T t1 = (box.max[a] - origin[a]) * invDir[a];
+    if (t0 > t1) std::swap(t0, t1);
+    t1 *= kFarScale<T>;
+    tMin = t0 > tMin ? t0 : tMin;
+    tMax = t1 < tMax ? t1 : tMax;
+  }
+  return tMin <= tMax ? tMin : std::numeric_limits<T>::infinity();
+}
 
 template <class T> class Bvh {
  public:
