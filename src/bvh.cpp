@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
+#include <type_traits>
 #include <limits>
 #include <string>
 
@@ -36,6 +38,19 @@ template <class T> Aabb<T> paddedBounds(const Object<T>& object) {
   b.min -= Vec3<T>(pad);
   b.max += Vec3<T>(pad);
   return b;
+}
+
+// The next representable value above t: the smallest limit that still admits a hit at exactly t. A hit's t is
+// positive, where this is one step of the bit pattern; std::nextafter covers the rest.
+template <class T> T nextUp(T t) {
+  using Bits = std::conditional_t<sizeof(T) == 4, uint32_t, uint64_t>;
+  constexpr T inf = std::numeric_limits<T>::infinity();
+  if (!(t > T(0) && t < inf)) return std::nextafter(t, inf);
+  Bits bits;
+  std::memcpy(&bits, &t, sizeof t);
+  ++bits;
+  std::memcpy(&t, &bits, sizeof t);
+  return t;
 }
 
 }  // namespace
@@ -72,21 +87,21 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
     nodes_[task.node].box = box;
     if (count == 1 || task.depth >= kMaxDepth) continue;
 
-    // Bin the centroids along each axis and sweep the bin boundaries for the lowest surface area heuristic
-    // cost: kTraversalCost + (A_left·N_left + A_right·N_right) / A_node, against N for a leaf.
-    double bestCost = std::numeric_limits<double>::infinity();
-    int bestAxis = -1, bestSplit = 0;
+    // Bin the centroids along their longest extent and sweep the bin boundaries for the lowest surface area
+    // heuristic cost, kTraversalCost + (A_left·N_left + A_right·N_right) / A_node, against N for a leaf.
     const Vec3<T> extent = centres.max - centres.min;
-    const auto binOf = [&](uint32_t object, int axis) {
-      const T x = (centroids[object][axis] - centres.min[axis]) / extent[axis];
-      return std::min(kBins - 1, int(x * T(kBins)));
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const T binScale = T(kBins) / extent[axis];
+    const auto binOf = [&](uint32_t object) {
+      return std::min(kBins - 1, int((centroids[object][axis] - centres.min[axis]) * binScale));
     };
-    for (int axis = 0; axis < 3; ++axis) {
-      if (!(extent[axis] > T(0))) continue;
+    double bestCost = std::numeric_limits<double>::infinity();
+    int bestSplit = 0;
+    if (extent[axis] > T(0)) {
       std::array<Aabb<T>, kBins> binBox;
       std::array<uint32_t, kBins> binCount{};
       for (uint32_t i = first; i < first + count; ++i) {
-        const int b = binOf(order[i], axis);
+        const int b = binOf(order[i]);
         binBox[b].expand(boxes[order[i]]);
         ++binCount[b];
       }
@@ -101,20 +116,21 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
       }
       Aabb<T> left;
       uint32_t leftCount = 0;
+      const double nodeArea = area(box);
       for (int s = 1; s < kBins; ++s) {
         left.expand(binBox[s - 1]);
         leftCount += binCount[s - 1];
         if (leftCount == 0 || leftCount == count) continue;
-        const double cost = kTraversalCost + (area(left) * leftCount + rightCost[s]) / area(box);
-        if (cost < bestCost) bestCost = cost, bestAxis = axis, bestSplit = s;
+        const double cost = kTraversalCost + (area(left) * leftCount + rightCost[s]) / nodeArea;
+        if (cost < bestCost) bestCost = cost, bestSplit = s;
       }
     }
     if (count <= kMaxLeaf && !(bestCost < double(count))) continue;
 
     uint32_t middle;
-    if (bestAxis >= 0) {
+    if (bestSplit > 0) {
       const auto split = std::partition(order.begin() + first, order.begin() + first + count,
-                                        [&](uint32_t o) { return binOf(o, bestAxis) < bestSplit; });
+                                        [&](uint32_t o) { return binOf(o) < bestSplit; });
       middle = uint32_t(split - order.begin());
     } else {
       middle = first + count / 2;  // all centroids coincide: any halving is as good as another
@@ -137,7 +153,7 @@ std::optional<Hit<T>> Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, s
   const Vec3<T> invDir = T(1) / ray.dir;
   constexpr T inf = std::numeric_limits<T>::infinity();
   // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
-  T limit = best ? std::nextafter(best->t, inf) : range.max;
+  T limit = best ? nextUp(best->t) : range.max;
   if (rayBoxEntry(nodes_[0].box, ray.origin, invDir, range.min, limit) == inf) return best;
 
   struct Pending {
@@ -154,7 +170,7 @@ std::optional<Hit<T>> Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, s
         auto hit = object->intersect(ray, Interval<T>{range.min, limit});
         if (hit && (!best || hit->t < best->t || object->id() < best->object->id())) {
           best = hit;
-          limit = std::nextafter(hit->t, inf);
+          limit = nextUp(hit->t);
         }
       }
     } else {

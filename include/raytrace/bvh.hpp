@@ -13,8 +13,9 @@
 
 namespace rt {
 
-// Far distances, the slabs' and the query's, are scaled up by 1 + 2γ₃ so that rounding never rejects a box
-// the exact ray enters before tMax (Ize, "Robust BVH Ray Traversal", JCGT 2013).
+// The far distance is scaled up by 1 + 2γ₃ so that rounding never rejects a box the exact ray enters before
+// tMax (Ize, "Robust BVH Ray Traversal", JCGT 2013). Scaling by a positive constant commutes with min, so it is
+// applied once, to the smallest far distance.
 template <class T> constexpr T kFarScale = T(1) + T(2) * (T(3) * std::numeric_limits<T>::epsilon()) /
                                                       (T(1) - T(3) * std::numeric_limits<T>::epsilon());
 
@@ -23,16 +24,14 @@ template <class T> constexpr T kFarScale = T(1) + T(2) * (T(3) * std::numeric_li
 // bounds unchanged, so such a ray is never wrongly rejected.
 template <class T>
 inline T rayBoxEntry(const Aabb<T>& box, const Vec3<T>& origin, const Vec3<T>& invDir, T tMin, T tMax) {
-  tMax *= kFarScale<T>;
   for (int a = 0; a < 3; ++a) {
     T t0 = (box.min[a] - origin[a]) * invDir[a];
     T t1 = (box.max[a] - origin[a]) * invDir[a];
     if (t0 > t1) std::swap(t0, t1);
-    t1 *= kFarScale<T>;
     tMin = t0 > tMin ? t0 : tMin;
     tMax = t1 < tMax ? t1 : tMax;
   }
-  return tMin <= tMax ? tMin : std::numeric_limits<T>::infinity();
+  return tMin <= tMax * kFarScale<T> ? tMin : std::numeric_limits<T>::infinity();
 }
 
 template <class T> class Bvh {
