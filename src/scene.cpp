@@ -47,7 +47,9 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
   std::vector<const Object<T>*> bounded;
   for (const auto& o : objects_) {
     const auto box = o->bounds();
-    const auto finite3 = [](const Vec3<T>& v) { return !glm::any(glm::isinf(v)) && !glm::any(glm::isnan(v)); };
+    const auto finite3 = [](const Vec3<T>& v) {
+      return !glm::any(glm::isinf(v)) && !glm::any(glm::isnan(v));
+    };
     const bool finite = box && finite3(box->min) && finite3(box->max);
     (finite ? bounded : scanned_).push_back(o.get());
   }
