@@ -5,7 +5,7 @@ namespace rt {
 template <class T>
 Camera<T>::Camera(const CameraDesc& desc, int width, int height)
     : origin_(desc.location),
-      right_(desc.right),
+      right_(desc.rightFollowsImage ? desc.right * (double(width) / height) : desc.right),
       up_(desc.up),
       forward_(glm::normalize(Vec3<T>(desc.lookAt - desc.location))),
       offset_(desc.pixelOffset),

@@ -10,18 +10,20 @@
 #include "raytrace/image.hpp"
 #include "raytrace/loader.hpp"
 #include "raytrace/precision.hpp"
+#include "raytrace/ray_tree.hpp"
+#include "raytrace/render.hpp"
 #include "raytrace/report.hpp"
 #include "raytrace/scene.hpp"
+#include "raytrace/tracer.hpp"
 
 namespace rt {
 
 namespace {
 
 constexpr int kMaxImageSide = 32768;  // per side; larger is certainly a typo
+constexpr int kDefaultSide = 300;     // the CS 3451 starter's size(300, 300) (cs3451-course.md §A.2)
 
-struct Options {
-  Arithmetic arithmetic;  // --precision, --sphere
-};
+using Options = RenderOptions;
 
 // What a command receives: the loaded scene and its checked numeric arguments.
 struct Invocation {
@@ -35,16 +37,18 @@ struct Command {
   const char* args;  // after the scene, for usage and messages
   int numbers;       // 0, 2 (width height) or 4 (width height x y)
   std::function<int(const Invocation&, std::ostream&)> run;
+  bool sizeOptional = false;  // width and height may be left out for kDefaultSide × kDefaultSide
 };
 
 int parseInt(const std::string& s, const char* what, int lo, int hi) {
   errno = 0;
   char* end = nullptr;
   const long v = std::strtol(s.c_str(), &end, 10);
-  if (s.empty() || *end != '\0' || errno == ERANGE) {
+  if (s.empty() || *end != '\0') {
     throw Error(std::string(what) + " must be a whole number, found '" + s + "'");
   }
-  if (v < lo || v > hi) {
+  // A number too long for a long (ERANGE) is still a whole number, just out of range.
+  if (errno == ERANGE || v < lo || v > hi) {
     throw Error(std::string(what) + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
                 ", found " + s);
   }
@@ -72,7 +76,23 @@ Options parseFlag(const std::string& flag, Options o) {
     else throw Error("--sphere must be textbook, robust or auto, found '" + v + "'");
     return o;
   }
-  throw Error("unknown option '" + flag + "' (see raytrace --help)");
+  if (const char* p = value("--offset")) {
+    const std::string v = p;
+    if (v == "course") o.offset = OffsetPolicy::Course;
+    else if (v == "relative") o.offset = OffsetPolicy::Relative;
+    else throw Error("--offset must be course or relative, found '" + v + "'");
+    return o;
+  }
+  if (const char* p = value("-ss")) {
+    o.samples = parseInt(p, "-ss", 1, 64);
+    return o;
+  }
+  if (flag == "-altbrdf") o.brdf = Brdf::CookTorrance;
+  else if (flag == "-fresnel") o.fresnel = true;
+  else if (flag == "-beers") o.beers = true;
+  else if (flag == "-normals") o.normals = true;
+  else throw Error("unknown option '" + flag + "' (see raytrace --help)");
+  return o;
 }
 
 void printPixelRay(std::ostream& out, int x, int y, const glm::dvec3& origin, const glm::dvec3& dir) {
@@ -151,12 +171,66 @@ int printbvh(const Invocation& inv, std::ostream& out) {
   });
 }
 
+// The Whitted render of Programs 2-4, written to output.png; a file that names its own images (.cli `write`)
+// gets each of them instead, in file order, each showing the scene as it stood at its command.
+int renderImage(const Invocation& inv, std::ostream&) {
+  if (inv.scene.writes.empty()) {
+    writePng(render(inv.scene, inv.width, inv.height, inv.options), "output.png", inv.scene.conventions.toByte);
+  }
+  for (const WriteDesc& w : inv.scene.writes) {
+    writePng(render(w.scene, inv.width, inv.height, inv.options), w.path, w.scene.conventions.toByte);
+  }
+  return 0;
+}
+
+// A colour as the course prints it, "(r, g, b)" in bytes (§a.0).
+std::string bytes(const Color& c, Conventions::ToByte mode) {
+  return "(" + std::to_string(toByte(c.r, mode)) + ", " + std::to_string(toByte(c.g, mode)) + ", " +
+         std::to_string(toByte(c.b, mode)) + ")";
+}
+
+// The pixel's shaded colour with its eye ray and first hit (§a.2); with -ss, the first sub-sample's ray.
+int pixelcolor(const Invocation& inv, std::ostream& out) {
+  return withScene(inv, [&](const auto& scene, const auto& camera) {
+    const Tracer tracer(scene, inv.options);
+    std::vector<RayRecord> trees;
+    const Color color = tracer.pixel(camera, inv.x, inv.y, &trees);
+    const RayRecord& eye = trees.front();
+    printPixelRay(out, inv.x, inv.y, eye.origin, eye.dir);
+    if (!eye.hit) {
+      out << "No Hit\n";
+      return 0;
+    }
+    out << "T = " << fixed4(eye.t) << "\nObject Type: " << eye.objectType
+        << "\nBRDF: " << (inv.options.brdf == Brdf::BlinnPhong ? "Blinn-Phong" : "Cook-Torrance")
+        << "\nColor: " << bytes(color, inv.scene.conventions.toByte) << "\n";
+    return 0;
+  });
+}
+
+// Every ray the pixel's colour is made of: printrays (§a.3) or, decorated with shadow rays, pixeltrace (§a.9).
+int rayTrees(const Invocation& inv, std::ostream& out, bool decorated) {
+  return withScene(inv, [&](const auto& scene, const auto& camera) {
+    const Tracer tracer(scene, inv.options);
+    std::vector<RayRecord> trees;
+    const Color color = tracer.pixel(camera, inv.x, inv.y, &trees);
+    printRayTrees(out, inv.x, inv.y, bytes(color, inv.scene.conventions.toByte), trees, decorated);
+    return 0;
+  });
+}
+int printrays(const Invocation& inv, std::ostream& out) { return rayTrees(inv, out, false); }
+int pixeltrace(const Invocation& inv, std::ostream& out) { return rayTrees(inv, out, true); }
+
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
       {"raycast", "<width> <height>", 2, raycast},
       {"sceneinfo", "", 0, sceneinfo},
       {"pixelray", "<width> <height> <x> <y>", 4, pixelray},
       {"firsthit", "<width> <height> <x> <y>", 4, firsthit},
+      {"render", "[<width> <height>]", 2, renderImage, true},
+      {"pixelcolor", "<width> <height> <x> <y>", 4, pixelcolor},
+      {"printrays", "<width> <height> <x> <y>", 4, printrays},
+      {"pixeltrace", "<width> <height> <x> <y>", 4, pixeltrace},
       {"printbvh", "", 0, printbvh},
   };
   return table;
@@ -174,7 +248,14 @@ std::string usage() {
   text +=
       "options:\n"
       "  --precision=float|double|auto   arithmetic for geometry (default auto: chosen per scene)\n"
-      "  --sphere=textbook|robust|auto   ray-sphere formula (default auto: chosen per scene)\n";
+      "  --sphere=textbook|robust|auto   ray-sphere formula (default auto: chosen per scene)\n"
+      "  --offset=relative|course        spawned-ray origins: relative normal offset (default) or the\n"
+      "                                  course's P + 0.001*d, which its printrays outputs encode\n"
+      "  -altbrdf                        Cook-Torrance (GGX) instead of Blinn-Phong\n"
+      "  -fresnel                        Schlick-weighted reflection and refraction\n"
+      "  -beers                          Beer's-law absorption inside transparent objects\n"
+      "  -ss=N                           N x N stratified samples per pixel (1 to 64)\n"
+      "  -normals                        colour each hit by its normal (debug)\n";
   return text;
 }
 
@@ -201,13 +282,17 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
       positional.push_back(a);
     }
   }
-  if (positional.size() != size_t(1 + command->numbers)) {
-    throw Error(std::string(command->name) + " takes " + std::to_string(1 + command->numbers) +
-                " arguments, found " + std::to_string(positional.size()) + "\nusage: " + commandUsage(*command));
+  const bool defaultSize = command->sizeOptional && positional.size() == 1;
+  if (positional.size() != size_t(1 + command->numbers) && !defaultSize) {
+    throw Error(std::string(command->name) + " takes " + (command->sizeOptional ? "1 or " : "") +
+                std::to_string(1 + command->numbers) + " arguments, found " + std::to_string(positional.size()) +
+                "\nusage: " + commandUsage(*command));
   }
   Invocation inv;
   inv.options = options;
-  if (command->numbers >= 2) {
+  if (defaultSize) {
+    inv.width = inv.height = kDefaultSide;
+  } else if (command->numbers >= 2) {
     inv.width = parseInt(positional[1], "width", 1, kMaxImageSide);
     inv.height = parseInt(positional[2], "height", 1, kMaxImageSide);
   }

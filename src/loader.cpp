@@ -1,5 +1,6 @@
 #include "raytrace/loader.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -7,6 +8,7 @@
 
 #include <sys/stat.h>
 
+#include "raytrace/cli_parser.hpp"
 #include "raytrace/pov_parser.hpp"
 
 namespace rt {
@@ -23,6 +25,24 @@ std::string readFile(const std::string& path) {
   return text.str();
 }
 
-SceneDesc loadScene(const std::string& path) { return parsePov(readFile(path), path); }
+std::string extension(const std::string& path) {
+  const size_t dot = path.find_last_of("./");
+  const bool named = dot != std::string::npos && dot > 0 && path[dot] == '.' && path[dot - 1] != '/';
+  std::string ext = named ? path.substr(dot + 1) : "";
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+SceneLanguage sceneLanguage(const std::string& path, const std::string& text) {
+  const std::string ext = extension(path);
+  if (ext == "pov") return SceneLanguage::Pov;
+  if (ext == "cli") return SceneLanguage::Cli;
+  return looksLikeCli(text) ? SceneLanguage::Cli : SceneLanguage::Pov;
+}
+
+SceneDesc loadScene(const std::string& path) {
+  const std::string text = readFile(path);
+  return sceneLanguage(path, text) == SceneLanguage::Cli ? parseCli(text, path) : parsePov(text, path);
+}
 
 }  // namespace rt

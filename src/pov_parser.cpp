@@ -94,15 +94,19 @@ class PovParser {
   }
 
   // [color|colour] rgb <r,g,b> | rgbf <r,g,b[,f]>; a missing filter is 0, as POV-Ray reads a 3-vector.
+  // POV-Ray 3.7 also reads `rgb <r,g,b,f>`, with the fourth value as the filter and a "suspicious
+  // expression" warning (marble2.pov relies on it); so do we.
   void color(Color& rgb, float& filter, const std::string& owner) {
     Token t = next();
     if (t.kind == Token::Kind::Word && (t.text == "color" || t.text == "colour")) t = next();
     if (t.kind != Token::Kind::Word || (t.text != "rgb" && t.text != "rgbf")) {
       throw ParseError(t.loc, "expected 'rgb' or 'rgbf' in the " + owner + " colour, found " + t.quoted());
     }
-    const bool withFilter = t.text == "rgbf";
     const SourceLoc at = peek().loc;
-    const auto v = vector(3, withFilter ? 4 : 3, "an '" + t.text + "' colour");
+    const auto v = vector(3, 4, "an '" + t.text + "' colour");
+    if (t.text == "rgb" && v.size() == 4) {
+      scene_.warnings.push_back(at.str() + ": warning: 'rgb' with 4 values; the fourth is read as the filter");
+    }
     rgb = Color(float(v[0]), float(v[1]), float(v[2]));
     filter = v.size() == 4 ? float(v[3]) : 0.0f;
     if (filter < 0 || filter > 1) throw ParseError(at, "filter must be between 0 and 1, found " + num(filter));

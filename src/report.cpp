@@ -46,6 +46,19 @@ void printShape(std::ostream& out, const ShapeDesc& shape) {
       shape);
 }
 
+// The material in the file's own terms: POV's pigment and finish scalars (§a.1); a .cli `surface`'s colours,
+// which no scalar can stand for, with its power and reflection coefficient.
+void printMaterial(std::ostream& out, const Material& m, SceneLanguage language) {
+  if (language == SceneLanguage::Cli) {
+    out << "- Material:\n  - Ambient: " << braces(m.ambient) << "\n  - Diffuse: " << braces(m.diffuse)
+        << "\n  - Specular: " << braces(m.specular) << "\n  - Power: " << fixed4(m.exponent)
+        << "\n  - Reflection: " << fixed4(m.reflection) << "\n";
+    return;
+  }
+  out << "- Color: " << braces(m.pigment) << "\n- Material:\n  - Ambient: " << fixed4(m.finish.ambient)
+      << "\n  - Diffuse: " << fixed4(m.finish.diffuse) << "\n";
+}
+
 }  // namespace
 
 void printSceneInfo(std::ostream& out, const SceneDesc& scene) {
@@ -62,8 +75,7 @@ void printSceneInfo(std::ostream& out, const SceneDesc& scene) {
     const ObjectDesc& o = scene.objects[i];
     out << "\nObject[" << i << "]:\n- Type: " << shapeName(o.shape) << "\n";
     printShape(out, o.shape);
-    out << "- Color: " << braces(o.material.pigment) << "\n- Material:\n  - Ambient: " << fixed4(o.material.finish.ambient)
-        << "\n  - Diffuse: " << fixed4(o.material.finish.diffuse) << "\n";
+    printMaterial(out, o.material, scene.language);
   }
 }
 

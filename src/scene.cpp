@@ -1,10 +1,15 @@
 #include "raytrace/scene.hpp"
 
+#include <cmath>
 #include <type_traits>
 
+#include "raytrace/box.hpp"
+#include "raytrace/cone.hpp"
+#include "raytrace/cylinder.hpp"
 #include "raytrace/plane.hpp"
 #include "raytrace/sphere.hpp"
 #include "raytrace/transformed.hpp"
+#include "raytrace/triangle.hpp"
 
 namespace rt {
 
@@ -20,11 +25,40 @@ std::unique_ptr<Object<T>> makeObject(const ObjectDesc& desc, const Arithmetic& 
           return std::make_unique<Sphere<T>>(Vec3<T>(s.center), T(s.radius), arithmetic.sphere, m, id);
         } else if constexpr (std::is_same_v<S, PlaneDesc>) {
           return std::make_unique<Plane<T>>(Vec3<T>(glm::normalize(s.normal)), T(s.distance), m, id);
+        } else if constexpr (std::is_same_v<S, TriangleDesc>) {
+          return std::make_unique<Triangle<T>>(Vec3<T>(s.a), Vec3<T>(s.b), Vec3<T>(s.c), m, id);
+        } else if constexpr (std::is_same_v<S, BoxDesc>) {
+          return std::make_unique<Box<T>>(Vec3<T>(s.min), Vec3<T>(s.max), m, id);
+        } else if constexpr (std::is_same_v<S, ConeDesc>) {
+          return std::make_unique<Cone<T>>(Vec3<T>(s.base), T(s.baseRadius), Vec3<T>(s.cap), T(s.capRadius), m, id);
         } else {
-          throw ParseError(desc.loc, std::string(shapeName(s)) + " objects cannot be rendered yet");
+          static_assert(std::is_same_v<S, CylinderDesc>, "every ShapeDesc kind must be built here");
+          return std::make_unique<Cylinder<T>>(Vec3<T>(s.base), Vec3<T>(s.cap), T(s.radius), m, id);
         }
       },
       desc.shape);
+}
+
+// "Model no more than a scene needs": a sphere moved by a similarity (any mix of rotations, uniform scales and
+// translations, as on the thousands of spheres of balls2 and gnarly) is still a sphere, centred at M·c with
+// radius s·r. Folding the matrix into it saves the two matrix products per test and keeps its bounds tight.
+// The similarity test is LᵀL = s²·I for the linear part L, up to the rounding of the rotation matrices.
+ObjectDesc foldSimilarityIntoSphere(const ObjectDesc& desc) {
+  const auto* sphere = std::get_if<SphereDesc>(&desc.shape);
+  if (!sphere) return desc;
+  const glm::dmat3 linear(desc.worldFromObject);
+  const glm::dmat3 gram = glm::transpose(linear) * linear;
+  const double s2 = gram[0][0];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (std::abs(gram[i][j] - (i == j ? s2 : 0.0)) > 1e-12 * s2) return desc;
+    }
+  }
+  ObjectDesc folded = desc;
+  folded.shape = SphereDesc{glm::dvec3(desc.worldFromObject * glm::dvec4(sphere->center, 1.0)),
+                            std::sqrt(s2) * sphere->radius};
+  folded.worldFromObject = glm::dmat4(1.0);
+  return folded;
 }
 
 }  // namespace
@@ -34,7 +68,8 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
     : desc_(desc), arithmetic_(arithmetic) {
   for (const LightDesc& l : desc.lights) lights_.push_back(Light<T>{Vec3<T>(l.position), l.color});
   int id = 1;
-  for (const ObjectDesc& o : desc.objects) {
+  for (const ObjectDesc& given : desc.objects) {
+    const ObjectDesc o = foldSimilarityIntoSphere(given);
     auto object = makeObject<T>(o, arithmetic, id);
     // An identity transform (`translate <0,0,0>`) costs nothing: the shape is used as it is.
     if (o.worldFromObject != glm::dmat4(1.0)) {

@@ -49,8 +49,10 @@ class Lexer {
  private:
   SourceLoc here() const { return SourceLoc{file_, line_, col_}; }
   char peek(size_t k = 0) const { return i_ + k < s_.size() ? s_[i_ + k] : '\0'; }
+  // A line ends at LF, CRLF or a lone CR (old Mac files, which POV-Ray reads too).
+  bool endsLine() const { return s_[i_] == '\n' || (s_[i_] == '\r' && peek(1) != '\n'); }
   void advance() {
-    if (s_[i_] == '\n') {
+    if (endsLine()) {
       ++line_;
       col_ = 1;
     } else {
@@ -65,7 +67,7 @@ class Lexer {
       if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
         advance();
       } else if (c == '/' && peek(1) == '/') {
-        while (i_ < s_.size() && s_[i_] != '\n') advance();
+        while (i_ < s_.size() && !endsLine()) advance();
       } else if (c == '/' && peek(1) == '*') {
         const SourceLoc start = here();
         advance(), advance();

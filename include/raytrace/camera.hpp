@@ -14,7 +14,13 @@ template <class T> class Camera {
   // The eye ray through a point of the image given in pixel units from the lower-left image corner.
   Ray<T> ray(T px, T py) const;
   // The eye ray of pixel (x, y), through the pixel's own sample point (CameraDesc::pixelOffset).
-  Ray<T> pixelRay(int x, int y) const { return ray(T(x) + offset_.x, T(y) + offset_.y); }
+  Ray<T> pixelRay(int x, int y) const { return sampleRay(x, y, 0, 0, 1); }
+  // Sub-sample (i, j) of an n × n grid over pixel (x, y), centred on the pixel's sample point (§c.12: the
+  // course's centre offset ½ gives its Us = −½ + (x·n + i + ½)/(w·n)). n = 1 is the pixel's own ray.
+  Ray<T> sampleRay(int x, int y, int i, int j, int n) const {
+    return ray(T(x) + offset_.x + ((T(i) + T(0.5)) / T(n) - T(0.5)),
+               T(y) + offset_.y + ((T(j) + T(0.5)) / T(n) - T(0.5)));
+  }
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -10,7 +10,15 @@ namespace rt {
 // The whole file as bytes. Throws Error with a one-line reason for a missing, unreadable or non-regular file.
 std::string readFile(const std::string& path);
 
-// Reads and parses a scene. The language comes from the extension (.pov); otherwise the POV subset is assumed.
+// A file name's extension in lower case without the dot: "png" for "a/b.PNG", "" for "a.d/b" or ".png" (a
+// hidden file's name is no extension).
+std::string extension(const std::string& path);
+
+// The language of a scene file: from its extension (.pov, .cli, any case) when it has one of those, otherwise
+// from its text (looksLikeCli), with the POV subset as the fallback.
+SceneLanguage sceneLanguage(const std::string& path, const std::string& text);
+
+// Reads and parses a scene in its language (sceneLanguage).
 SceneDesc loadScene(const std::string& path);
 
 }  // namespace rt

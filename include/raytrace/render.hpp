@@ -4,6 +4,7 @@
 #include "raytrace/image.hpp"
 #include "raytrace/precision.hpp"
 #include "raytrace/scene_desc.hpp"
+#include "raytrace/shading.hpp"
 #include "raytrace/spawn.hpp"
 
 namespace rt {
@@ -11,10 +12,15 @@ namespace rt {
 // Everything the command line can change about how a picture is made.
 struct RenderOptions {
   Arithmetic arithmetic;                        // --precision, --sphere
-  OffsetPolicy offset = OffsetPolicy::Relative;  // spawned-ray origins
+  OffsetPolicy offset = OffsetPolicy::Relative;  // --offset: spawned-ray origins
+  Brdf brdf = Brdf::BlinnPhong;                  // -altbrdf: Cook-Torrance (§c.2)
+  bool fresnel = false;                          // -fresnel: Schlick-weighted reflection and refraction (§c.5)
+  bool beers = false;                            // -beers: Beer's-law absorption instead of the ×C tint (§c.6)
+  bool normals = false;                          // -normals: colour = n/2 + 0.5, a debug view
+  int samples = 1;                               // -ss=N: N×N stratified eye rays per pixel (§c.12)
 };
 
-// Renders the scene at width × height. Implemented by the shading module (issue 3).
+// Renders the scene at width × height.
 Image render(const SceneDesc& scene, int width, int height, const RenderOptions& options);
 
 }  // namespace rt

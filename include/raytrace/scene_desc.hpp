@@ -21,6 +21,9 @@ struct CameraDesc {
   // Where in a pixel the eye ray passes, in pixel units from the pixel's lower-left corner. The course
   // uses the centre (§d); the .cli reference images need (0, 1) (cs3451-course.md §A.4).
   glm::dvec2 pixelOffset{0.5, 0.5};
+  // .cli: `right` is written for a square image and is stretched by width/height when the image is made, so
+  // pixels stay square at any size and `fov` stays the vertical angle (cs3451-course.md §A.4 leaves this open).
+  bool rightFollowsImage = false;
 };
 
 struct LightDesc {
@@ -56,13 +59,27 @@ struct Conventions {
   bool shadeDeepest = true;      // .cli: a ray at maxDepth that hits returns black (cs3451 §A.4)
 };
 
+enum class SceneLanguage { Pov, Cli };
+
+struct WriteDesc;
+
 struct SceneDesc {
   std::string file;
+  SceneLanguage language = SceneLanguage::Pov;  // only reports that quote the file's own terms look at it
   CameraDesc camera;
   std::vector<LightDesc> lights;
   std::vector<ObjectDesc> objects;
   Conventions conventions;
   std::vector<std::string> warnings;  // "file:line:col: warning: …", printed before any output
+  // The images the file itself asks for, in order (.cli `write`); empty for POV, whose `render` writes
+  // output.png. Each holds the scene as it stood at that command.
+  std::vector<WriteDesc> writes;
+};
+
+struct WriteDesc {
+  std::string path;  // as written, relative to the working directory
+  SourceLoc loc;
+  SceneDesc scene;   // its own `writes` are empty
 };
 
 // The type name the course prints ("Sphere", "Plane", …).

@@ -1,0 +1,49 @@
+// The Whitted ray tracer: one routine follows a ray, shades its closest hit and recurses into the reflected
+// and refracted rays. Diagnostics (printrays, pixeltrace, pixelcolor) run the same routine with a RayRecord to
+// fill, so they print what the renderer computes.
+#pragma once
+
+#include <vector>
+
+#include "raytrace/camera.hpp"
+#include "raytrace/ray_tree.hpp"
+#include "raytrace/render.hpp"
+#include "raytrace/scene.hpp"
+
+namespace rt {
+
+template <class T> class Tracer {
+ public:
+  // Reads the options and the scene's Conventions; `scene` must outlive the tracer.
+  Tracer(const Scene<T>& scene, const RenderOptions& options);
+
+  // The colour of pixel (x, y): the float average of options.samples² stratified eye rays. With `trees`, the
+  // ray tree of each eye ray is appended to it.
+  Color pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees = nullptr) const;
+
+ private:
+  struct Traced {
+    Color color;
+    T distance;  // to the hit, +∞ on a miss (Beer's law needs it)
+  };
+
+  struct Local {
+    Color diffuse{0}, specular{0};
+  };
+
+  Traced trace(const Ray<T>& ray, RayRecord::Kind kind, int depth, float weight, RayRecord* record) const;
+  Color shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float weight, RayRecord* record) const;
+  // Diffuse and specular light from every light the point sees (§c.1, §c.7), before weighting. `n` is the
+  // shading normal on the viewer's side, `v` the unit vector to the viewer.
+  Local direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v, RayRecord* record) const;
+  // Whether a secondary ray of accumulated weight `weight` at `depth` is worth tracing (stability.md F12).
+  bool matters(float weight, int depth) const;
+
+  const Scene<T>& scene_;
+  RenderOptions options_;
+  Conventions conventions_;
+  std::vector<float> bound_;  // bound_[r]: the brightest colour a ray with r levels of recursion left can return
+  float cutoff_;
+};
+
+}  // namespace rt

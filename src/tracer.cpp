@@ -1,0 +1,196 @@
+#include "raytrace/tracer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include <glm/gtc/constants.hpp>
+
+namespace rt {
+
+namespace {
+
+float brightest(const Color& c) { return std::max(c.r, std::max(c.g, c.b)); }
+
+// The largest factor a specular term can put on Lc·ks·C: 1 for Blinn-Phong (a clamped cosine to a power
+// ≥ 0); for Cook-Torrance D ≤ max(1/(πα²), α²/π), G ≤ 1, F ≤ 1 and the denominator is at least 4/16.
+float specularBound(const Material& m, Brdf brdf) {
+  if (brdf == Brdf::BlinnPhong) return 1.0f;
+  const float alpha = ggxAlpha(m.roughness);
+  return 4.0f * std::max(1.0f / (glm::pi<float>() * alpha * alpha), alpha * alpha / glm::pi<float>());
+}
+
+}  // namespace
+
+// Recursion cutoff (stability.md F12). A secondary ray is skipped when its accumulated weight w (the product
+// of the weights and tints from the eye down to it) times the brightest colour its subtree could return,
+// bound_[levels left], is below cutoff_ = (½/255) / 2^(maxDepth+1). A tree has fewer than 2^(maxDepth+1) rays,
+// so all the skipped subtrees of one eye ray together move its colour by less than half an 8-bit step: the
+// byte changes only if the exact value lay within that distance of a rounding boundary. bound_ is built
+// bottom-up: a ray returns the background or wl·local + Σ weight·tint·(child colour) with wl ≤ 1, local ≤
+// Lmax and Σ weight·tint ≤ G, the largest ((1−f)k + f)·max(1, C) of the scene's materials.
+template <class T>
+Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
+    : scene_(scene), options_(options), conventions_(scene.desc().conventions) {
+  float localMax = 0, gain = 0;
+  for (const auto& object : scene.objects()) {
+    const Material& m = object->material();
+    float local = brightest(m.ambient);
+    for (const Light<T>& light : scene.lights()) {
+      local += brightest(light.color) * (brightest(m.diffuse) + brightest(m.specular) * specularBound(m, options.brdf));
+    }
+    localMax = std::max(localMax, options.normals ? 1.0f : local);
+    gain = std::max(gain, ((1 - m.filter) * m.reflection + m.filter) * std::max(1.0f, brightest(m.pigment)));
+  }
+  const float background = brightest(conventions_.background);
+  const auto level = [&](float children) {
+    const float shaded = localMax + gain * children;
+    return std::max(background, conventions_.clampEachBounce ? std::min(shaded, 1.0f) : shaded);
+  };
+  bound_.push_back(level(0));
+  for (int r = 1; r <= conventions_.maxDepth; ++r) bound_.push_back(level(bound_.back()));
+  cutoff_ = std::ldexp(0.5f / 255.0f, -(conventions_.maxDepth + 1));
+}
+
+template <class T> bool Tracer<T>::matters(float weight, int depth) const {
+  return weight * bound_[size_t(conventions_.maxDepth - depth)] >= cutoff_;
+}
+
+template <class T>
+Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees) const {
+  const int n = options_.samples;
+  Color sum(0);
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      RayRecord* record = trees ? &trees->emplace_back() : nullptr;
+      sum += trace(camera.sampleRay(x, y, i, j, n), RayRecord::Kind::Primary, 0, 1.0f, record).color;
+    }
+  }
+  return sum / float(n * n);
+}
+
+template <class T>
+typename Tracer<T>::Traced Tracer<T>::trace(const Ray<T>& ray, RayRecord::Kind kind, int depth, float weight,
+                                            RayRecord* record) const {
+  if (record) {
+    record->kind = kind;
+    record->origin = glm::dvec3(ray.origin);
+    record->dir = glm::dvec3(ray.dir);
+  }
+  const auto hit = scene_.closestHit(ray, {});
+  if (!hit) {
+    if (record) record->color = conventions_.background;
+    return {conventions_.background, std::numeric_limits<T>::infinity()};
+  }
+  Color color = shade(ray, *hit, depth, weight, record);
+  if (conventions_.clampEachBounce) color = glm::clamp(color, 0.0f, 1.0f);
+  if (record) record->color = color;
+  return {color, hit->t};
+}
+
+template <class T>
+Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float weight, RayRecord* record) const {
+  const Material& m = hit.object->material();
+  if (record) {
+    record->hit = true;
+    record->objectId = hit.object->id();
+    record->objectType = shapeName(scene_.desc().objects[size_t(hit.object->id() - 1)].shape);
+    record->point = glm::dvec3(hit.point);
+    record->normal = glm::dvec3(hit.normal);
+    record->t = double(hit.t);
+  }
+  // The .cli rule: the deepest ray that hits returns black (cs3451-course.md §A.4).
+  if (depth == conventions_.maxDepth && !conventions_.shadeDeepest) return Color(0);
+  if (options_.normals) return Color(hit.normal) * 0.5f + 0.5f;
+
+  const Vec3<T> v = -ray.dir;
+  const bool entering = glm::dot(v, hit.normal) >= T(0);
+  const Vec3<T> n = entering ? hit.normal : -hit.normal;  // shading normal, on the viewer's side
+  const float fresnel = options_.fresnel ? schlick(float(glm::dot(n, v)), m.ior) : 0.0f;
+  Weights w = weights(m, fresnel, conventions_.reflectionMixes);
+  std::optional<Vec3<T>> refracted;
+  if (w.transmission > 0) {
+    refracted = refractDirection(ray.dir, hit.normal, m.ior);
+    if (!refracted) {  // total internal reflection: the transmitted share is reflected (§c.4)
+      w.reflection += w.transmission;
+      w.transmission = 0;
+      if (record) record->extraInfo.push_back("total-internal-reflection");
+    }
+  }
+
+  const Color ambient = w.local * m.ambient;
+  Local local;
+  if (w.local > 0) local = direct(hit, n, v, record);
+  local.diffuse *= w.local;
+  local.specular *= w.local;
+
+  // Secondary rays: refraction first, then reflection, as the course traces and prints them (§a.3).
+  Color refraction(0), reflection(0);
+  const int child = depth + 1;
+  // The weight a child's colour has in the pixel includes the tint put on it: transmitted light is tinted by
+  // the object it travelled in (§c.4; Beer's law instead, §c.6), reflected light by the pigment (§c.3).
+  const Color transmitTint = entering && !options_.beers ? m.pigment : Color(1);
+  const float transmitWeight = weight * w.transmission * brightest(transmitTint);
+  if (child <= conventions_.maxDepth && w.transmission > 0 && matters(transmitWeight, child)) {
+    RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
+    if (sub) sub->extraInfo.push_back(entering ? "into-object" : "into-air");
+    const Traced t =
+        trace(spawnRay(hit, *refracted, options_.offset), RayRecord::Kind::Refraction, child, transmitWeight, sub);
+    Color gathered = transmitTint * t.color;
+    if (entering && options_.beers) gathered *= beerAttenuation(m.pigment, float(t.distance));
+    refraction = w.transmission * gathered;
+  }
+  const Color reflectTint = conventions_.tintReflection ? m.pigment : Color(1);
+  const float reflectWeight = weight * w.reflection * brightest(reflectTint);
+  if (child <= conventions_.maxDepth && w.reflection > 0 && matters(reflectWeight, child)) {
+    RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
+    const Ray<T> mirrored = spawnRay(hit, reflectDirection(ray.dir, n), options_.offset);
+    const Traced r = trace(mirrored, RayRecord::Kind::Reflection, child, reflectWeight, sub);
+    reflection = w.reflection * reflectTint * r.color;
+  }
+
+  if (record) {
+    record->ambient = ambient;
+    record->diffuse = local.diffuse;
+    record->specular = local.specular;
+    record->reflection = reflection;
+    record->refraction = refraction;
+    record->local = w.local;
+    record->reflect = w.reflection;
+    record->transmit = w.transmission;
+  }
+  return ambient + local.diffuse + local.specular + reflection + refraction;
+}
+
+template <class T>
+typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v,
+                                            RayRecord* record) const {
+  const Material& m = hit.object->material();
+  Local sum;
+  for (const Light<T>& light : scene_.lights()) {
+    const Vec3<T> toLight = light.position - hit.point;
+    const T distance = glm::length(toLight);
+    if (!(distance > T(0))) continue;  // a light on the surface has no direction
+    const Vec3<T> l = toLight / distance;
+    // A light behind the surface, as the viewer sees it, cannot light it: for a closed surface the shadow ray
+    // would run into the object itself (§c.7: no direct light on the inside of glass), and an open one is lit
+    // on the light's side only.
+    const float nl = float(glm::dot(n, l));
+    if (!(nl > 0.0f)) continue;
+    const auto [shadowRay, segment] = spawnRayTo(hit, light.position, options_.offset);
+    const bool blocked = scene_.occluded(shadowRay, segment);
+    if (record) record->shadows.push_back({glm::dvec3(shadowRay.origin), glm::dvec3(shadowRay.dir), blocked});
+    if (blocked) continue;
+    const float specular = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, l, m.exponent)
+                                                             : cookTorranceSpecular(n, v, l, m.roughness, m.ior);
+    sum.diffuse += light.color * m.diffuse * std::min(nl, 1.0f);
+    sum.specular += light.color * m.specular * specular;
+  }
+  return sum;
+}
+
+template class Tracer<float>;
+template class Tracer<double>;
+
+}  // namespace rt

@@ -1,0 +1,66 @@
+#include <sstream>
+
+#include <catch2/catch.hpp>
+
+#include "raytrace/cli.hpp"
+#include "raytrace/loader.hpp"
+#include "temp_dir.hpp"
+
+using namespace rt;
+
+TEST_CASE("loader: extension is the lower-cased suffix of the file name only") {
+  CHECK(extension("i1.cli") == "cli");
+  CHECK(extension("dir/Scene.POV") == "pov");
+  CHECK(extension("a.b/c.Png") == "png");
+  CHECK(extension("a.d/scene") == "");
+  CHECK(extension("scene") == "");
+  CHECK(extension(".png") == "");
+  CHECK(extension("out/.png") == "");
+  CHECK(extension("x.") == "");
+}
+
+TEST_CASE("loader: the extension names the language, whatever the text looks like") {
+  const std::string cli = "fov 60\n", pov = "camera { location <0,0,1> }\n";
+  CHECK(sceneLanguage("a.cli", cli) == SceneLanguage::Cli);
+  CHECK(sceneLanguage("a.CLI", pov) == SceneLanguage::Cli);
+  CHECK(sceneLanguage("a.pov", cli) == SceneLanguage::Pov);
+  CHECK(sceneLanguage("dir.cli/a.Pov", cli) == SceneLanguage::Pov);
+}
+
+TEST_CASE("loader: without a known extension the first meaningful line decides, POV by default") {
+  CHECK(sceneLanguage("scene", "# colored lights\r\n\r\nfov 60\r\n") == SceneLanguage::Cli);
+  CHECK(sceneLanguage("scene.txt", "sphere 0 0 -4 1\n") == SceneLanguage::Cli);
+  CHECK(sceneLanguage("scene", "sphere { <0,0,-4>, 1 }\n") == SceneLanguage::Pov);
+  CHECK(sceneLanguage("scene", "// POV\ncamera {}\n") == SceneLanguage::Pov);
+  CHECK(sceneLanguage("scene", "") == SceneLanguage::Pov);
+  CHECK(sceneLanguage("dir.cli/scene", "camera {}\n") == SceneLanguage::Pov);
+}
+
+namespace {
+
+const std::string kCliScene = "fov 60\nsurface 0 0 0  .4 .5 .6  0 0 0  1 0\nsphere 0 0 -4 1\n";
+
+}  // namespace
+
+TEST_CASE("loader: loadScene parses each language by its extension or, without one, its text") {
+  const test::TempDir dir;
+  CHECK(loadScene(dir.write("a.cli", kCliScene)).language == SceneLanguage::Cli);
+  CHECK(loadScene(dir.write("b", kCliScene)).language == SceneLanguage::Cli);
+  const std::string pov = "camera { location <0,0,0> up <0,1,0> right <1,0,0> look_at <0,0,-1> }\n";
+  CHECK(loadScene(dir.write("c", pov)).language == SceneLanguage::Pov);
+  const std::string wrong = dir.write("d.pov", kCliScene);
+  REQUIRE_THROWS_WITH(loadScene(wrong), wrong + ":1:1: error: unknown keyword 'fov'");
+}
+
+TEST_CASE("loader: the ray commands take a .cli scene") {
+  const test::TempDir dir;
+  std::ostringstream out, err;
+  // Pixel (150, 149) of 300 × 300 is the course's row 150, which looks straight down −z (cs3451 §A.4.1).
+  REQUIRE(runCommand({"firsthit", dir.write("s.cli", kCliScene), "300", "300", "150", "149"}, out, err) == 0);
+  CHECK(out.str() ==
+        "Pixel: [150, 149] Ray: {0.0000 0.0000 0.0000} -> {0.0000 0.0000 -1.0000}\n"
+        "T = 3.0000\n"
+        "Object Type: Sphere\n"
+        "Color: 0.4000 0.5000 0.6000\n");
+  CHECK(err.str().empty());
+}
