@@ -92,6 +92,18 @@ TEMPLATE_TEST_CASE("the hierarchy finds exactly the hit a scan in file order fin
           ray.dir = rt::Vec3<T>(glm::normalize(target - glm::dvec3(ray.origin)));
         }
       }
+      if (i % 7 == 3) {
+        // Parallel to an axis (with a signed zero elsewhere) from a point on the plane of a sphere's extreme
+        // point: the 0·∞ cases of the slab test.
+        const auto& object = desc.objects[size_t(i) % desc.objects.size()];
+        if (const auto* s = std::get_if<rt::SphereDesc>(&object.shape)) {
+          const int axis = i % 3;
+          ray.origin[axis] = T(s->center[axis] + (i % 2 ? s->radius : -s->radius));
+          ray.dir = rt::Vec3<T>(T(0));
+          ray.dir[(axis + 1) % 3] = i % 4 == 3 ? T(-1) : T(1);
+          ray.dir[(axis + 2) % 3] = T(-0.0);
+        }
+      }
       const rt::Interval<T> range{T(0), i % 3 == 0 ? T(std::abs(pos(rng))) : std::numeric_limits<T>::infinity()};
       requireSame(flat.closestHit(ray, range), tree.closestHit(ray, range));
       REQUIRE(flat.occluded(ray, range) == tree.occluded(ray, range));

@@ -1,7 +1,11 @@
 // Whole-image rendering: what `render` (and a .cli `write`) produces.
 #pragma once
 
+#include <ostream>
+
+#include "raytrace/bvh.hpp"
 #include "raytrace/image.hpp"
+#include "raytrace/parallel.hpp"
 #include "raytrace/precision.hpp"
 #include "raytrace/scene_desc.hpp"
 #include "raytrace/shading.hpp"
@@ -18,6 +22,9 @@ struct RenderOptions {
   bool beers = false;                            // -beers: Beer's-law absorption instead of the ×C tint (§c.6)
   bool normals = false;                          // -normals: colour = n/2 + 0.5, a debug view
   int samples = 1;                               // -ss=N: N×N stratified eye rays per pixel (§c.12)
+  Hierarchy hierarchy = Hierarchy::Auto;         // --hierarchy: force the BVH on or off, for comparisons
+  int threads = defaultThreads();                // --threads N
+  std::ostream* progress = nullptr;              // where render() shows its progress line, if anywhere
 };
 
 // Renders the scene at width × height.

@@ -17,11 +17,6 @@ template <class T> struct Light {
   Color color;
 };
 
-// Whether the bounded objects go into a bounding volume hierarchy. Auto builds one from
-// kHierarchyMinObjects bounded objects on, where it starts to pay (measured with raytrace_bench).
-enum class Hierarchy { Auto, Always, Never };
-constexpr size_t kHierarchyMinObjects = 8;
-
 template <class T> class Scene {
  public:
   // `arithmetic` must be resolved (no Auto) and match T; see chooseArithmetic().
