@@ -53,10 +53,17 @@ template <class T> T nextUp(T t) {
   return t;
 }
 
-}  // namespace
+// The binary tree the 4-wide one is collapsed from. The two children of an inner node are stored side by
+// side, the first at `first`; a leaf holds order[first, first + count).
+template <class T> struct BinaryNode {
+  Aabb<T> box;
+  uint32_t first = 0;
+  uint32_t count = 0;  // 0 for an inner node
+};
 
-template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
-  if (objects.empty()) return;
+// Binned SAH build (Wald 2007); `order` receives the object indices in leaf order.
+template <class T>
+std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& objects, std::vector<uint32_t>& order) {
   std::vector<Aabb<T>> boxes;
   std::vector<Vec3<T>> centroids;
   boxes.reserve(objects.size());
@@ -65,11 +72,12 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
     boxes.push_back(paddedBounds(*o));
     centroids.push_back(centroid(boxes.back()));
   }
-  std::vector<uint32_t> order(objects.size());
+  order.resize(objects.size());
   for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
 
-  nodes_.reserve(2 * objects.size() - 1);
-  nodes_.push_back(Node{{}, 0, uint32_t(objects.size())});
+  std::vector<BinaryNode<T>> nodes;
+  nodes.reserve(2 * objects.size() - 1);
+  nodes.push_back({{}, 0, uint32_t(objects.size())});
   struct Task {
     uint32_t node;
     int depth;
@@ -78,13 +86,13 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
   while (!tasks.empty()) {
     const Task task = tasks.back();
     tasks.pop_back();
-    const uint32_t first = nodes_[task.node].first, count = nodes_[task.node].count;
+    const uint32_t first = nodes[task.node].first, count = nodes[task.node].count;
     Aabb<T> box, centres;
     for (uint32_t i = first; i < first + count; ++i) {
       box.expand(boxes[order[i]]);
       centres.expand(centroids[order[i]]);
     }
-    nodes_[task.node].box = box;
+    nodes[task.node].box = box;
     if (count == 1 || task.depth >= kMaxDepth) continue;
 
     // Bin the centroids along their longest extent and sweep the bin boundaries for the lowest surface area
@@ -135,37 +143,90 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
     } else {
       middle = first + count / 2;  // all centroids coincide: any halving is as good as another
     }
-    const uint32_t left = uint32_t(nodes_.size());
-    nodes_.push_back(Node{{}, first, middle - first});
-    nodes_.push_back(Node{{}, middle, first + count - middle});
-    nodes_[task.node].first = left;
-    nodes_[task.node].count = 0;
+    const uint32_t left = uint32_t(nodes.size());
+    nodes.push_back(BinaryNode<T>{{}, first, middle - first});
+    nodes.push_back(BinaryNode<T>{{}, middle, first + count - middle});
+    nodes[task.node].first = left;
+    nodes[task.node].count = 0;
     tasks.push_back({left, task.depth + 1});
     tasks.push_back({left + 1, task.depth + 1});
   }
+  return nodes;
+}
+
+}  // namespace
+
+template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
+  if (objects.empty()) return;
+  std::vector<uint32_t> order;
+  const std::vector<BinaryNode<T>> binary = buildBinary(objects, order);
   objects_.reserve(objects.size());
   for (uint32_t i : order) objects_.push_back(objects[i]);
+
+  // Collapse: a node takes its binary node's children, then, while it has room, replaces the inner child with
+  // the largest surface area by that child's two children (Wald et al. 2008).
+  struct Task {
+    uint32_t binary, node;
+  };
+  std::vector<Task> tasks{{0, 0}};
+  nodes_.emplace_back();
+  while (!tasks.empty()) {
+    const Task task = tasks.back();
+    tasks.pop_back();
+    std::vector<uint32_t> children;
+    if (binary[task.binary].count) {
+      children.push_back(task.binary);  // a root that is a leaf: one child
+    } else {
+      children = {binary[task.binary].first, binary[task.binary].first + 1};
+    }
+    while (children.size() < size_t(kWidth)) {
+      int widest = -1;
+      for (size_t c = 0; c < children.size(); ++c) {
+        const BinaryNode<T>& b = binary[children[c]];
+        if (!b.count && (widest < 0 || area(b.box) > area(binary[children[size_t(widest)]].box))) widest = int(c);
+      }
+      if (widest < 0) break;
+      const uint32_t split = binary[children[size_t(widest)]].first;
+      children[size_t(widest)] = split;
+      children.push_back(split + 1);
+    }
+    Node node;
+    node.size = int(children.size());
+    for (int k = 0; k < node.size; ++k) {
+      const BinaryNode<T>& b = binary[children[size_t(k)]];
+      for (int a = 0; a < 3; ++a) node.lo[a][k] = b.box.min[a], node.hi[a][k] = b.box.max[a];
+      node.count[k] = b.count;
+      node.first[k] = b.first;
+      if (!b.count) {
+        node.first[k] = uint32_t(nodes_.size());
+        nodes_.emplace_back();
+        tasks.push_back({children[size_t(k)], node.first[k]});
+      }
+    }
+    nodes_[task.node] = node;
+  }
 }
 
 template <class T>
 std::optional<Hit<T>> Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>> best) const {
   if (nodes_.empty()) return best;
   const Vec3<T> invDir = T(1) / ray.dir;
-  constexpr T inf = std::numeric_limits<T>::infinity();
   // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
   T limit = best ? nextUp(best->t) : range.max;
-  if (rayBoxEntry(nodes_[0].box, ray.origin, invDir, range.min, limit) == inf) return best;
 
+  // Children still to visit, nearest on top: at most kWidth − 1 more per level of the tree.
   struct Pending {
-    const Node* node;
     T t;
+    uint32_t first, count;
   };
-  std::array<Pending, kMaxDepth> stack;
+  std::array<Pending, kMaxDepth * kWidth> stack;
   int size = 0;
-  const Node* node = &nodes_[0];
-  for (;;) {
-    if (node->leaf()) {
-      for (uint32_t i = node->first; i < node->first + node->count; ++i) {
+  stack[size++] = {range.min, 0, 0};
+  while (size > 0) {
+    const Pending p = stack[--size];
+    if (p.t > limit * kFarScale<T>) continue;  // entered beyond a hit found since it was pushed
+    if (p.count) {
+      for (uint32_t i = p.first; i < p.first + p.count; ++i) {
         const Object<T>* object = objects_[i];
         auto hit = object->intersect(ray, Interval<T>{range.min, limit});
         if (hit && (!best || hit->t < best->t || object->id() < best->object->id())) {
@@ -173,83 +234,84 @@ std::optional<Hit<T>> Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, s
           limit = nextUp(hit->t);
         }
       }
-    } else {
-      // Visit the nearer child first so that its hits cut off the farther one.
-      const Node* near = &nodes_[node->first];
-      const Node* far = near + 1;
-      T tNear = rayBoxEntry(near->box, ray.origin, invDir, range.min, limit);
-      T tFar = rayBoxEntry(far->box, ray.origin, invDir, range.min, limit);
-      if (tFar < tNear) std::swap(near, far), std::swap(tNear, tFar);
-      if (tNear != inf) {
-        if (tFar != inf) stack[size++] = {far, tFar};
-        node = near;
-        continue;
-      }
+      continue;
     }
-    // Next: the nearest postponed subtree that a hit found since has not ruled out.
-    do {
-      if (size == 0) return best;
-      --size;
-    } while (stack[size].t > limit * kFarScale<T>);
-    node = stack[size].node;
+    const Node& node = nodes_[p.first];
+    T entry[kWidth];
+    entries(node, ray.origin, invDir, range.min, limit, entry);
+    // Push the children that the ray enters, farthest first, so that the nearest is visited next and its
+    // hits cut off the others (insertion into the sorted top of the stack).
+    const int base = size;
+    for (int k = 0; k < node.size; ++k) {
+      if (entry[k] == std::numeric_limits<T>::infinity()) continue;
+      int at = size++;
+      while (at > base && stack[at - 1].t < entry[k]) stack[at] = stack[at - 1], --at;
+      stack[at] = {entry[k], node.first[k], node.count[k]};
+    }
   }
+  return best;
 }
 
 template <class T> bool Bvh<T>::occluded(const Ray<T>& ray, Interval<T> range) const {
   if (nodes_.empty()) return false;
   const Vec3<T> invDir = T(1) / ray.dir;
-  constexpr T inf = std::numeric_limits<T>::infinity();
-  if (rayBoxEntry(nodes_[0].box, ray.origin, invDir, range.min, range.max) == inf) return false;
-  std::array<const Node*, kMaxDepth> stack;
+  std::array<uint32_t, kMaxDepth * kWidth> stack;
   int size = 0;
-  const Node* node = &nodes_[0];
-  for (;;) {
-    if (node->leaf()) {
-      for (uint32_t i = node->first; i < node->first + node->count; ++i) {
-        if (objects_[i]->intersect(ray, range)) return true;
-      }
-    } else {
-      const Node* a = &nodes_[node->first];
-      const bool hitA = rayBoxEntry(a->box, ray.origin, invDir, range.min, range.max) != inf;
-      const bool hitB = rayBoxEntry(a[1].box, ray.origin, invDir, range.min, range.max) != inf;
-      if (hitA || hitB) {
-        if (hitA && hitB) stack[size++] = a + 1;
-        node = hitA ? a : a + 1;
+  stack[size++] = 0;
+  while (size > 0) {
+    const Node& node = nodes_[stack[--size]];
+    T entry[kWidth];
+    entries(node, ray.origin, invDir, range.min, range.max, entry);
+    for (int k = 0; k < node.size; ++k) {
+      if (entry[k] == std::numeric_limits<T>::infinity()) continue;
+      if (!node.count[k]) {
+        stack[size++] = node.first[k];
         continue;
       }
+      for (uint32_t i = node.first[k]; i < node.first[k] + node.count[k]; ++i) {
+        if (objects_[i]->intersect(ray, range)) return true;
+      }
     }
-    if (size == 0) return false;
-    node = stack[--size];
   }
+  return false;
 }
 
 template <class T> void Bvh<T>::print(std::ostream& out) const {
   size_t leaves = 0, largest = 0;
   for (const Node& n : nodes_) {
-    if (n.leaf()) ++leaves, largest = std::max<size_t>(largest, n.count);
+    for (int k = 0; k < n.size; ++k) {
+      if (n.count[k]) ++leaves, largest = std::max<size_t>(largest, n.count[k]);
+    }
   }
-  out << "BVH: " << objects_.size() << " objects, " << nodes_.size() << " nodes, " << leaves
-      << " leaves, largest leaf " << largest << "\n";
-  if (nodes_.empty()) return;
+  out << "BVH: " << objects_.size() << " objects, " << nodes_.size() << " nodes of up to " << kWidth
+      << " children, " << leaves << " leaves, largest leaf " << largest << "\n";
+  const auto line = [&](int depth, const char* what, const Aabb<T>& box) {
+    out << std::string(size_t(2 * depth), ' ') << what << braces(glm::dvec3(box.min)) << " - "
+        << braces(glm::dvec3(box.max));
+  };
   struct Item {
     uint32_t node;
     int depth;
   };
-  std::vector<Item> stack{{0, 0}};
+  std::vector<Item> stack;
+  if (!nodes_.empty()) stack.push_back({0, 0});
   while (!stack.empty()) {
     const Item item = stack.back();
     stack.pop_back();
     const Node& n = nodes_[item.node];
-    out << std::string(size_t(2 * item.depth), ' ') << (n.leaf() ? "Leaf " : "Node ") << item.node << ": "
-        << braces(glm::dvec3(n.box.min)) << " - " << braces(glm::dvec3(n.box.max));
-    if (n.leaf()) {
-      out << " objects";
-      for (uint32_t i = n.first; i < n.first + n.count; ++i) out << " " << objects_[i]->id();
-    }
+    Aabb<T> box;
+    for (int k = 0; k < n.size; ++k) box.expand(n.box(k));
+    line(item.depth, ("Node " + std::to_string(item.node) + ": ").c_str(), box);
     out << "\n";
-    if (!n.leaf()) {
-      stack.push_back({n.first + 1, item.depth + 1});
-      stack.push_back({n.first, item.depth + 1});
+    for (int k = n.size - 1; k >= 0; --k) {
+      if (!n.count[k]) stack.push_back({n.first[k], item.depth + 1});
+    }
+    for (int k = 0; k < n.size; ++k) {
+      if (!n.count[k]) continue;
+      line(item.depth + 1, "Leaf: ", n.box(k));
+      out << " objects";
+      for (uint32_t i = n.first[k]; i < n.first[k] + n.count[k]; ++i) out << " " << objects_[i]->id();
+      out << "\n";
     }
   }
 }

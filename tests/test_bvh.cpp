@@ -137,13 +137,13 @@ TEST_CASE("the tree holds every bounded object once, inside nested boxes", "[bvh
     return glm::all(glm::lessThanEqual(outer.min, inner.min)) && glm::all(glm::lessThanEqual(inner.max, outer.max));
   };
   for (const auto& node : bvh.nodes()) {
-    if (node.leaf()) {
-      for (uint32_t i = node.first; i < node.first + node.count; ++i) {
-        CHECK(contains(node.box, *bvh.objects()[i]->bounds()));
+    for (int k = 0; k < node.size; ++k) {
+      for (uint32_t i = node.first[k]; i < node.first[k] + node.count[k]; ++i) {
+        CHECK(contains(node.box(k), *bvh.objects()[i]->bounds()));
       }
-    } else {
-      CHECK(contains(node.box, bvh.nodes()[node.first].box));
-      CHECK(contains(node.box, bvh.nodes()[node.first + 1].box));
+      if (node.count[k]) continue;
+      const auto& child = bvh.nodes()[node.first[k]];
+      for (int c = 0; c < child.size; ++c) CHECK(contains(node.box(k), child.box(c)));
     }
   }
 }
@@ -162,7 +162,9 @@ TEST_CASE("coincident objects still split into small leaves", "[bvh]") {
   rt::SceneDesc desc;
   for (int i = 0; i < 1000; ++i) desc.objects.push_back(sphereDesc({1, 2, 3}, 1));
   const rt::Scene<float> scene(desc, {rt::Precision::Float, rt::SphereMethod::Robust}, Hierarchy::Always);
-  for (const auto& node : scene.hierarchy()->nodes()) CHECK(node.count <= 4);
+  for (const auto& node : scene.hierarchy()->nodes()) {
+    for (int k = 0; k < node.size; ++k) CHECK(node.count[k] <= 4);
+  }
   const auto hit = scene.closestHit({{1, 2, 10}, {0, 0, -1}}, {});
   REQUIRE(hit);
   CHECK(hit->object->id() == 1);
@@ -175,7 +177,7 @@ TEST_CASE("an empty hierarchy answers nothing", "[bvh]") {
   CHECK(!empty.occluded(ray, {}));
   std::ostringstream out;
   empty.print(out);
-  CHECK(out.str() == "BVH: 0 objects, 0 nodes, 0 leaves, largest leaf 0\n");
+  CHECK(out.str() == "BVH: 0 objects, 0 nodes of up to 4 children, 0 leaves, largest leaf 0\n");
 }
 
 TEST_CASE("printbvh shows each node's box and the object ids in the leaves", "[bvh]") {
@@ -186,8 +188,8 @@ TEST_CASE("printbvh shows each node's box and the object ids in the leaves", "[b
   std::ostringstream out;
   scene.hierarchy()->print(out);
   CHECK(out.str() ==
-        "BVH: 2 objects, 3 nodes, 2 leaves, largest leaf 1\n"
+        "BVH: 2 objects, 1 nodes of up to 4 children, 2 leaves, largest leaf 1\n"
         "Node 0: {-1.0020 -1.0020 -1.0020} - {11.0020 1.0020 1.0020}\n"
-        "  Leaf 1: {-1.0020 -1.0020 -1.0020} - {1.0020 1.0020 1.0020} objects 1\n"
-        "  Leaf 2: {8.9980 -1.0020 -1.0020} - {11.0020 1.0020 1.0020} objects 2\n");
+        "  Leaf: {-1.0020 -1.0020 -1.0020} - {1.0020 1.0020 1.0020} objects 1\n"
+        "  Leaf: {8.9980 -1.0020 -1.0020} - {11.0020 1.0020 1.0020} objects 2\n");
 }
