@@ -83,7 +83,13 @@ Options parseFlag(const std::string& flag, Options o) {
     const std::string v = p;
     if (v == "course") o.offset = OffsetPolicy::Course;
     else if (v == "relative") o.offset = OffsetPolicy::Relative;
-    else throw Error("--offset must be course or relative, found '" + v + "'");
+    else if (v == "normal") o.offset = OffsetPolicy::FixedNormal;
+    else if (v == "wb") o.offset = OffsetPolicy::WaechterBinder;
+    else throw Error("--offset must be relative, course, normal or wb, found '" + v + "'");
+    return o;
+  }
+  if (const char* p = value("--depth")) {
+    o.depth = parseInt(p, "--depth", 0, 64);
     return o;
   }
   if (const char* p = value("-ss")) {
@@ -267,8 +273,11 @@ std::string usage() {
       "options:\n"
       "  --precision=float|double|auto   arithmetic for geometry (default auto: chosen per scene)\n"
       "  --sphere=textbook|robust|auto   ray-sphere formula (default auto: chosen per scene)\n"
-      "  --offset=relative|course        spawned-ray origins: relative normal offset (default) or the\n"
-      "                                  course's P + 0.001*d, which its printrays outputs encode\n"
+      "  --offset=relative|course|normal|wb\n"
+      "                                  spawned-ray origins: relative normal offset (default), the\n"
+      "                                  course's P + 0.001*d (its printrays outputs encode it), a fixed\n"
+      "                                  1e-4 along the normal, or Waechter-Binder's ulp offset\n"
+      "  --depth=N                       deepest reflection/refraction level (default: the scene language's)\n"
       "  -altbrdf                        Cook-Torrance (GGX) instead of Blinn-Phong\n"
       "  -fresnel                        Schlick-weighted reflection and refraction\n"
       "  -beers                          Beer's-law absorption inside transparent objects\n"

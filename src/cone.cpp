@@ -40,10 +40,10 @@ std::optional<Hit<T>> Cone<T>::intersect(const Ray<T>& ray, Interval<T> range) c
     const Vec3<T> u = len > T(0) ? radial / len : Vec3<T>(0);
     hit.normal = glm::normalize(u - slope_ * frame_.axis());
     // Re-projected onto the side (stability.md F4): at the radius of its height, between the ends.
-    const T y = frame_.heightAt(s, t);
+    const T y = frame_.heightAt(s, t, std::max(baseRadius_, capRadius_));
     hit.point = frame_.at(y, (baseRadius_ + slope_ * y) * u);
   } else {
-    hit = frame_.diskHit(s, *nearest.part, t);
+    hit = frame_.diskHit(s, *nearest.part, t, *nearest.part == Part::Cap ? capRadius_ : baseRadius_);
   }
   hit.object = this;
   return hit;

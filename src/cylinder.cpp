@@ -27,9 +27,9 @@ std::optional<Hit<T>> Cylinder<T>::intersect(const Ray<T>& ray, Interval<T> rang
     hit.t = t;
     hit.normal = glm::normalize(s.op + t * s.dp);
     // Re-projected onto the side (stability.md F4): at the radius, between the ends.
-    hit.point = frame_.at(frame_.heightAt(s, t), radius_ * hit.normal);
+    hit.point = frame_.at(frame_.heightAt(s, t, radius_), radius_ * hit.normal);
   } else {
-    hit = frame_.diskHit(s, *nearest.part, t);
+    hit = frame_.diskHit(s, *nearest.part, t, radius_);
   }
   hit.object = this;
   return hit;

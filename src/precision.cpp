@@ -34,32 +34,37 @@ double smallestFeature(const ShapeDesc& shape) {
       shape);
 }
 
-// The largest coordinate a shape reaches, in its own space.
-double largestCoordinate(const ShapeDesc& shape) {
+// A ball around the shape, in its own space. A plane is unbounded; its point nearest the origin stands in.
+struct Ball {
+  glm::dvec3 center;
+  double radius;
+};
+Ball boundingBall(const ShapeDesc& shape) {
   return std::visit(
-      [](const auto& s) -> double {
+      [](const auto& s) -> Ball {
         using S = std::decay_t<decltype(s)>;
         if constexpr (std::is_same_v<S, SphereDesc>) {
-          return maxAbs(s.center) + s.radius;
+          return {s.center, s.radius};
         } else if constexpr (std::is_same_v<S, PlaneDesc>) {
-          return std::abs(s.distance);
+          return {s.distance * glm::normalize(s.normal), 0};
         } else if constexpr (std::is_same_v<S, TriangleDesc>) {
-          return std::max({maxAbs(s.a), maxAbs(s.b), maxAbs(s.c)});
+          const glm::dvec3 m = (s.a + s.b + s.c) / 3.0;
+          return {m, std::max({glm::length(s.a - m), glm::length(s.b - m), glm::length(s.c - m)})};
         } else if constexpr (std::is_same_v<S, BoxDesc>) {
-          return std::max(maxAbs(s.min), maxAbs(s.max));
+          return {(s.min + s.max) / 2.0, glm::length(s.max - s.min) / 2};
         } else if constexpr (std::is_same_v<S, ConeDesc>) {
-          return std::max(maxAbs(s.base) + s.baseRadius, maxAbs(s.cap) + s.capRadius);
+          return {(s.base + s.cap) / 2.0, glm::length(s.cap - s.base) / 2 + std::max(s.baseRadius, s.capRadius)};
         } else {
-          return std::max(maxAbs(s.base), maxAbs(s.cap)) + s.radius;
+          return {(s.base + s.cap) / 2.0, glm::length(s.cap - s.base) / 2 + s.radius};
         }
       },
       shape);
 }
 
-// How much a transform can stretch (largest column norm) and shrink (smallest column norm) lengths, and how
-// far it moves the origin. Enough for a budget: it bounds the world-space extents by a small factor.
+// How much a transform can stretch (largest column norm) and shrink (smallest column norm) lengths. Enough
+// for a budget: it bounds the world-space extents by a small factor.
 struct Stretch {
-  double most, least, shift;
+  double most, least;
 };
 Stretch stretch(const glm::dmat4& m) {
   double most = 0, least = std::numeric_limits<double>::infinity();
@@ -68,22 +73,32 @@ Stretch stretch(const glm::dmat4& m) {
     most = std::max(most, n);
     least = std::min(least, n);
   }
-  return {most, least, maxAbs(glm::dvec3(m[3]))};
+  return {most, least};
 }
 
 }  // namespace
 
 double precisionBudget(const SceneDesc& scene) {
-  // Rays start at the camera or on a surface; lights are only their targets, so they do not count.
+  // Two lengths set the error: coordinates, whose rounding is ε relative to their magnitude, and the distance
+  // a ray travels from its origin (the camera or a surface) to what it hits, which the sphere's t error
+  // scales with (stability.md F1). The box around the camera and every bounded object bounds the second by
+  // its diagonal. Lights are only targets of rays, so they do not count.
   double largest = maxAbs(scene.camera.location);
+  glm::dvec3 lo = scene.camera.location, hi = scene.camera.location;
   double smallest = std::numeric_limits<double>::infinity();
   for (const ObjectDesc& o : scene.objects) {
     const Stretch s = stretch(o.worldFromObject);
-    largest = std::max(largest, s.shift + s.most * largestCoordinate(o.shape));
+    const Ball local = boundingBall(o.shape);
     smallest = std::min(smallest, s.least * smallestFeature(o.shape));
+    const glm::dvec3 center(o.worldFromObject * glm::dvec4(local.center, 1));
+    const double radius = s.most * local.radius;
+    largest = std::max(largest, maxAbs(center) + radius);
+    lo = glm::min(lo, center - radius);
+    hi = glm::max(hi, center + radius);
   }
-  if (!(smallest > 0) || std::isinf(smallest)) return std::max(largest, 1.0);
-  return std::max(largest, 1.0) / smallest;
+  const double extent = std::max({largest, glm::length(hi - lo), 1.0});
+  if (!(smallest > 0) || std::isinf(smallest)) return extent;
+  return extent / smallest;
 }
 
 Arithmetic chooseArithmetic(const SceneDesc& scene, Arithmetic requested) {

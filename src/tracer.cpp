@@ -33,6 +33,7 @@ float specularBound(const Material& m, Brdf brdf) {
 template <class T>
 Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
     : scene_(scene), options_(options), conventions_(scene.desc().conventions) {
+  if (options.depth) conventions_.maxDepth = *options.depth;
   float localMax = 0, gain = 0;
   for (const auto& object : scene.objects()) {
     const Material& m = object->material();

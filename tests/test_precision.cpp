@@ -1,6 +1,8 @@
-// The precision budget R = largest coordinate ÷ smallest feature and the arithmetic chosen from it
-// (stability.md §1.1), on small scenes built here.
+// The precision budget R = (largest coordinate or ray length) ÷ smallest feature and the arithmetic chosen
+// from it (stability.md §1.1), on small scenes built here.
 #include <catch2/catch.hpp>
+
+#include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -27,11 +29,14 @@ void add(rt::SceneDesc& s, rt::ShapeDesc shape, glm::dmat4 m = glm::dmat4(1.0)) 
 
 }  // namespace
 
+// The extent is the larger of the largest coordinate and the diagonal of the box around the camera and the
+// objects' bounding balls (a plane contributes its point nearest the origin): it bounds every ray's length.
 TEST_CASE("precision: budget of a simple.pov-like scene") {
   rt::SceneDesc s = withCamera({0, 0, 14});
   add(s, rt::SphereDesc{{0, 0, 0}, 2});
   add(s, rt::PlaneDesc{{0, 1, 0}, -4});
-  CHECK(rt::precisionBudget(s) == 7.0);  // camera at 14 over radius 2; the plane has no feature size
+  // Box (−2, −4, −2)…(2, 2, 14): diagonal √(4² + 6² + 16²) = √308, over radius 2.
+  CHECK(rt::precisionBudget(s) == Approx(std::sqrt(308.0) / 2));
   const Arithmetic a = rt::chooseArithmetic(s);
   CHECK(a.precision == Precision::Float);
   CHECK(a.sphere == SphereMethod::Textbook);
@@ -41,44 +46,53 @@ TEST_CASE("precision: scenes of planes only, or nothing, have no feature to lose
   rt::SceneDesc s = withCamera({0, 0, 0.5});
   CHECK(rt::precisionBudget(s) == 1.0);
   add(s, rt::PlaneDesc{{0, 1, 0}, -40});
-  CHECK(rt::precisionBudget(s) == 40.0);
+  CHECK(rt::precisionBudget(s) == Approx(std::sqrt(40.0 * 40.0 + 0.5 * 0.5)));  // camera to (0, −40, 0)
 }
 
+// Each shape alone, seen from the origin, which lies inside the box around its bounding ball (centre m,
+// radius ρ): the extent is that box's diagonal 2√3·ρ.
 TEST_CASE("precision: every shape's extent and smallest feature") {
-  rt::SceneDesc s = withCamera({0, 0, 0});
-  add(s, rt::TriangleDesc{{0, 0, 0}, {4, 0, 0}, {0, 3, 0}});  // sides 4, 5, 3; reaches 4
-  CHECK(rt::precisionBudget(s) == Approx(4.0 / 3.0));
-  add(s, rt::BoxDesc{{-1, -1, -1}, {9, 1, 1}});  // thinnest 2, reaches 9
-  CHECK(rt::precisionBudget(s) == Approx(4.5));
-  add(s, rt::CylinderDesc{{0, 0, 0}, {0, 0, 10}, 0.5});  // radius 0.5, reaches 10.5
-  CHECK(rt::precisionBudget(s) == Approx(21.0));
-  add(s, rt::ConeDesc{{0, 0, 0}, 0.25, {0, 1, 0}, 0});  // larger radius 0.25
-  CHECK(rt::precisionBudget(s) == Approx(42.0));
+  const auto budget = [](rt::ShapeDesc shape) {
+    rt::SceneDesc s = withCamera({0, 0, 0});
+    add(s, shape);
+    return rt::precisionBudget(s);
+  };
+  const double root3 = std::sqrt(3.0);
+  // Sides 4, 5, 3; m = (4/3, 1, 0), ρ = |(4, 0, 0) − m| = √73/3.
+  CHECK(budget(rt::TriangleDesc{{0, 0, 0}, {4, 0, 0}, {0, 3, 0}}) == Approx(2 * root3 * std::sqrt(73.0) / 3 / 3));
+  // Thinnest 2; m = (4, 0, 0), ρ = |(10, 2, 2)|/2 = 3√3.
+  CHECK(budget(rt::BoxDesc{{-1, -1, -1}, {9, 1, 1}}) == Approx(2 * root3 * 3 * root3 / 2));
+  // Radius 0.5; m = (0, 0, 5), ρ = 5 + 0.5.
+  CHECK(budget(rt::CylinderDesc{{0, 0, 0}, {0, 0, 10}, 0.5}) == Approx(2 * root3 * 5.5 / 0.5));
+  // Larger radius 0.25; m = (0, 0.5, 0), ρ = 0.5 + 0.25.
+  CHECK(budget(rt::ConeDesc{{0, 0, 0}, 0.25, {0, 1, 0}, 0}) == Approx(2 * root3 * 0.75 / 0.25));
 }
 
 TEST_CASE("precision: transforms scale both the extent and the features") {
   rt::SceneDesc s = withCamera({0, 0, 1});
   add(s, rt::SphereDesc{{0, 0, 0}, 1}, glm::scale(glm::dmat4(1.0), glm::dvec3(0.1, 1, 1)));
-  CHECK(rt::precisionBudget(s) == Approx(10.0));  // thinnest axis 0.1, extent 1
+  CHECK(rt::precisionBudget(s) == Approx(2 * std::sqrt(3.0) / 0.1));  // box ±1 holds the camera; thinnest 0.1
   rt::SceneDesc t = withCamera({0, 0, 1});
   add(t, rt::SphereDesc{{0, 0, 0}, 1}, glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 99)));
-  CHECK(rt::precisionBudget(t) == Approx(100.0));
+  CHECK(rt::precisionBudget(t) == Approx(100.0));  // the coordinate 100 exceeds the diagonal √(8 + 99²)
 }
 
 TEST_CASE("precision: the thresholds R = 50 and R = 1000") {
-  const auto choose = [](double cameraZ) {
-    rt::SceneDesc s = withCamera({0, 0, cameraZ});
+  // A unit sphere at the origin and the camera at (0, 0, z): box (−1, −1, −1)…(1, 1, z), so R = √(8 + (z+1)²).
+  const auto choose = [](double R) {
+    rt::SceneDesc s = withCamera({0, 0, std::sqrt(R * R - 8) - 1});
     add(s, rt::SphereDesc{{0, 0, 0}, 1});
+    CHECK(rt::precisionBudget(s) == Approx(R));
     return rt::chooseArithmetic(s);
   };
-  CHECK(choose(50).precision == Precision::Float);
-  CHECK(choose(50).sphere == SphereMethod::Textbook);
-  CHECK(choose(50.5).precision == Precision::Float);
-  CHECK(choose(50.5).sphere == SphereMethod::Robust);
-  CHECK(choose(1000).precision == Precision::Float);
-  CHECK(choose(1000).sphere == SphereMethod::Robust);
-  CHECK(choose(1000.5).precision == Precision::Double);
-  CHECK(choose(1000.5).sphere == SphereMethod::Robust);
+  CHECK(choose(49.99).precision == Precision::Float);
+  CHECK(choose(49.99).sphere == SphereMethod::Textbook);
+  CHECK(choose(50.01).precision == Precision::Float);
+  CHECK(choose(50.01).sphere == SphereMethod::Robust);
+  CHECK(choose(999.9).precision == Precision::Float);
+  CHECK(choose(999.9).sphere == SphereMethod::Robust);
+  CHECK(choose(1000.1).precision == Precision::Double);
+  CHECK(choose(1000.1).sphere == SphereMethod::Robust);
 }
 
 TEST_CASE("precision: explicit requests win") {

@@ -242,7 +242,8 @@ TEST_CASE("Bad shading flags are reported with the accepted values", "[render]")
   CHECK(error({"render", "scene.pov", "4", "4", "-ss=0"}) == "-ss must be between 1 and 64, found 0");
   CHECK(error({"render", "scene.pov", "4", "4", "-ss=x"}) == "-ss must be a whole number, found 'x'");
   CHECK(error({"printrays", "scene.pov", "4", "4", "0", "0", "--offset=epsilon"}) ==
-        "--offset must be course or relative, found 'epsilon'");
+        "--offset must be relative, course, normal or wb, found 'epsilon'");
+  CHECK(error({"render", "scene.pov", "4", "4", "--depth=-1"}) == "--depth must be between 0 and 64, found -1");
   CHECK(error({"pixelcolor", "scene.pov", "4", "4", "0", "0", "-altbrdff"}) ==
         "unknown option '-altbrdff' (see raytrace --help)");
 }

@@ -1,6 +1,7 @@
 // Whole-image rendering: what `render` (and a .cli `write`) produces.
 #pragma once
 
+#include <optional>
 #include <ostream>
 
 #include "raytrace/bvh.hpp"
@@ -22,6 +23,7 @@ struct RenderOptions {
   bool beers = false;                            // -beers: Beer's-law absorption instead of the ×C tint (§c.6)
   bool normals = false;                          // -normals: colour = n/2 + 0.5, a debug view
   int samples = 1;                               // -ss=N: N×N stratified eye rays per pixel (§c.12)
+  std::optional<int> depth;                      // --depth=N: deepest secondary ray, instead of the scene's
   Hierarchy hierarchy = Hierarchy::Auto;         // --hierarchy: force the BVH on or off, for comparisons
   int threads = defaultThreads();                // --threads N
   std::ostream* progress = nullptr;              // where render() shows its progress line, if anywhere

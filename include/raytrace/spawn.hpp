@@ -3,7 +3,11 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "raytrace/hit.hpp"
@@ -16,21 +20,59 @@ enum class OffsetPolicy {
   // Move the re-projected hit point along the normal, to the side the ray leaves by, by kRayEpsilon
   // relative to the point's magnitude (Mitsuba 3 `offset_p`; stability.md F4a). Zero re-hits at any scale.
   Relative,
-  // The course's P + 0.001·d (csc473-course.md §c.8), which its p3/p4 printrays outputs encode. Fails at
-  // large coordinates and grazing angles (stability.md F4, F5); only for matching those digits.
+  // The course's P + 0.001·d (csc473-course.md §c.8), which its p3/p4 printrays outputs encode: a fixed
+  // t-min of 1e-3. Fails at large coordinates and grazing angles (stability.md F4, F5); only for matching
+  // those digits, and as a point of comparison on the speed-vs-accuracy chart.
   Course,
+  // A fixed 1e-4 along the normal, the other common epsilon. Fails once ulp(|p|) exceeds it (|p| ≳ 1e3 in
+  // float, stability.md F4); for the chart only.
+  FixedNormal,
+  // Wächter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection" (Ray Tracing Gems ch. 6):
+  // 256 ulps per unit of normal component, added to the coordinates' bits, and 1/65536 absolute near the
+  // origin (|x| < 1/32) where ulps vanish (stability.md F4b). For the chart; ~10× Relative's offset.
+  WaechterBinder,
 };
 
 template <class T> constexpr T kRayEpsilon = T(16) * std::numeric_limits<T>::epsilon();
 constexpr double kCourseEpsilon = 0.001;
+constexpr double kFixedNormalEpsilon = 1e-4;
 // Shadow segments stop this fraction short of the light, so a light on a surface does not shadow itself.
 template <class T> constexpr T kShadowEpsilon = T(64) * std::numeric_limits<T>::epsilon();
 
+// Wächter–Binder's offset of p along n (RTG ch. 6, `offset_ray`), for float and double: n's components in
+// units of 256 ulps move each coordinate through its bit pattern, so the step scales with |x| exactly; below
+// |x| = 1/32 a fixed step of 128ε (2^-16 in float, as in the paper) takes over.
+template <class T> Vec3<T> waechterBinderOffset(const Vec3<T>& p, const Vec3<T>& n) {
+  using Bits = std::conditional_t<sizeof(T) == 4, std::int32_t, std::int64_t>;
+  Vec3<T> out;
+  for (int i = 0; i < 3; ++i) {
+    if (std::abs(p[i]) < T(1) / T(32)) {
+      out[i] = p[i] + T(128) * std::numeric_limits<T>::epsilon() * n[i];
+      continue;
+    }
+    const Bits step = Bits(T(256) * n[i]);
+    Bits bits;
+    std::memcpy(&bits, &p[i], sizeof bits);
+    bits += p[i] < T(0) ? -step : step;
+    std::memcpy(&out[i], &bits, sizeof bits);
+  }
+  return out;
+}
+
 // The origin of a ray leaving `hit` in direction `dir`.
 template <class T> Vec3<T> spawnOrigin(const Hit<T>& hit, const Vec3<T>& dir, OffsetPolicy policy) {
-  if (policy == OffsetPolicy::Course) return hit.point + T(kCourseEpsilon) * dir;
-  const T offset = kRayEpsilon<T> * std::max(T(1), maxAbs(hit.point));
-  return hit.point + (glm::dot(hit.normal, dir) > T(0) ? offset : -offset) * hit.normal;
+  const Vec3<T> outward = glm::dot(hit.normal, dir) > T(0) ? hit.normal : -hit.normal;
+  switch (policy) {
+    case OffsetPolicy::Course:
+      return hit.point + T(kCourseEpsilon) * dir;
+    case OffsetPolicy::FixedNormal:
+      return hit.point + T(kFixedNormalEpsilon) * outward;
+    case OffsetPolicy::WaechterBinder:
+      return waechterBinderOffset(hit.point, outward);
+    case OffsetPolicy::Relative:
+      break;
+  }
+  return hit.point + kRayEpsilon<T> * std::max(T(1), maxAbs(hit.point)) * outward;
 }
 
 template <class T> Ray<T> spawnRay(const Hit<T>& hit, const Vec3<T>& dir, OffsetPolicy policy) {
