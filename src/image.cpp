@@ -8,17 +8,16 @@
 
 #include <unistd.h>
 
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#include <stb/stb_image_write.h>
-
 #include "raytrace/error.hpp"
 #include "raytrace/limits.hpp"
+#include "raytrace/png.hpp"
 
 namespace rt {
 
 Image::Image(int width, int height) : width_(width), height_(height) {
-  // The float pixels and the 8-bit copy that writePng makes of them.
-  const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * (sizeof(Color) + 3);
+  // The float pixels and what writePng makes of them: the 8-bit pixels, their filtered rows and the
+  // compressed stream, each about 3 bytes a pixel at most.
+  const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * (sizeof(Color) + 9);
   const std::string what = "a " + std::to_string(width) + "x" + std::to_string(height) + " image";
   const std::string shortage = memoryShortage(what, bytes, availableMemory());
   if (!shortage.empty()) throw Error(shortage);
@@ -27,33 +26,28 @@ Image::Image(int width, int height) : width_(width), height_(height) {
 
 unsigned char toByte(float c, Conventions::ToByte mode) {
   const float v = std::isnan(c) ? 0.0f : glm::clamp(c, 0.0f, 1.0f) * 255.0f;
-  return static_cast<unsigned char>(mode == Conventions::ToByte::Round ? std::lround(v) : int(v));
+  // v ≥ 0, so truncation is floor, and v − floor(v) is exact: rounding half up is std::lround(v), inline.
+  const int whole = int(v);
+  const bool up = mode == Conventions::ToByte::Round && v - float(whole) >= 0.5f;
+  return static_cast<unsigned char>(up ? whole + 1 : whole);
 }
 
-namespace {
-
-// A short write sets the stream's error flag, which writePng checks once at the end.
-void appendToFile(void* context, void* data, int size) {
-  std::fwrite(data, 1, size_t(size), static_cast<std::FILE*>(context));
-}
-
-}  // namespace
-
-void writePng(const Image& image, const std::string& path, Conventions::ToByte mode) {
-  std::vector<unsigned char> bytes;
-  bytes.reserve(size_t(image.width()) * image.height() * 3);
+void writePng(const Image& image, const std::string& path, Conventions::ToByte mode, int threads) {
+  std::vector<unsigned char> bytes(size_t(image.width()) * size_t(image.height()) * 3);
+  unsigned char* out = bytes.data();
   for (int y = image.height() - 1; y >= 0; --y) {
     for (int x = 0; x < image.width(); ++x) {
       const Color& c = image.at(x, y);
-      for (int k = 0; k < 3; ++k) bytes.push_back(toByte(c[k], mode));
+      for (int k = 0; k < 3; ++k) *out++ = toByte(c[k], mode);
     }
   }
+  const std::vector<unsigned char> png = encodePng(bytes, image.width(), image.height(), threads);
   const std::string temp = path + ".tmp" + std::to_string(getpid());
   std::FILE* f = std::fopen(temp.c_str(), "wb");
   if (!f) throw Error("cannot write '" + path + "': " + std::strerror(errno));
-  const int ok = stbi_write_png_to_func(appendToFile, f, image.width(), image.height(), 3, bytes.data(),
-                                        image.width() * 3);
-  const bool failed = !ok || std::ferror(f) || std::fflush(f) != 0 || fsync(fileno(f)) != 0;
+  // A short write sets the stream's error flag, checked below.
+  std::fwrite(png.data(), 1, png.size(), f);
+  const bool failed = std::ferror(f) || std::fflush(f) != 0 || fsync(fileno(f)) != 0;
   const int err = errno;
   if (std::fclose(f) != 0 || failed) {
     std::remove(temp.c_str());

@@ -28,7 +28,7 @@ class PovParser {
   SceneDesc parse() {
     bool haveCamera = false;
     while (peek().kind != Token::Kind::End) {
-      const Token t = next();
+      const Token& t = next();
       if (t.kind != Token::Kind::Word) {
         throw ParseError(t.loc, "expected 'camera', 'light_source' or an object, found " + t.quoted());
       }
@@ -50,6 +50,7 @@ class PovParser {
 
  private:
   const Token& peek() const { return current_; }
+  // By value: the token after it replaces the lookahead, and a caller's `const Token&` keeps the value alive.
   Token next() {
     Token t = std::move(current_);
     current_ = t.kind == Token::Kind::End ? t : tokens_.next();
@@ -57,29 +58,47 @@ class PovParser {
   }
   bool isPunct(const Token& t, char c) const { return t.kind == Token::Kind::Punct && t.text[0] == c; }
 
-  void expect(char c, const std::string& context) {
-    const Token t = next();
+  // The context is a C string so that the message costs nothing until it is needed.
+  void expect(char c, const char* context) {
+    const Token& t = next();
     if (!isPunct(t, c)) {
       throw ParseError(t.loc, std::string("expected '") + c + "' " + context + ", found " + t.quoted());
     }
   }
+  void expect(char c, const std::string& context) { expect(c, context.c_str()); }
 
   // `what` completes "expected a number …", e.g. "after 'ambient'" or "for the sphere radius".
   double number(const std::string& what) {
-    const Token t = next();
+    const Token& t = next();
     if (t.kind != Token::Kind::Number) throw ParseError(t.loc, "expected a number " + what + ", found " + t.quoted());
+    return t.number;
+  }
+  // The number after a keyword, e.g. `ambient 0.2`.
+  double numberAfter(const Token& keyword) {
+    const Token& t = next();
+    if (t.kind != Token::Kind::Number) {
+      throw ParseError(t.loc, "expected a number after " + keyword.quoted() + ", found " + t.quoted());
+    }
     return t.number;
   }
 
   // `<a, b, …>` with between minN and maxN components.
   std::vector<double> vector(int minN, int maxN, const std::string& what) {
-    expect('<', "to start " + what);
-    std::vector<double> v{number("in " + what)};
-    while (isPunct(peek(), ',')) {
+    // The messages are put together only for an error: this runs for every vector of every object.
+    const Token& open = next();
+    if (!isPunct(open, '<')) throw ParseError(open.loc, "expected '<' to start " + what + ", found " + open.quoted());
+    std::vector<double> v;
+    v.reserve(size_t(maxN));
+    for (;;) {
+      const Token& t = next();
+      if (t.kind != Token::Kind::Number) {
+        throw ParseError(t.loc, "expected a number in " + what + ", found " + t.quoted());
+      }
+      v.push_back(t.number);
+      if (!isPunct(peek(), ',')) break;
       next();
-      v.push_back(number("in " + what));
     }
-    const Token close = next();
+    const Token& close = next();
     if (!isPunct(close, '>')) {
       throw ParseError(close.loc, "expected ',' or '>' in " + what + ", found " + close.quoted());
     }
@@ -118,7 +137,7 @@ class PovParser {
     expect('{', "after 'camera'");
     CameraDesc& cam = scene_.camera;
     for (;;) {
-      const Token t = next();
+      const Token& t = next();
       if (isPunct(t, '}')) break;
       if (t.kind == Token::Kind::End) throw ParseError(t.loc, unclosed("camera", keyword));
       if (t.text == "location") {
@@ -147,7 +166,7 @@ class PovParser {
     light.position = vec3("the light position");
     float filter = 0;
     color(light.color, filter, "light");
-    const Token t = next();
+    const Token& t = next();
     if (t.kind == Token::Kind::End) throw ParseError(t.loc, unclosed("light_source", keyword));
     if (!isPunct(t, '}')) throw ParseError(t.loc, "unknown light_source property " + t.quoted());
     scene_.lights.push_back(light);
@@ -230,7 +249,7 @@ class PovParser {
   void parseModifiers(ObjectDesc& obj, const Token& keyword) {
     Finish finish;
     for (;;) {
-      const Token t = next();
+      const Token& t = next();
       if (isPunct(t, '}')) break;
       if (t.kind == Token::Kind::End) throw ParseError(t.loc, unclosed(keyword.text, keyword));
       if (t.text == "pigment") {
@@ -277,31 +296,30 @@ class PovParser {
   void parseFinish(Finish& f, const Token& keyword) {
     expect('{', "after 'finish'");
     for (;;) {
-      const Token t = next();
+      const Token& t = next();
       if (isPunct(t, '}')) break;
       if (t.kind == Token::Kind::End) throw ParseError(t.loc, unclosed("finish", keyword));
-      const std::string after = "after " + t.quoted();
       const SourceLoc at = peek().loc;
       if (t.text == "ambient") {
-        f.ambient = number(after);
+        f.ambient = numberAfter(t);
       } else if (t.text == "diffuse") {
-        f.diffuse = number(after);
+        f.diffuse = numberAfter(t);
       } else if (t.text == "specular") {
-        f.specular = number(after);
+        f.specular = numberAfter(t);
       } else if (t.text == "roughness") {
-        f.roughness = number(after);
+        f.roughness = numberAfter(t);
         // 0 would make the exponent 2/roughness² − 2 infinite.
         if (!(f.roughness > 0)) throw ParseError(at, "roughness must be greater than 0, found " + num(f.roughness));
       } else if (t.text == "reflection") {
-        f.reflection = number(after);
+        f.reflection = numberAfter(t);
       } else if (t.text == "refraction") {
-        f.refraction = number(after);
+        f.refraction = numberAfter(t);
       } else if (t.text == "ior") {
-        f.ior = number(after);
+        f.ior = numberAfter(t);
         if (!(f.ior > 0)) throw ParseError(at, "ior must be greater than 0, found " + num(f.ior));
       } else if (t.text == "metallic") {
         // A real POV-Ray finish keyword that this renderer does not model: read, said, and ignored.
-        number(after);
+        numberAfter(t);
         scene_.warnings.push_back(t.loc.str() + ": warning: 'metallic' is not modelled and is ignored");
       } else {
         throw ParseError(t.loc, "unknown finish property " + t.quoted());

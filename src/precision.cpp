@@ -104,7 +104,7 @@ double precisionBudget(const SceneDesc& scene) {
 Arithmetic chooseArithmetic(const SceneDesc& scene, Arithmetic requested) {
   const double r = precisionBudget(scene);
   Arithmetic a = requested;
-  if (a.precision == Precision::Auto) a.precision = r <= 1e3 ? Precision::Float : Precision::Double;
+  if (a.precision == Precision::Auto) a.precision = r <= 1e4 ? Precision::Float : Precision::Double;
   if (a.sphere == SphereMethod::Auto) {
     a.sphere = (a.precision == Precision::Float && r <= 50) ? SphereMethod::Textbook : SphereMethod::Robust;
   }

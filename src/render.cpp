@@ -1,20 +1,40 @@
 #include "raytrace/render.hpp"
 
+#include <algorithm>
+
+#include "raytrace/parallel.hpp"
+#include "raytrace/progress.hpp"
 #include "raytrace/tracer.hpp"
 
 namespace rt {
+
+namespace {
+
+// Square tiles handed out to the threads: small enough to balance the load near the end of a render, large
+// enough that handing them out costs nothing.
+constexpr int kTile = 32;
+
+}  // namespace
 
 Image render(const SceneDesc& desc, int width, int height, const RenderOptions& options) {
   const Arithmetic arithmetic = chooseArithmetic(desc, options.arithmetic);
   Image image(width, height);
   withPrecision(arithmetic.precision, [&](auto tag) {
     using T = decltype(tag);
-    const Scene<T> scene(desc, arithmetic);
+    const Scene<T> scene(desc, arithmetic, options.hierarchy);
     const Camera<T> camera(desc.camera, width, height);
     const Tracer<T> tracer(scene, options);
-    for (int y = 0; y < height; ++y) {
-      for (int x = 0; x < width; ++x) image.at(x, y) = tracer.pixel(camera, x, y);
-    }
+    // Every pixel is computed on its own from constant state, so the image is the same for any thread count.
+    const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
+    ProgressMeter progress(options.progress, int64_t(width) * height, options.samples * options.samples);
+    parallelFor(tilesX * tilesY, options.threads, [&](int tile) {
+      const int x0 = tile % tilesX * kTile, y0 = tile / tilesX * kTile;
+      const int x1 = std::min(width, x0 + kTile), y1 = std::min(height, y0 + kTile);
+      for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) image.at(x, y) = tracer.pixel(camera, x, y);
+      }
+      progress.add(int64_t(x1 - x0) * (y1 - y0));
+    });
   });
   return image;
 }

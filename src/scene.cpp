@@ -64,7 +64,8 @@ ObjectDesc foldSimilarityIntoSphere(const ObjectDesc& desc) {
 }  // namespace
 
 template <class T>
-Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic) : desc_(desc), arithmetic_(arithmetic) {
+Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy hierarchy)
+    : desc_(desc), arithmetic_(arithmetic) {
   for (const LightDesc& l : desc.lights) lights_.push_back(Light<T>{Vec3<T>(l.position), l.color});
   int id = 1;
   for (const ObjectDesc& given : desc.objects) {
@@ -77,26 +78,44 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic) : desc_(des
     objects_.push_back(std::move(object));
     ++id;
   }
+  // Unbounded objects (planes, or boxes overflowing T) have no box to put in a hierarchy; they are always tested in turn.
+  std::vector<const Object<T>*> bounded;
+  for (const auto& o : objects_) {
+    const auto box = o->bounds();
+    const auto finite3 = [](const Vec3<T>& v) {
+      return !glm::any(glm::isinf(v)) && !glm::any(glm::isnan(v));
+    };
+    const bool finite = box && finite3(box->min) && finite3(box->max);
+    (finite ? bounded : scanned_).push_back(o.get());
+  }
+  const bool build = hierarchy == Hierarchy::Always ||
+                     (hierarchy == Hierarchy::Auto && bounded.size() >= kHierarchyMinObjects);
+  if (build) {
+    hierarchy_.emplace(bounded);
+  } else {
+    scanned_.clear();
+    for (const auto& o : objects_) scanned_.push_back(o.get());
+  }
 }
 
 template <class T>
 std::optional<Hit<T>> Scene<T>::closestHit(const Ray<T>& ray, Interval<T> range) const {
   std::optional<Hit<T>> closest;
-  for (const auto& object : objects_) {
+  for (const Object<T>* object : scanned_) {
     // Narrowing to the strict interval keeps the earlier object on an exact tie.
     if (auto hit = object->intersect(ray, range)) {
       range.max = hit->t;
       closest = hit;
     }
   }
-  return closest;
+  return hierarchy_ ? hierarchy_->closestHit(ray, range, closest) : closest;
 }
 
 template <class T> bool Scene<T>::occluded(const Ray<T>& ray, Interval<T> range) const {
-  for (const auto& object : objects_) {
+  for (const Object<T>* object : scanned_) {
     if (object->intersect(ray, range)) return true;
   }
-  return false;
+  return hierarchy_ && hierarchy_->occluded(ray, range);
 }
 
 template class Scene<float>;

@@ -77,7 +77,7 @@ TEST_CASE("precision: transforms scale both the extent and the features") {
   CHECK(rt::precisionBudget(t) == Approx(100.0));  // the coordinate 100 exceeds the diagonal √(8 + 99²)
 }
 
-TEST_CASE("precision: the thresholds R = 50 and R = 1000") {
+TEST_CASE("precision: the thresholds R = 50 and R = 10000") {
   // A unit sphere at the origin and the camera at (0, 0, z): box (−1, −1, −1)…(1, 1, z), so R = √(8 + (z+1)²).
   const auto choose = [](double R) {
     rt::SceneDesc s = withCamera({0, 0, std::sqrt(R * R - 8) - 1});
@@ -89,10 +89,10 @@ TEST_CASE("precision: the thresholds R = 50 and R = 1000") {
   CHECK(choose(49.99).sphere == SphereMethod::Textbook);
   CHECK(choose(50.01).precision == Precision::Float);
   CHECK(choose(50.01).sphere == SphereMethod::Robust);
-  CHECK(choose(999.9).precision == Precision::Float);
-  CHECK(choose(999.9).sphere == SphereMethod::Robust);
-  CHECK(choose(1000.1).precision == Precision::Double);
-  CHECK(choose(1000.1).sphere == SphereMethod::Robust);
+  CHECK(choose(9999.9).precision == Precision::Float);
+  CHECK(choose(9999.9).sphere == SphereMethod::Robust);
+  CHECK(choose(10000.1).precision == Precision::Double);
+  CHECK(choose(10000.1).sphere == SphereMethod::Robust);
 }
 
 TEST_CASE("precision: explicit requests win") {

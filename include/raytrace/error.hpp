@@ -1,18 +1,33 @@
 // User-facing errors. Thrown once where the problem is found, caught only in main(), printed as one line.
 #pragma once
 
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace rt {
 
+// The name of a scene file, shared by every location in it: a scene has a location per token, and copying
+// one copies a pointer instead of the whole path.
+class FileName {
+ public:
+  FileName() : name_(std::make_shared<const std::string>()) {}
+  FileName(std::string name) : name_(std::make_shared<const std::string>(std::move(name))) {}  // NOLINT: implicit
+  const std::string& str() const { return *name_; }
+  friend bool operator==(const FileName& a, const std::string& b) { return *a.name_ == b; }
+
+ private:
+  std::shared_ptr<const std::string> name_;
+};
+
 // A position in a scene file; line and column are 1-based, as editors show them.
 struct SourceLoc {
-  std::string file;
+  FileName file;
   int line = 0;
   int col = 0;
 
-  std::string str() const { return file + ":" + std::to_string(line) + ":" + std::to_string(col); }
+  std::string str() const { return file.str() + ":" + std::to_string(line) + ":" + std::to_string(col); }
 };
 
 // Any error the user can fix: bad arguments, unreadable files, impossible values.

@@ -29,7 +29,8 @@ class Image {
 unsigned char toByte(float c, Conventions::ToByte mode);
 
 // Writes the image as PNG at `path` without ever leaving a partial file there: it is written beside the
-// target under a temporary name and renamed over it only once complete. Throws Error on failure.
-void writePng(const Image& image, const std::string& path, Conventions::ToByte mode);
+// target under a temporary name and renamed over it only once complete. `threads` compress in parallel; the
+// file is the same for any number. Throws Error on failure.
+void writePng(const Image& image, const std::string& path, Conventions::ToByte mode, int threads = 1);
 
 }  // namespace rt

@@ -20,13 +20,15 @@ struct Arithmetic {
 double precisionBudget(const SceneDesc& scene);
 
 // The cheapest arithmetic that keeps a scene's pixels exact (stability.md §1.1): no ray may flip between hit
-// and miss, and typical sphere t errors stay near 1e-3 of the smallest feature. Measured over 20k rays per
-// cell (tests/test_stability_sphere.cpp), |Δt|/r at p99 / max:
+// and miss, and no sphere t error may exceed 1e-2 of the smallest feature. Measured over 20k rays per cell
+// (tests/test_stability_sphere.cpp), |Δt|/r at p99 / max:
 //   textbook float  R = 20: 1.8e-4 / 7e-4;  R = 50: 1.1–1.3e-3 / 4–6e-3 (rays at 0.999·r);  R = 100: 5e-3 / 2e-2
 //   robust float    R = 1e3: 1.5e-4 / 5e-4;  R = 2e3: 2.9e-4 / 1.3e-3;  R = 1e4: 1.8e-3 / 6e-3
-// with no flipped hit up to R = 100 (textbook) and R = 1e4 (robust). Hence the textbook quadratic in float
-// while R ≤ 50 (its digits are also the ones the course's expected outputs encode), the robust test in float
-// while R ≤ 1e3, the robust test in double beyond. Explicit requests in `requested` win.
+// with no flipped hit up to R = 100 (textbook) and R = 1e4 (robust). Both float tiers stop where their worst
+// rays reach ≈ 6e-3·r: the textbook quadratic while R ≤ 50 (its digits are also the ones the course's expected
+// outputs encode), the robust test while R ≤ 1e4; the robust test in double beyond. Such errors sit on grazing
+// rays at the rim, and the re-projected hit point turns them into a normal error below 1/255 of shading.
+// Explicit requests in `requested` win.
 Arithmetic chooseArithmetic(const SceneDesc& scene, Arithmetic requested = {});
 
 // Calls f(T{}) with T = float or double as chosen, so one generic lambda serves both precisions.

@@ -2,8 +2,11 @@
 #pragma once
 
 #include <optional>
+#include <ostream>
 
+#include "raytrace/bvh.hpp"
 #include "raytrace/image.hpp"
+#include "raytrace/parallel.hpp"
 #include "raytrace/precision.hpp"
 #include "raytrace/scene_desc.hpp"
 #include "raytrace/shading.hpp"
@@ -21,6 +24,9 @@ struct RenderOptions {
   bool normals = false;                          // -normals: colour = n/2 + 0.5, a debug view
   int samples = 1;                               // -ss=N: N×N stratified eye rays per pixel (§c.12)
   std::optional<int> depth;                      // --depth=N: deepest secondary ray, instead of the scene's
+  Hierarchy hierarchy = Hierarchy::Auto;         // --hierarchy: force the BVH on or off, for comparisons
+  int threads = defaultThreads();                // --threads N
+  std::ostream* progress = nullptr;              // where render() shows its progress line, if anywhere
 };
 
 // Renders the scene at width × height.

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "raytrace/bvh.hpp"
 #include "raytrace/object.hpp"
 #include "raytrace/precision.hpp"
 #include "raytrace/scene_desc.hpp"
@@ -19,7 +20,7 @@ template <class T> struct Light {
 template <class T> class Scene {
  public:
   // `arithmetic` must be resolved (no Auto) and match T; see chooseArithmetic().
-  Scene(const SceneDesc& desc, const Arithmetic& arithmetic);
+  Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy hierarchy = Hierarchy::Auto);
 
   // The closest hit strictly inside `range` over all objects. Equal t resolve to the object that comes first
   // in the file, so results never depend on traversal order (stability.md F13).
@@ -31,12 +32,16 @@ template <class T> class Scene {
   const Arithmetic& arithmetic() const { return arithmetic_; }
   const std::vector<Light<T>>& lights() const { return lights_; }
   const std::vector<std::unique_ptr<Object<T>>>& objects() const { return objects_; }
+  // The hierarchy over the bounded objects, or nothing when every object is tested in turn.
+  const std::optional<Bvh<T>>& hierarchy() const { return hierarchy_; }
 
  private:
   const SceneDesc& desc_;
   Arithmetic arithmetic_;
   std::vector<Light<T>> lights_;
   std::vector<std::unique_ptr<Object<T>>> objects_;
+  std::vector<const Object<T>*> scanned_;  // tested one by one in file order: planes, or all without hierarchy
+  std::optional<Bvh<T>> hierarchy_;
 };
 
 }  // namespace rt

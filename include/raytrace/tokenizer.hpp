@@ -43,7 +43,7 @@ class Tokenizer {
   void lexNumber(Token& t);
 
   const std::string& s_;
-  std::string file_;
+  FileName file_;  // shared by the location of every token
   size_t i_ = 0;
   int line_ = 1, col_ = 1;
 };

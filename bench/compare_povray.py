@@ -1,0 +1,87 @@
+#!/usr/bin/python3
+"""End-to-end wall time of our renderer against POV-Ray 3.7 on the shared benchmark scenes.
+
+    bench/compare_povray.py [--bin build/raytrace] [--runs 3] [--threads 2] [--size 1280x960]
+
+Every scene of /work/shared/bench (regenerated into a work directory by its gen.py, so that the large one
+need not be committed) is rendered by `raytrace render` and by `povray`, without anti-aliasing and with 3x3
+supersampling (our -ss=3 against POV-Ray's +A0.0 +AM1 +R3), on the same number of threads. The runs are
+interleaved (ours, POV-Ray, ours, ...) so that a change in machine load hits both alike. Wall time is what
+the user waits for: process start to exit, scene loading and PNG writing included. POV-Ray gets the scene
+that tools/povref/povref.py --emit-only writes, and the command line of its README. Prints a Markdown table
+of medians and the ratio POV-Ray / ours.
+"""
+
+import argparse
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+
+SHARED = "/work/shared"
+GEN = os.path.join(SHARED, "bench", "gen.py")
+POVREF = os.path.join(SHARED, "tools", "povref", "povref.py")
+SCENES = ("small", "spheres1k", "spheres20k")
+
+
+def wall(cmd, cwd):
+    """Seconds from start to exit of `cmd`; raises if it fails."""
+    start = time.perf_counter()
+    done = subprocess.run(cmd, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    seconds = time.perf_counter() - start
+    if done.returncode != 0:
+        sys.exit("failed: %s\n%s" % (" ".join(cmd), done.stderr.decode(errors="replace")))
+    return seconds
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--bin", default="build/raytrace", help="our executable")
+    ap.add_argument("--runs", type=int, default=3, help="runs of each command (median reported)")
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--size", default="1280x960")
+    ap.add_argument("--work", default="build/bench-povray", help="directory for scenes and images")
+    ap.add_argument("--scenes", nargs="*", default=list(SCENES))
+    args = ap.parse_args()
+    width, height = args.size.split("x")
+    binary = os.path.abspath(args.bin)
+    work = os.path.abspath(args.work)
+    os.makedirs(work, exist_ok=True)
+
+    # gen.py writes next to itself, so it runs from a copy in the work directory.
+    shutil.copy(GEN, os.path.join(work, "gen.py"))
+    subprocess.run([sys.executable, "gen.py"], cwd=work, check=True, stdout=subprocess.DEVNULL)
+
+    variants = (("none", [], ["-A"]), ("3x3", ["-ss=3"], ["+A0.0", "+AM1", "+R3"]))
+    rows = []
+    for scene in args.scenes:
+        pov = scene + ".pov"
+        pov37 = scene + ".pov37.pov"
+        subprocess.run([POVREF, pov, width, height, "unused.png", "--emit", pov37, "--emit-only"], cwd=work,
+                       check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        for name, ours_aa, pov_aa in variants:
+            ours = [binary, "render", pov, width, height, "--threads", str(args.threads), "--quiet"] + ours_aa
+            theirs = ["povray", "+I" + pov37, "+O" + scene + ".povray.png", "+W" + width, "+H" + height,
+                      "-D", "-P", "-UA", "+Q9", "+MB", "-J", "File_Gamma=1.0", "+FN8",
+                      "+WT%d" % args.threads] + pov_aa
+            times = {"ours": [], "pov": []}
+            for _ in range(args.runs):
+                times["ours"].append(wall(ours, work))
+                times["pov"].append(wall(theirs, work))
+            ours_s, pov_s = statistics.median(times["ours"]), statistics.median(times["pov"])
+            rows.append((scene, name, ours_s, pov_s, times))
+            print("%s %s: ours %s, POV-Ray %s" % (scene, name, ["%.2f" % t for t in times["ours"]],
+                                                   ["%.2f" % t for t in times["pov"]]), file=sys.stderr)
+
+    print("| scene | AA | ours s | POV-Ray 3.7 s | POV-Ray / ours |")
+    print("|---|---|---|---|---|")
+    for scene, name, ours_s, pov_s, _ in rows:
+        print("| %s | %s | %.3f | %.3f | %.1f× |" % (scene, name, ours_s, pov_s, pov_s / ours_s))
+    print("\n%s×%s, %d threads each, wall time, median of %d interleaved runs." %
+          (width, height, args.threads, args.runs))
+
+
+if __name__ == "__main__":
+    main()

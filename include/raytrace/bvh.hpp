@@ -1,0 +1,90 @@
+// Bounding volume hierarchy over the bounded objects of a scene (csc473-course.md §c.13; the build is the
+// binned SAH of Wald, "On fast Construction of SAH-based Bounding Volume Hierarchies", 2007).
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <algorithm>
+#include <ostream>
+#include <vector>
+
+#include "raytrace/object.hpp"
+
+namespace rt {
+
+// Whether a scene puts its bounded objects into a hierarchy (--hierarchy). Auto builds one from
+// kHierarchyMinObjects bounded objects on, where it starts to pay (measured with raytrace_bench).
+enum class Hierarchy { Auto, Always, Never };
+constexpr size_t kHierarchyMinObjects = 8;
+
+// The far distance is scaled up by 1 + 2γ₃ so that rounding never rejects a box the exact ray enters before
+// tMax (Ize, "Robust BVH Ray Traversal", JCGT 2013). Scaling by a positive constant commutes with min, so it is
+// applied once, to the smallest far distance.
+template <class T> constexpr T kFarScale = T(1) + T(2) * (T(3) * std::numeric_limits<T>::epsilon()) /
+                                                      (T(1) - T(3) * std::numeric_limits<T>::epsilon());
+
+template <class T> class Bvh {
+ public:
+  static constexpr int kWidth = 4;  // children per node, tested together (the loops below vectorize)
+
+  // A node of the flattened 4-wide tree (Wald et al., "Getting Rid of Packets", 2008; Dammertz et al.,
+  // "Shallow Bounding Volume Hierarchies", 2008): the boxes of its children in structure-of-arrays form, so
+  // that one pass of SIMD arithmetic tests all of them. Child k < size is a leaf holding
+  // objects_[first[k], first[k] + count[k]) when count[k] > 0, else the node nodes_[first[k]].
+  struct Node {
+    T lo[3][kWidth], hi[3][kWidth];  // [axis][child]
+    uint32_t first[kWidth], count[kWidth];
+    int size = 0;
+
+    Aabb<T> box(int k) const {
+      return {{lo[0][k], lo[1][k], lo[2][k]}, {hi[0][k], hi[1][k], hi[2][k]}};
+    }
+  };
+
+  // Where the ray o + t·d enters each child's box within [tMin, tMax], +∞ where it misses; invDir is 1/d.
+  // The slab test (Kay & Kajiya 1986) for all children at once. A NaN from 0·∞ (origin on a slab plane, ray
+  // parallel to it) either leaves the bounds unchanged or rejects a ray lying in a face plane of the box,
+  // which cannot reach the objects: they lie strictly inside their padded boxes (paddedBounds in bvh.cpp).
+  static void entries(const Node& node, const Vec3<T>& origin, const Vec3<T>& invDir, T tMin, T tMax,
+                      T (&entry)[kWidth]) {
+    // GCC/Clang vector extensions: one SIMD instruction per operation on all children.
+    typedef T Lanes __attribute__((vector_size(kWidth * sizeof(T))));
+    Lanes near = Lanes{} + tMin, far = Lanes{} + tMax, lo, hi;
+    for (int a = 0; a < 3; ++a) {
+      std::memcpy(&lo, node.lo[a], sizeof lo);
+      std::memcpy(&hi, node.hi[a], sizeof hi);
+      const Lanes t0 = (lo - origin[a]) * invDir[a], t1 = (hi - origin[a]) * invDir[a];
+      // min and max written so that a NaN from 0·∞ in t0 or t1 never replaces near or far.
+      const Lanes tNear = t1 < t0 ? t1 : t0, tFar = t0 < t1 ? t1 : t0;
+      near = near < tNear ? tNear : near;
+      far = tFar < far ? tFar : far;
+    }
+    for (int k = 0; k < kWidth; ++k) {
+      entry[k] = k < node.size && near[k] <= far[k] * kFarScale<T> ? near[k] : std::numeric_limits<T>::infinity();
+    }
+  }
+
+  // Builds over `objects`, all of which must have bounds(), in O(n log n): a binary tree by the binned
+  // surface area heuristic, then collapsed to 4 children per node.
+  explicit Bvh(const std::vector<const Object<T>*>& objects);
+
+  // The closest hit strictly inside `range`, or `best` when nothing is closer. Equal t resolve to the lower
+  // object id, so the answer is the one a scan in file order gives (Scene::closestHit).
+  std::optional<Hit<T>> closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>> best) const;
+  // Whether any object has a hit strictly inside `range`.
+  bool occluded(const Ray<T>& ray, Interval<T> range) const;
+
+  const std::vector<Node>& nodes() const { return nodes_; }
+  const std::vector<const Object<T>*>& objects() const { return objects_; }
+
+  // The tree, one child per line, indented by depth: boxes, and object ids in the leaves.
+  void print(std::ostream& out) const;
+
+ private:
+  std::vector<Node> nodes_;               // nodes_[0] is the root; empty when there are no objects
+  std::vector<const Object<T>*> objects_;  // in leaf order
+};
+
+}  // namespace rt

@@ -1,0 +1,322 @@
+#include "raytrace/bvh.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <type_traits>
+#include <limits>
+#include <string>
+
+#include "raytrace/report.hpp"
+
+namespace rt {
+
+namespace {
+
+constexpr int kBins = 16;         // Wald 2007: 16 bins lose almost nothing against a full sweep
+constexpr int kMaxDepth = 64;     // deeper subtrees become leaves, so the traversal stack below is enough
+constexpr uint32_t kMaxLeaf = 4;  // a leaf this small may stay a leaf when no split pays
+// SAH cost of one node visit (two box tests) relative to one object test; measured with raytrace_bench.
+constexpr double kTraversalCost = 1.0;
+
+template <class T> Vec3<T> centroid(const Aabb<T>& b) { return (b.min + b.max) * T(0.5); }
+
+template <class T> double area(const Aabb<T>& b) {
+  const glm::dvec3 e = glm::dvec3(b.max) - glm::dvec3(b.min);
+  return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+// The object's box, grown so that no hit its intersect() reports can fall outside it. A computed t is off by
+// at most 1e-3 of the object's size (chooseArithmetic's budget, stability.md §1.1), and the corners
+// themselves are rounded; both margins are tiny next to the box.
+template <class T> Aabb<T> paddedBounds(const Object<T>& object) {
+  Aabb<T> b = *object.bounds();
+  const Vec3<T> extent = b.max - b.min;
+  const T pad = T(1e-3) * std::max(extent.x, std::max(extent.y, extent.z)) +
+                T(64) * std::numeric_limits<T>::epsilon() * std::max(maxAbs(b.min), maxAbs(b.max));
+  b.min -= Vec3<T>(pad);
+  b.max += Vec3<T>(pad);
+  return b;
+}
+
+// The next representable value above t: the smallest limit that still admits a hit at exactly t. A hit's t is
+// positive, where this is one step of the bit pattern; std::nextafter covers the rest.
+template <class T> T nextUp(T t) {
+  using Bits = std::conditional_t<sizeof(T) == 4, uint32_t, uint64_t>;
+  constexpr T inf = std::numeric_limits<T>::infinity();
+  if (!(t > T(0) && t < inf)) return std::nextafter(t, inf);
+  Bits bits;
+  std::memcpy(&bits, &t, sizeof t);
+  ++bits;
+  std::memcpy(&t, &bits, sizeof t);
+  return t;
+}
+
+// The binary tree the 4-wide one is collapsed from. The two children of an inner node are stored side by
+// side, the first at `first`; a leaf holds order[first, first + count).
+template <class T> struct BinaryNode {
+  Aabb<T> box;
+  uint32_t first = 0;
+  uint32_t count = 0;  // 0 for an inner node
+};
+
+// Binned SAH build (Wald 2007); `order` receives the object indices in leaf order.
+template <class T>
+std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& objects, std::vector<uint32_t>& order) {
+  std::vector<Aabb<T>> boxes;
+  std::vector<Vec3<T>> centroids;
+  boxes.reserve(objects.size());
+  centroids.reserve(objects.size());
+  for (const Object<T>* o : objects) {
+    boxes.push_back(paddedBounds(*o));
+    centroids.push_back(centroid(boxes.back()));
+  }
+  order.resize(objects.size());
+  for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+
+  std::vector<BinaryNode<T>> nodes;
+  nodes.reserve(2 * objects.size() - 1);
+  nodes.push_back({{}, 0, uint32_t(objects.size())});
+  struct Task {
+    uint32_t node;
+    int depth;
+  };
+  std::vector<Task> tasks{{0, 0}};
+  while (!tasks.empty()) {
+    const Task task = tasks.back();
+    tasks.pop_back();
+    const uint32_t first = nodes[task.node].first, count = nodes[task.node].count;
+    Aabb<T> box, centres;
+    for (uint32_t i = first; i < first + count; ++i) {
+      box.expand(boxes[order[i]]);
+      centres.expand(centroids[order[i]]);
+    }
+    nodes[task.node].box = box;
+    if (count == 1 || task.depth >= kMaxDepth) continue;
+
+    // Bin the centroids along their longest extent and sweep the bin boundaries for the lowest surface area
+    // heuristic cost, kTraversalCost + (A_left·N_left + A_right·N_right) / A_node, against N for a leaf.
+    const Vec3<T> extent = centres.max - centres.min;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const T binScale = T(kBins) / extent[axis];
+    const auto binOf = [&](uint32_t object) {
+      return std::min(kBins - 1, int((centroids[object][axis] - centres.min[axis]) * binScale));
+    };
+    double bestCost = std::numeric_limits<double>::infinity();
+    int bestSplit = 0;
+    if (extent[axis] > T(0)) {
+      std::array<Aabb<T>, kBins> binBox;
+      std::array<uint32_t, kBins> binCount{};
+      for (uint32_t i = first; i < first + count; ++i) {
+        const int b = binOf(order[i]);
+        binBox[b].expand(boxes[order[i]]);
+        ++binCount[b];
+      }
+      // rightCost[s] is A·N of bins s..end, the right side of a split before bin s.
+      std::array<double, kBins> rightCost{};
+      Aabb<T> right;
+      uint32_t rightCount = 0;
+      for (int s = kBins - 1; s > 0; --s) {
+        right.expand(binBox[s]);
+        rightCount += binCount[s];
+        rightCost[s] = rightCount ? area(right) * rightCount : 0.0;
+      }
+      Aabb<T> left;
+      uint32_t leftCount = 0;
+      const double nodeArea = area(box);
+      for (int s = 1; s < kBins; ++s) {
+        left.expand(binBox[s - 1]);
+        leftCount += binCount[s - 1];
+        if (leftCount == 0 || leftCount == count) continue;
+        const double cost = kTraversalCost + (area(left) * leftCount + rightCost[s]) / nodeArea;
+        if (cost < bestCost) bestCost = cost, bestSplit = s;
+      }
+    }
+    if (count <= kMaxLeaf && !(bestCost < double(count))) continue;
+
+    uint32_t middle;
+    if (bestSplit > 0) {
+      const auto split = std::partition(order.begin() + first, order.begin() + first + count,
+                                        [&](uint32_t o) { return binOf(o) < bestSplit; });
+      middle = uint32_t(split - order.begin());
+    } else {
+      middle = first + count / 2;  // all centroids coincide: any halving is as good as another
+    }
+    const uint32_t left = uint32_t(nodes.size());
+    nodes.push_back(BinaryNode<T>{{}, first, middle - first});
+    nodes.push_back(BinaryNode<T>{{}, middle, first + count - middle});
+    nodes[task.node].first = left;
+    nodes[task.node].count = 0;
+    tasks.push_back({left, task.depth + 1});
+    tasks.push_back({left + 1, task.depth + 1});
+  }
+  return nodes;
+}
+
+}  // namespace
+
+template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
+  if (objects.empty()) return;
+  std::vector<uint32_t> order;
+  const std::vector<BinaryNode<T>> binary = buildBinary(objects, order);
+  objects_.reserve(objects.size());
+  for (uint32_t i : order) objects_.push_back(objects[i]);
+
+  // Collapse: a node takes its binary node's children, then, while it has room, replaces the inner child with
+  // the largest surface area by that child's two children (Wald et al. 2008).
+  struct Task {
+    uint32_t binary, node;
+  };
+  std::vector<Task> tasks{{0, 0}};
+  nodes_.emplace_back();
+  while (!tasks.empty()) {
+    const Task task = tasks.back();
+    tasks.pop_back();
+    std::vector<uint32_t> children;
+    if (binary[task.binary].count) {
+      children.push_back(task.binary);  // a root that is a leaf: one child
+    } else {
+      children = {binary[task.binary].first, binary[task.binary].first + 1};
+    }
+    while (children.size() < size_t(kWidth)) {
+      int widest = -1;
+      for (size_t c = 0; c < children.size(); ++c) {
+        const BinaryNode<T>& b = binary[children[c]];
+        if (!b.count && (widest < 0 || area(b.box) > area(binary[children[size_t(widest)]].box))) widest = int(c);
+      }
+      if (widest < 0) break;
+      const uint32_t split = binary[children[size_t(widest)]].first;
+      children[size_t(widest)] = split;
+      children.push_back(split + 1);
+    }
+    Node node;
+    node.size = int(children.size());
+    for (int k = 0; k < node.size; ++k) {
+      const BinaryNode<T>& b = binary[children[size_t(k)]];
+      for (int a = 0; a < 3; ++a) node.lo[a][k] = b.box.min[a], node.hi[a][k] = b.box.max[a];
+      node.count[k] = b.count;
+      node.first[k] = b.first;
+      if (!b.count) {
+        node.first[k] = uint32_t(nodes_.size());
+        nodes_.emplace_back();
+        tasks.push_back({children[size_t(k)], node.first[k]});
+      }
+    }
+    nodes_[task.node] = node;
+  }
+}
+
+template <class T>
+std::optional<Hit<T>> Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>> best) const {
+  if (nodes_.empty()) return best;
+  const Vec3<T> invDir = T(1) / ray.dir;
+  // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
+  T limit = best ? nextUp(best->t) : range.max;
+
+  // Children still to visit, nearest on top: at most kWidth − 1 more per level of the tree.
+  struct Pending {
+    T t;
+    uint32_t first, count;
+  };
+  std::array<Pending, kMaxDepth * kWidth> stack;
+  int size = 0;
+  stack[size++] = {range.min, 0, 0};
+  while (size > 0) {
+    const Pending p = stack[--size];
+    if (p.t > limit * kFarScale<T>) continue;  // entered beyond a hit found since it was pushed
+    if (p.count) {
+      for (uint32_t i = p.first; i < p.first + p.count; ++i) {
+        const Object<T>* object = objects_[i];
+        auto hit = object->intersect(ray, Interval<T>{range.min, limit});
+        if (hit && (!best || hit->t < best->t || object->id() < best->object->id())) {
+          best = hit;
+          limit = nextUp(hit->t);
+        }
+      }
+      continue;
+    }
+    const Node& node = nodes_[p.first];
+    T entry[kWidth];
+    entries(node, ray.origin, invDir, range.min, limit, entry);
+    // Push the children that the ray enters, farthest first, so that the nearest is visited next and its
+    // hits cut off the others (insertion into the sorted top of the stack).
+    const int base = size;
+    for (int k = 0; k < node.size; ++k) {
+      if (entry[k] == std::numeric_limits<T>::infinity()) continue;
+      int at = size++;
+      while (at > base && stack[at - 1].t < entry[k]) stack[at] = stack[at - 1], --at;
+      stack[at] = {entry[k], node.first[k], node.count[k]};
+    }
+  }
+  return best;
+}
+
+template <class T> bool Bvh<T>::occluded(const Ray<T>& ray, Interval<T> range) const {
+  if (nodes_.empty()) return false;
+  const Vec3<T> invDir = T(1) / ray.dir;
+  std::array<uint32_t, kMaxDepth * kWidth> stack;
+  int size = 0;
+  stack[size++] = 0;
+  while (size > 0) {
+    const Node& node = nodes_[stack[--size]];
+    T entry[kWidth];
+    entries(node, ray.origin, invDir, range.min, range.max, entry);
+    for (int k = 0; k < node.size; ++k) {
+      if (entry[k] == std::numeric_limits<T>::infinity()) continue;
+      if (!node.count[k]) {
+        stack[size++] = node.first[k];
+        continue;
+      }
+      for (uint32_t i = node.first[k]; i < node.first[k] + node.count[k]; ++i) {
+        if (objects_[i]->intersect(ray, range)) return true;
+      }
+    }
+  }
+  return false;
+}
+
+template <class T> void Bvh<T>::print(std::ostream& out) const {
+  size_t leaves = 0, largest = 0;
+  for (const Node& n : nodes_) {
+    for (int k = 0; k < n.size; ++k) {
+      if (n.count[k]) ++leaves, largest = std::max<size_t>(largest, n.count[k]);
+    }
+  }
+  out << "BVH: " << objects_.size() << " objects, " << nodes_.size() << " nodes of up to " << kWidth
+      << " children, " << leaves << " leaves, largest leaf " << largest << "\n";
+  const auto line = [&](int depth, const char* what, const Aabb<T>& box) {
+    out << std::string(size_t(2 * depth), ' ') << what << braces(glm::dvec3(box.min)) << " - "
+        << braces(glm::dvec3(box.max));
+  };
+  struct Item {
+    uint32_t node;
+    int depth;
+  };
+  std::vector<Item> stack;
+  if (!nodes_.empty()) stack.push_back({0, 0});
+  while (!stack.empty()) {
+    const Item item = stack.back();
+    stack.pop_back();
+    const Node& n = nodes_[item.node];
+    Aabb<T> box;
+    for (int k = 0; k < n.size; ++k) box.expand(n.box(k));
+    line(item.depth, ("Node " + std::to_string(item.node) + ": ").c_str(), box);
+    out << "\n";
+    for (int k = n.size - 1; k >= 0; --k) {
+      if (!n.count[k]) stack.push_back({n.first[k], item.depth + 1});
+    }
+    for (int k = 0; k < n.size; ++k) {
+      if (!n.count[k]) continue;
+      line(item.depth + 1, "Leaf: ", n.box(k));
+      out << " objects";
+      for (uint32_t i = n.first[k]; i < n.first[k] + n.count[k]; ++i) out << " " << objects_[i]->id();
+      out << "\n";
+    }
+  }
+}
+
+template class Bvh<float>;
+template class Bvh<double>;
+
+}  // namespace rt

@@ -1,0 +1,195 @@
+#include <catch2/catch.hpp>
+
+#include <random>
+#include <set>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "raytrace/bvh.hpp"
+#include "raytrace/scene.hpp"
+
+namespace {
+
+using rt::Hierarchy;
+
+rt::ObjectDesc sphereDesc(glm::dvec3 center, double radius) {
+  rt::ObjectDesc o;
+  o.shape = rt::SphereDesc{center, radius};
+  return o;
+}
+
+// Random spheres, some repeated exactly (ties), some nested, some scaled into ellipsoids, and two planes.
+rt::SceneDesc randomScene(std::mt19937& rng, int count) {
+  std::uniform_real_distribution<double> pos(-10, 10), radius(0.05, 2), unit(0, 1);
+  rt::SceneDesc desc;
+  for (int i = 0; i < count; ++i) {
+    if (i > 0 && unit(rng) < 0.1) {
+      desc.objects.push_back(desc.objects[size_t(i - 1)]);  // the same sphere again: every hit is a tie
+      continue;
+    }
+    rt::ObjectDesc o = sphereDesc({pos(rng), pos(rng), pos(rng)}, radius(rng));
+    if (unit(rng) < 0.2) {
+      o.shape = rt::SphereDesc{{0, 0, 0}, 1};
+      o.worldFromObject = glm::scale(glm::translate(glm::dmat4(1), {pos(rng), pos(rng), pos(rng)}),
+                                     {radius(rng), radius(rng), radius(rng)});
+    }
+    desc.objects.push_back(o);
+  }
+  rt::ObjectDesc floor;
+  floor.shape = rt::PlaneDesc{{0, 1, 0}, -9};
+  desc.objects.insert(desc.objects.begin() + count / 2, floor);
+  rt::ObjectDesc wall;
+  wall.shape = rt::PlaneDesc{{1, 0, 1}, 11};
+  desc.objects.push_back(wall);
+  return desc;
+}
+
+template <class T> rt::Vec3<T> randomUnit(std::mt19937& rng) {
+  std::normal_distribution<double> n;
+  return rt::Vec3<T>(glm::normalize(glm::dvec3(n(rng), n(rng), n(rng))));
+}
+
+template <class T> void requireSame(const std::optional<rt::Hit<T>>& a, const std::optional<rt::Hit<T>>& b) {
+  REQUIRE(bool(a) == bool(b));
+  if (!a) return;
+  REQUIRE(a->t == b->t);
+  REQUIRE(a->object->id() == b->object->id());
+  REQUIRE(a->point == b->point);
+  REQUIRE(a->normal == b->normal);
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("the hierarchy finds exactly the hit a scan in file order finds", "[bvh]", float, double) {
+  using T = TestType;
+  const rt::Arithmetic arithmetic{std::is_same_v<T, float> ? rt::Precision::Float : rt::Precision::Double,
+                                  rt::SphereMethod::Robust};
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    CAPTURE(seed);
+    std::mt19937 rng(seed);
+    const rt::SceneDesc desc = randomScene(rng, int(seed) * 10);
+    const rt::Scene<T> flat(desc, arithmetic, Hierarchy::Never);
+    const rt::Scene<T> tree(desc, arithmetic, Hierarchy::Always);
+    REQUIRE(!flat.hierarchy());
+    REQUIRE(tree.hierarchy());
+    std::uniform_real_distribution<double> pos(-15, 15), unit(0, 1);
+    for (int i = 0; i < 2000; ++i) {
+      CAPTURE(i);
+      rt::Ray<T> ray{rt::Vec3<T>(pos(rng), pos(rng), pos(rng)), randomUnit<T>(rng)};
+      if (i % 2 == 0) {
+        // Aim just past the edge of a sphere, where a hit is decided by rounding: the grazing rays a loose
+        // box test would cull.
+        // The line from the origin through c + s·side passes at r' = s·D/√(D² + s²) from the centre c.
+        const auto& object = desc.objects[size_t(i / 2) % desc.objects.size()];
+        const auto* s = std::get_if<rt::SphereDesc>(&object.shape);
+        const glm::dvec3 toCenter = s ? s->center - glm::dvec3(ray.origin) : glm::dvec3(0);
+        const double miss = s ? s->radius * (1 + (unit(rng) - 0.5) * 1e-6) : 0;
+        const double d = glm::length(toCenter);
+        if (s && object.worldFromObject == glm::dmat4(1) && d > 2 * miss) {
+          const glm::dvec3 side = glm::normalize(glm::cross(toCenter, glm::dvec3(1, 2, 3)));
+          const glm::dvec3 target = s->center + side * (miss * d / std::sqrt(d * d - miss * miss));
+          ray.dir = rt::Vec3<T>(glm::normalize(target - glm::dvec3(ray.origin)));
+        }
+      }
+      if (i % 7 == 3) {
+        // Parallel to an axis (with a signed zero elsewhere) from a point on the plane of a sphere's extreme
+        // point: the 0·∞ cases of the slab test.
+        const auto& object = desc.objects[size_t(i) % desc.objects.size()];
+        if (const auto* s = std::get_if<rt::SphereDesc>(&object.shape)) {
+          const int axis = i % 3;
+          ray.origin[axis] = T(s->center[axis] + (i % 2 ? s->radius : -s->radius));
+          ray.dir = rt::Vec3<T>(T(0));
+          ray.dir[(axis + 1) % 3] = i % 4 == 3 ? T(-1) : T(1);
+          ray.dir[(axis + 2) % 3] = T(-0.0);
+        }
+      }
+      const rt::Interval<T> range{T(0), i % 3 == 0 ? T(std::abs(pos(rng))) : std::numeric_limits<T>::infinity()};
+      requireSame(flat.closestHit(ray, range), tree.closestHit(ray, range));
+      REQUIRE(flat.occluded(ray, range) == tree.occluded(ray, range));
+    }
+  }
+}
+
+TEST_CASE("equal t resolve to the object that comes first in the file", "[bvh]") {
+  rt::SceneDesc desc;
+  for (int i = 0; i < 50; ++i) desc.objects.push_back(sphereDesc({(i % 5) * 3.0, 0, -10}, 1));
+  const rt::Scene<float> tree(desc, {rt::Precision::Float, rt::SphereMethod::Robust}, Hierarchy::Always);
+  for (int k = 0; k < 5; ++k) {
+    const rt::Ray<float> ray{{k * 3.0f, 0, 0}, {0, 0, -1}};
+    const auto hit = tree.closestHit(ray, {});
+    REQUIRE(hit);
+    CHECK(hit->t == 9.0f);
+    CHECK(hit->object->id() == k + 1);
+  }
+}
+
+TEST_CASE("the tree holds every bounded object once, inside nested boxes", "[bvh]") {
+  std::mt19937 rng(7);
+  const rt::SceneDesc desc = randomScene(rng, 300);
+  const rt::Scene<double> scene(desc, {rt::Precision::Double, rt::SphereMethod::Robust}, Hierarchy::Always);
+  const rt::Bvh<double>& bvh = *scene.hierarchy();
+  REQUIRE(bvh.objects().size() == desc.objects.size() - 2);  // the two planes stay outside
+  std::set<int> ids;
+  for (const auto* o : bvh.objects()) ids.insert(o->id());
+  CHECK(ids.size() == bvh.objects().size());
+  const auto contains = [](const rt::Aabb<double>& outer, const rt::Aabb<double>& inner) {
+    return glm::all(glm::lessThanEqual(outer.min, inner.min)) && glm::all(glm::lessThanEqual(inner.max, outer.max));
+  };
+  for (const auto& node : bvh.nodes()) {
+    for (int k = 0; k < node.size; ++k) {
+      for (uint32_t i = node.first[k]; i < node.first[k] + node.count[k]; ++i) {
+        CHECK(contains(node.box(k), *bvh.objects()[i]->bounds()));
+      }
+      if (node.count[k]) continue;
+      const auto& child = bvh.nodes()[node.first[k]];
+      for (int c = 0; c < child.size; ++c) CHECK(contains(node.box(k), child.box(c)));
+    }
+  }
+}
+
+TEST_CASE("a hierarchy is built only where it pays", "[bvh]") {
+  rt::SceneDesc desc;
+  for (int i = 0; i < 3; ++i) desc.objects.push_back(sphereDesc({i * 3.0, 0, 0}, 1));
+  const rt::Arithmetic arithmetic{rt::Precision::Float, rt::SphereMethod::Robust};
+  CHECK(!rt::Scene<float>(desc, arithmetic).hierarchy());
+  while (desc.objects.size() < rt::kHierarchyMinObjects) desc.objects.push_back(sphereDesc({0, 5, 0}, 1));
+  CHECK(rt::Scene<float>(desc, arithmetic).hierarchy());
+  CHECK(!rt::Scene<float>(desc, arithmetic, Hierarchy::Never).hierarchy());
+}
+
+TEST_CASE("coincident objects still split into small leaves", "[bvh]") {
+  rt::SceneDesc desc;
+  for (int i = 0; i < 1000; ++i) desc.objects.push_back(sphereDesc({1, 2, 3}, 1));
+  const rt::Scene<float> scene(desc, {rt::Precision::Float, rt::SphereMethod::Robust}, Hierarchy::Always);
+  for (const auto& node : scene.hierarchy()->nodes()) {
+    for (int k = 0; k < node.size; ++k) CHECK(node.count[k] <= 4);
+  }
+  const auto hit = scene.closestHit({{1, 2, 10}, {0, 0, -1}}, {});
+  REQUIRE(hit);
+  CHECK(hit->object->id() == 1);
+}
+
+TEST_CASE("an empty hierarchy answers nothing", "[bvh]") {
+  const rt::Bvh<float> empty({});
+  const rt::Ray<float> ray{{0, 0, 0}, {0, 0, -1}};
+  CHECK(!empty.closestHit(ray, {}, std::nullopt));
+  CHECK(!empty.occluded(ray, {}));
+  std::ostringstream out;
+  empty.print(out);
+  CHECK(out.str() == "BVH: 0 objects, 0 nodes of up to 4 children, 0 leaves, largest leaf 0\n");
+}
+
+TEST_CASE("printbvh shows each node's box and the object ids in the leaves", "[bvh]") {
+  rt::SceneDesc desc;
+  desc.objects.push_back(sphereDesc({0, 0, 0}, 1));
+  desc.objects.push_back(sphereDesc({10, 0, 0}, 1));
+  const rt::Scene<double> scene(desc, {rt::Precision::Double, rt::SphereMethod::Robust}, Hierarchy::Always);
+  std::ostringstream out;
+  scene.hierarchy()->print(out);
+  CHECK(out.str() ==
+        "BVH: 2 objects, 1 nodes of up to 4 children, 2 leaves, largest leaf 1\n"
+        "Node 0: {-1.0020 -1.0020 -1.0020} - {11.0020 1.0020 1.0020}\n"
+        "  Leaf: {-1.0020 -1.0020 -1.0020} - {1.0020 1.0020 1.0020} objects 1\n"
+        "  Leaf: {8.9980 -1.0020 -1.0020} - {11.0020 1.0020 1.0020} objects 2\n");
+}
