@@ -3,7 +3,7 @@
 
     bench/compare_povray.py [--bin build/raytrace] [--runs 3] [--threads 2] [--size 1280x960]
 
-Every scene of /work/shared/bench (regenerated into a work directory by its gen.py, so that the large one
+Every scene of ../shared/bench (regenerated into a work directory by its gen.py, so that the large one
 need not be committed) is rendered by `raytrace render` and by `povray`, without anti-aliasing and with 3x3
 supersampling (our -ss=3 against POV-Ray's +A0.0 +AM1 +R3), on the same number of threads. The runs are
 interleaved (ours, POV-Ray, ours, ...) so that a change in machine load hits both alike. Wall time is what
@@ -20,7 +20,7 @@ import subprocess
 import sys
 import time
 
-SHARED = "/work/shared"
+SHARED = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "shared")  # beside the repo
 GEN = os.path.join(SHARED, "bench", "gen.py")
 POVREF = os.path.join(SHARED, "tools", "povref", "povref.py")
 SCENES = ("small", "spheres1k", "spheres20k")

@@ -3,7 +3,7 @@
 
     bench/scaling.py [--bin build/raytrace] [--runs 3] [--threads 2] [--size 1280x960]
 
-Each scene is a jittered field of n spheres on a plane under one light, like /work/shared/bench/spheres20k.pov,
+Each scene is a jittered field of n spheres on a plane under one light, like ../shared/bench/spheres20k.pov,
 with radii ∝ 1/√n so that the spheres cover about the same share of the picture whatever n; the files are
 generated into the work directory (the largest is about 150 MB) and never committed. For each n the script
 times, as medians of interleaved runs, the whole render and the same command at 1×1 pixel: the fixed cost

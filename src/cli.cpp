@@ -3,7 +3,9 @@
 #include <cerrno>
 #include <cstdlib>
 #include <functional>
+#include <initializer_list>
 #include <limits>
+#include <utility>
 
 #include <unistd.h>
 
@@ -58,34 +60,46 @@ int parseInt(const std::string& s, const char* what, int lo, int hi) {
   return int(v);
 }
 
+// The value of `--flag=value` among `names`, or an error listing them: "--flag must be a, b or c, found 'v'".
+template <class E>
+E choice(const char* flag, const std::string& value, std::initializer_list<std::pair<const char*, E>> names) {
+  std::string list;
+  size_t i = 0;
+  for (const auto& [name, e] : names) {
+    if (value == name) return e;
+    list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + std::string(name);
+    ++i;
+  }
+  throw Error(std::string(flag) + " must be " + list + ", found '" + value + "'");
+}
+
 Options parseFlag(const std::string& flag, Options o) {
   const auto value = [&](const std::string& name) -> const char* {
     return flag.rfind(name + "=", 0) == 0 ? flag.c_str() + name.size() + 1 : nullptr;
   };
   if (flag == "-sds") return o;  // the course's "use a hierarchy": ours decides per scene (Scene, Hierarchy)
   if (const char* p = value("--precision")) {
-    const std::string v = p;
-    if (v == "float") o.arithmetic.precision = Precision::Float;
-    else if (v == "double") o.arithmetic.precision = Precision::Double;
-    else if (v == "auto") o.arithmetic.precision = Precision::Auto;
-    else throw Error("--precision must be float, double or auto, found '" + v + "'");
+    o.arithmetic.precision = choice<Precision>("--precision", p,
+                                               {{"float", Precision::Float}, {"double", Precision::Double},
+                                                {"auto", Precision::Auto}});
     return o;
   }
   if (const char* p = value("--sphere")) {
-    const std::string v = p;
-    if (v == "textbook") o.arithmetic.sphere = SphereMethod::Textbook;
-    else if (v == "robust") o.arithmetic.sphere = SphereMethod::Robust;
-    else if (v == "auto") o.arithmetic.sphere = SphereMethod::Auto;
-    else throw Error("--sphere must be textbook, robust or auto, found '" + v + "'");
+    o.arithmetic.sphere = choice<SphereMethod>("--sphere", p,
+                                               {{"textbook", SphereMethod::Textbook},
+                                                {"robust", SphereMethod::Robust}, {"auto", SphereMethod::Auto}});
     return o;
   }
   if (const char* p = value("--offset")) {
-    const std::string v = p;
-    if (v == "course") o.offset = OffsetPolicy::Course;
-    else if (v == "relative") o.offset = OffsetPolicy::Relative;
-    else if (v == "normal") o.offset = OffsetPolicy::FixedNormal;
-    else if (v == "wb") o.offset = OffsetPolicy::WaechterBinder;
-    else throw Error("--offset must be relative, course, normal or wb, found '" + v + "'");
+    o.offset = choice<OffsetPolicy>("--offset", p,
+                                    {{"relative", OffsetPolicy::Relative}, {"course", OffsetPolicy::Course},
+                                     {"normal", OffsetPolicy::FixedNormal}, {"wb", OffsetPolicy::WaechterBinder}});
+    return o;
+  }
+  if (const char* p = value("--hierarchy")) {
+    o.hierarchy = choice<Hierarchy>("--hierarchy", p,
+                                    {{"auto", Hierarchy::Auto}, {"always", Hierarchy::Always},
+                                     {"never", Hierarchy::Never}});
     return o;
   }
   if (const char* p = value("--depth")) {
@@ -94,14 +108,6 @@ Options parseFlag(const std::string& flag, Options o) {
   }
   if (const char* p = value("-ss")) {
     o.samples = parseInt(p, "-ss", 1, 64);
-    return o;
-  }
-  if (const char* p = value("--hierarchy")) {
-    const std::string v = p;
-    if (v == "auto") o.hierarchy = Hierarchy::Auto;
-    else if (v == "always") o.hierarchy = Hierarchy::Always;
-    else if (v == "never") o.hierarchy = Hierarchy::Never;
-    else throw Error("--hierarchy must be auto, always or never, found '" + v + "'");
     return o;
   }
   if (const char* p = value("--threads")) {

@@ -32,7 +32,8 @@ SCENES = [
     ("S3 glass between mirrors", "scenes/stability/s3_glass_mirrors.pov"),
     ("S4 = S1 moved by 1e4", "scenes/stability/s4_far.pov"),
 ]
-BASE = {"precision": "double", "sphere": "robust", "offset": "relative", "ss": "4", "depth": "8"}
+BASE = {"precision": "double", "sphere": "robust", "offset": "relative", "ss": "4", "depth": "8",
+        "hierarchy": "auto"}
 REFERENCE = dict(BASE, ss="8", depth="32")
 # One knob at a time (stability.md §3). Float is paired with each sphere formula and with the offsets whose
 # failure float exposes first.
@@ -54,14 +55,17 @@ KNOBS = [
     ("depth", {"depth": "3"}),
     ("depth", {"depth": "5"}),
     ("depth", {"depth": "16"}),
+    # These scenes are below the hierarchy's crossover, so auto means none: forcing one must only move time.
+    ("hierarchy", {"hierarchy": "always"}),
 ]
 COLOURS = {"baseline": "black", "precision": "tab:red", "sphere": "tab:purple", "offset": "tab:orange",
-           "samples": "tab:blue", "depth": "tab:green"}
+           "samples": "tab:blue", "depth": "tab:green", "hierarchy": "tab:brown"}
 
 
 def flags(config):
     return [f"--precision={config['precision']}", f"--sphere={config['sphere']}",
-            f"--offset={config['offset']}", f"-ss={config['ss']}", f"--depth={config['depth']}"]
+            f"--offset={config['offset']}", f"-ss={config['ss']}", f"--depth={config['depth']}",
+            f"--hierarchy={config['hierarchy']}"]
 
 
 def label(config):
