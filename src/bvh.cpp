@@ -191,6 +191,12 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
       children.push_back(split + 1);
     }
     Node node;
+    for (int a = 0; a < 3; ++a) {
+      std::fill(node.lo[a], node.lo[a] + kWidth, std::numeric_limits<T>::infinity());
+      std::fill(node.hi[a], node.hi[a] + kWidth, std::numeric_limits<T>::infinity());
+    }
+    std::fill(node.first, node.first + kWidth, 0u);
+    std::fill(node.count, node.count + kWidth, 0u);
     node.size = int(children.size());
     for (int k = 0; k < node.size; ++k) {
       const BinaryNode<T>& b = binary[children[size_t(k)]];
@@ -214,19 +220,17 @@ std::optional<Hit<T>> Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, s
   // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
   T limit = best ? nextUp(best->t) : range.max;
 
-  // Children still to visit, nearest on top: at most kWidth − 1 more per level of the tree.
+  // The child being visited and those still to visit, nearest on top: at most kWidth − 1 more per level.
   struct Pending {
     T t;
     uint32_t first, count;
   };
   std::array<Pending, kMaxDepth * kWidth> stack;
   int size = 0;
-  stack[size++] = {range.min, 0, 0};
-  while (size > 0) {
-    const Pending p = stack[--size];
-    if (p.t > limit * kFarScale<T>) continue;  // entered beyond a hit found since it was pushed
-    if (p.count) {
-      for (uint32_t i = p.first; i < p.first + p.count; ++i) {
+  Pending current{range.min, 0, 0};
+  for (;;) {
+    if (current.count) {
+      for (uint32_t i = current.first; i < current.first + current.count; ++i) {
         const Object<T>* object = objects_[i];
         auto hit = object->intersect(ray, Interval<T>{range.min, limit});
         if (hit && (!best || hit->t < best->t || object->id() < best->object->id())) {
@@ -234,26 +238,36 @@ std::optional<Hit<T>> Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, s
           limit = nextUp(hit->t);
         }
       }
-      continue;
+    } else {
+      const Node& node = nodes_[current.first];
+      T entry[kWidth];
+      unsigned mask = entries(node, ray.origin, invDir, range.min, limit, entry);
+      if (mask) {
+        // Visit the nearest child next; push the others farthest first so that the stack stays sorted
+        // (insertion into its top) and the hits of nearer children cut off the farther ones.
+        int k = __builtin_ctz(mask);
+        Pending nearest{entry[k], node.first[k], node.count[k]};
+        for (mask &= mask - 1; mask; mask &= mask - 1) {
+          k = __builtin_ctz(mask);
+          Pending other{entry[k], node.first[k], node.count[k]};
+          if (other.t < nearest.t) std::swap(other, nearest);
+          int at = size++;
+          while (at > 0 && stack[at - 1].t < other.t && stack[at - 1].t >= nearest.t) stack[at] = stack[at - 1], --at;
+          stack[at] = other;
+        }
+        current = nearest;
+        continue;
+      }
     }
-    const Node& node = nodes_[p.first];
-    T entry[kWidth];
-    entries(node, ray.origin, invDir, range.min, limit, entry);
-    // Push the children that the ray enters, farthest first, so that the nearest is visited next and its
-    // hits cut off the others (insertion into the sorted top of the stack).
-    const int base = size;
-    for (int k = 0; k < node.size; ++k) {
-      if (entry[k] == std::numeric_limits<T>::infinity()) continue;
-      int at = size++;
-      while (at > base && stack[at - 1].t < entry[k]) stack[at] = stack[at - 1], --at;
-      stack[at] = {entry[k], node.first[k], node.count[k]};
-    }
+    do {  // skip what the ray enters beyond a hit found since it was pushed
+      if (size == 0) return best;
+      current = stack[--size];
+    } while (current.t > limit * kFarScale<T>);
   }
-  return best;
 }
 
-template <class T> bool Bvh<T>::occluded(const Ray<T>& ray, Interval<T> range) const {
-  if (nodes_.empty()) return false;
+template <class T> const Object<T>* Bvh<T>::blocker(const Ray<T>& ray, Interval<T> range) const {
+  if (nodes_.empty()) return nullptr;
   const Vec3<T> invDir = T(1) / ray.dir;
   std::array<uint32_t, kMaxDepth * kWidth> stack;
   int size = 0;
@@ -261,19 +275,18 @@ template <class T> bool Bvh<T>::occluded(const Ray<T>& ray, Interval<T> range) c
   while (size > 0) {
     const Node& node = nodes_[stack[--size]];
     T entry[kWidth];
-    entries(node, ray.origin, invDir, range.min, range.max, entry);
-    for (int k = 0; k < node.size; ++k) {
-      if (entry[k] == std::numeric_limits<T>::infinity()) continue;
+    for (unsigned mask = entries(node, ray.origin, invDir, range.min, range.max, entry); mask; mask &= mask - 1) {
+      const int k = __builtin_ctz(mask);
       if (!node.count[k]) {
         stack[size++] = node.first[k];
         continue;
       }
       for (uint32_t i = node.first[k]; i < node.first[k] + node.count[k]; ++i) {
-        if (objects_[i]->intersect(ray, range)) return true;
+        if (objects_[i]->intersect(ray, range)) return objects_[i];
       }
     }
   }
-  return false;
+  return nullptr;
 }
 
 template <class T> void Bvh<T>::print(std::ostream& out) const {

@@ -222,7 +222,7 @@ std::string bytes(const Color& c, Conventions::ToByte mode) {
 // The pixel's shaded colour with its eye ray and first hit (§a.2); with -ss, the first sub-sample's ray.
 int pixelcolor(const Invocation& inv, std::ostream& out) {
   return withScene(inv, [&](const auto& scene, const auto& camera) {
-    const Tracer tracer(scene, inv.options);
+    Tracer tracer(scene, inv.options);
     std::vector<RayRecord> trees;
     const Color color = tracer.pixel(camera, inv.x, inv.y, &trees);
     const RayRecord& eye = trees.front();
@@ -241,7 +241,7 @@ int pixelcolor(const Invocation& inv, std::ostream& out) {
 // Every ray the pixel's colour is made of: printrays (§a.3) or, decorated with shadow rays, pixeltrace (§a.9).
 int rayTrees(const Invocation& inv, std::ostream& out, bool decorated) {
   return withScene(inv, [&](const auto& scene, const auto& camera) {
-    const Tracer tracer(scene, inv.options);
+    Tracer tracer(scene, inv.options);
     std::vector<RayRecord> trees;
     const Color color = tracer.pixel(camera, inv.x, inv.y, &trees);
     printRayTrees(out, inv.x, inv.y, bytes(color, inv.scene.conventions.toByte), trees, decorated);

@@ -111,11 +111,19 @@ std::optional<Hit<T>> Scene<T>::closestHit(const Ray<T>& ray, Interval<T> range)
   return hierarchy_ ? hierarchy_->closestHit(ray, range, closest) : closest;
 }
 
-template <class T> bool Scene<T>::occluded(const Ray<T>& ray, Interval<T> range) const {
+template <class T>
+bool Scene<T>::occluded(const Ray<T>& ray, Interval<T> range, const Object<T>** lastBlocker) const {
+  if (lastBlocker && *lastBlocker && (*lastBlocker)->intersect(ray, range)) return true;
+  const Object<T>* blocker = nullptr;
   for (const Object<T>* object : scanned_) {
-    if (object->intersect(ray, range)) return true;
+    if (object->intersect(ray, range)) {
+      blocker = object;
+      break;
+    }
   }
-  return hierarchy_ && hierarchy_->occluded(ray, range);
+  if (!blocker && hierarchy_) blocker = hierarchy_->blocker(ray, range);
+  if (lastBlocker && blocker) *lastBlocker = blocker;
+  return blocker != nullptr;
 }
 
 template class Scene<float>;

@@ -32,7 +32,10 @@ float specularBound(const Material& m, Brdf brdf) {
 // Lmax and Σ weight·tint ≤ G, the largest ((1−f)k + f)·max(1, C) of the scene's materials.
 template <class T>
 Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
-    : scene_(scene), options_(options), conventions_(scene.desc().conventions) {
+    : scene_(scene),
+      options_(options),
+      conventions_(scene.desc().conventions),
+      lastBlocker_(scene.lights().size(), nullptr) {
   if (options.depth) conventions_.maxDepth = *options.depth;
   float localMax = 0, gain = 0;
   for (const auto& object : scene.objects()) {
@@ -59,7 +62,7 @@ template <class T> bool Tracer<T>::matters(float weight, int depth) const {
 }
 
 template <class T>
-Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees) const {
+Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees) {
   const int n = options_.samples;
   Color sum(0);
   for (int i = 0; i < n; ++i) {
@@ -73,7 +76,7 @@ Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRec
 
 template <class T>
 typename Tracer<T>::Traced Tracer<T>::trace(const Ray<T>& ray, RayRecord::Kind kind, int depth, float weight,
-                                            RayRecord* record) const {
+                                            RayRecord* record) {
   if (record) {
     record->kind = kind;
     record->origin = glm::dvec3(ray.origin);
@@ -91,7 +94,7 @@ typename Tracer<T>::Traced Tracer<T>::trace(const Ray<T>& ray, RayRecord::Kind k
 }
 
 template <class T>
-Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float weight, RayRecord* record) const {
+Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float weight, RayRecord* record) {
   const Material& m = hit.object->material();
   if (record) {
     record->hit = true;
@@ -166,10 +169,11 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float we
 
 template <class T>
 typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v,
-                                            RayRecord* record) const {
+                                            RayRecord* record) {
   const Material& m = hit.object->material();
   Local sum;
-  for (const Light<T>& light : scene_.lights()) {
+  for (size_t i = 0; i < scene_.lights().size(); ++i) {
+    const Light<T>& light = scene_.lights()[i];
     const Vec3<T> toLight = light.position - hit.point;
     const T distance = glm::length(toLight);
     if (!(distance > T(0))) continue;  // a light on the surface has no direction
@@ -180,7 +184,7 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
     const float nl = float(glm::dot(n, l));
     if (!(nl > 0.0f)) continue;
     const auto [shadowRay, segment] = spawnRayTo(hit, light.position, options_.offset);
-    const bool blocked = scene_.occluded(shadowRay, segment);
+    const bool blocked = scene_.occluded(shadowRay, segment, &lastBlocker_[i]);
     if (record) record->shadows.push_back({glm::dvec3(shadowRay.origin), glm::dvec3(shadowRay.dir), blocked});
     if (blocked) continue;
     const float specular = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, l, m.exponent)

@@ -153,7 +153,7 @@ TEST_CASE("The recorded ray tree is the traced one: one chain of maxDepth reflec
   const SceneDesc desc = mirrorHall();
   const Scene<float> scene(desc, chooseArithmetic(desc));
   const Camera<float> camera(desc.camera, 1, 1);
-  const Tracer<float> tracer(scene, RenderOptions{});
+  Tracer<float> tracer(scene, RenderOptions{});
   std::vector<RayRecord> trees;
   const Color color = tracer.pixel(camera, 0, 0, &trees);
   REQUIRE(trees.size() == 1);

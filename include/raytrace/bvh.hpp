@@ -36,19 +36,20 @@ template <class T> class Bvh {
   struct Node {
     T lo[3][kWidth], hi[3][kWidth];  // [axis][child]
     uint32_t first[kWidth], count[kWidth];
-    int size = 0;
+    int size = 0;  // children in use; the boxes of the others are {+∞}
 
     Aabb<T> box(int k) const {
       return {{lo[0][k], lo[1][k], lo[2][k]}, {hi[0][k], hi[1][k], hi[2][k]}};
     }
   };
 
-  // Where the ray o + t·d enters each child's box within [tMin, tMax], +∞ where it misses; invDir is 1/d.
-  // The slab test (Kay & Kajiya 1986) for all children at once. A NaN from 0·∞ (origin on a slab plane, ray
-  // parallel to it) either leaves the bounds unchanged or rejects a ray lying in a face plane of the box,
+  // Where the ray o + t·d enters each child's box within [tMin, tMax], and a bit per child it enters; invDir is
+  // 1/d. The slab test (Kay & Kajiya 1986) for all children at once. A NaN from 0·∞ (origin on a slab plane,
+  // ray parallel to it) either leaves the bounds unchanged or rejects a ray lying in a face plane of the box,
   // which cannot reach the objects: they lie strictly inside their padded boxes (paddedBounds in bvh.cpp).
-  static void entries(const Node& node, const Vec3<T>& origin, const Vec3<T>& invDir, T tMin, T tMax,
-                      T (&entry)[kWidth]) {
+  // Unused child slots hold the box {+∞}, which every ray misses.
+  static unsigned entries(const Node& node, const Vec3<T>& origin, const Vec3<T>& invDir, T tMin, T tMax,
+                          T (&entry)[kWidth]) {
     // GCC/Clang vector extensions: one SIMD instruction per operation on all children.
     typedef T Lanes __attribute__((vector_size(kWidth * sizeof(T))));
     Lanes near = Lanes{} + tMin, far = Lanes{} + tMax, lo, hi;
@@ -61,9 +62,12 @@ template <class T> class Bvh {
       near = near < tNear ? tNear : near;
       far = tFar < far ? tFar : far;
     }
-    for (int k = 0; k < kWidth; ++k) {
-      entry[k] = k < node.size && near[k] <= far[k] * kFarScale<T> ? near[k] : std::numeric_limits<T>::infinity();
-    }
+    // An unused slot is entered at +∞, which only the near < ∞ test rejects when tMax is +∞ too.
+    const auto enters = (near <= far * kFarScale<T>) & (near < std::numeric_limits<T>::infinity());
+    std::memcpy(&entry, &near, sizeof entry);
+    unsigned mask = 0;
+    for (int k = 0; k < kWidth; ++k) mask |= enters[k] ? 1u << k : 0u;
+    return mask;
   }
 
   // Builds over `objects`, all of which must have bounds(), in O(n log n): a binary tree by the binned
@@ -73,8 +77,8 @@ template <class T> class Bvh {
   // The closest hit strictly inside `range`, or `best` when nothing is closer. Equal t resolve to the lower
   // object id, so the answer is the one a scan in file order gives (Scene::closestHit).
   std::optional<Hit<T>> closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>> best) const;
-  // Whether any object has a hit strictly inside `range`.
-  bool occluded(const Ray<T>& ray, Interval<T> range) const;
+  // An object with a hit strictly inside `range`, or nullptr: the any-hit query.
+  const Object<T>* blocker(const Ray<T>& ray, Interval<T> range) const;
 
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<const Object<T>*>& objects() const { return objects_; }

@@ -25,8 +25,11 @@ template <class T> class Scene {
   // The closest hit strictly inside `range` over all objects. Equal t resolve to the object that comes first
   // in the file, so results never depend on traversal order (stability.md F13).
   std::optional<Hit<T>> closestHit(const Ray<T>& ray, Interval<T> range) const;
-  // Whether anything at all lies strictly inside `range`: the any-hit query of shadow rays.
-  bool occluded(const Ray<T>& ray, Interval<T> range) const;
+  // Whether anything at all lies strictly inside `range`: the any-hit query of shadow rays. `lastBlocker`, when
+  // given, is the object that blocked the previous shadow ray toward the same light, tested first (neighbouring
+  // shadow rays are mostly blocked by the same object: the shadow cache of Haines & Greenberg, "The Light
+  // Buffer", 1986), and receives the blocker of this one. The answer is the same with or without it.
+  bool occluded(const Ray<T>& ray, Interval<T> range, const Object<T>** lastBlocker = nullptr) const;
 
   const SceneDesc& desc() const { return desc_; }
   const Arithmetic& arithmetic() const { return arithmetic_; }

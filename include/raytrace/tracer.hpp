@@ -14,12 +14,13 @@ namespace rt {
 
 template <class T> class Tracer {
  public:
-  // Reads the options and the scene's Conventions; `scene` must outlive the tracer.
+  // Reads the options and the scene's Conventions; `scene` must outlive the tracer. A tracer keeps a shadow
+  // cache, so each thread uses its own copy.
   Tracer(const Scene<T>& scene, const RenderOptions& options);
 
   // The colour of pixel (x, y): the float average of options.samples² stratified eye rays. With `trees`, the
   // ray tree of each eye ray is appended to it.
-  Color pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees = nullptr) const;
+  Color pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees = nullptr);
 
  private:
   struct Traced {
@@ -31,11 +32,11 @@ template <class T> class Tracer {
     Color diffuse{0}, specular{0};
   };
 
-  Traced trace(const Ray<T>& ray, RayRecord::Kind kind, int depth, float weight, RayRecord* record) const;
-  Color shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float weight, RayRecord* record) const;
+  Traced trace(const Ray<T>& ray, RayRecord::Kind kind, int depth, float weight, RayRecord* record);
+  Color shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float weight, RayRecord* record);
   // Diffuse and specular light from every light the point sees (§c.1, §c.7), before weighting. `n` is the
   // shading normal on the viewer's side, `v` the unit vector to the viewer.
-  Local direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v, RayRecord* record) const;
+  Local direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v, RayRecord* record);
   // Whether a secondary ray of accumulated weight `weight` at `depth` is worth tracing (stability.md F12).
   bool matters(float weight, int depth) const;
 
@@ -44,6 +45,7 @@ template <class T> class Tracer {
   Conventions conventions_;
   std::vector<float> bound_;  // bound_[r]: the brightest colour a ray with r levels of recursion left can return
   float cutoff_;
+  std::vector<const Object<T>*> lastBlocker_;  // per light: what blocked its latest shadow ray (Scene::occluded)
 };
 
 }  // namespace rt
