@@ -289,6 +289,136 @@ template <class T> const Object<T>* Bvh<T>::blocker(const Ray<T>& ray, Interval<
   return nullptr;
 }
 
+// The children of `node` that each ray of `rays` enters: childRays[k] has bit i set when ray i enters child k,
+// and childEntry[k] is the nearest of their entry distances.
+template <class T>
+void packetEntries(const typename Bvh<T>::Node& node, const Ray<T>* rays, const Vec3<T>* invDir, T tMin,
+                   const T* tMax, uint32_t mask, uint32_t (&childRays)[Bvh<T>::kWidth],
+                   T (&childEntry)[Bvh<T>::kWidth]) {
+  for (int k = 0; k < Bvh<T>::kWidth; ++k) childRays[k] = 0, childEntry[k] = std::numeric_limits<T>::infinity();
+  for (; mask; mask &= mask - 1) {
+    const int i = __builtin_ctz(mask);
+    T entry[Bvh<T>::kWidth];
+    for (unsigned m = Bvh<T>::entries(node, rays[i].origin, invDir[i], tMin, tMax[i], entry); m; m &= m - 1) {
+      const int k = __builtin_ctz(m);
+      childRays[k] |= 1u << i;
+      childEntry[k] = std::min(childEntry[k], entry[k]);
+    }
+  }
+}
+
+template <class T>
+void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const {
+  if (nodes_.empty() || n == 0) return;
+  Vec3<T> invDir[kPacket];
+  T limit[kPacket];
+  for (int i = 0; i < n; ++i) {
+    invDir[i] = T(1) / rays[i].dir;
+    limit[i] = best[i] ? nextUp(best[i]->t) : range.max;
+  }
+  // As in closestHit, with the rays that enter each child: the child the packet enters first is visited next.
+  struct Pending {
+    T t;
+    uint32_t first, count, rays;
+  };
+  std::array<Pending, kMaxDepth * kWidth> stack;
+  int size = 0;
+  Pending current{range.min, 0, 0, (1u << n) - 1};
+  for (;;) {
+    if (current.count) {
+      for (uint32_t o = current.first; o < current.first + current.count; ++o) {
+        const Object<T>* object = objects_[o];
+        for (uint32_t mask = current.rays; mask; mask &= mask - 1) {
+          const int i = __builtin_ctz(mask);
+          auto hit = object->intersect(rays[i], Interval<T>{range.min, limit[i]});
+          if (hit && (!best[i] || hit->t < best[i]->t || object->id() < best[i]->object->id())) {
+            best[i] = hit;
+            limit[i] = nextUp(hit->t);
+          }
+        }
+      }
+    } else {
+      uint32_t childRays[kWidth];
+      T childEntry[kWidth];
+      packetEntries<T>(nodes_[current.first], rays, invDir, range.min, limit, current.rays, childRays, childEntry);
+      const Node& node = nodes_[current.first];
+      const int base = size;
+      int nearest = -1;
+      for (int k = 0; k < kWidth; ++k) {
+        if (!childRays[k]) continue;
+        int later = k;
+        if (nearest < 0 || childEntry[k] < childEntry[nearest]) std::swap(later, nearest);
+        if (later < 0) continue;
+        int at = size++;
+        while (at > base && stack[at - 1].t < childEntry[later]) stack[at] = stack[at - 1], --at;
+        stack[at] = {childEntry[later], node.first[later], node.count[later], childRays[later]};
+      }
+      if (nearest >= 0) {
+        current = {childEntry[nearest], node.first[nearest], node.count[nearest], childRays[nearest]};
+        continue;
+      }
+    }
+    // Next, the nearest pending child that some of its rays may enter before their closest hits.
+    bool found = false;
+    while (!found) {
+      if (size == 0) return;
+      current = stack[--size];
+      for (uint32_t mask = current.rays; mask && !found; mask &= mask - 1) {
+        found = !(current.t > limit[__builtin_ctz(mask)] * kFarScale<T>);
+      }
+    }
+  }
+}
+
+template <class T>
+void Bvh<T>::blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active,
+                      const Object<T>** blockers) const {
+  if (nodes_.empty()) return;
+  Vec3<T> invDir[kPacket];
+  T tMax[kPacket];
+  for (uint32_t mask = active; mask; mask &= mask - 1) {
+    const int i = __builtin_ctz(mask);
+    invDir[i] = T(1) / rays[i].dir;
+    tMax[i] = ranges[i].max;
+  }
+  // Every ray has its own tMin; the smallest, tested against all, only admits more boxes, whose objects are
+  // then tested with each ray's own range.
+  T tMin = std::numeric_limits<T>::infinity();
+  for (uint32_t mask = active; mask; mask &= mask - 1) tMin = std::min(tMin, ranges[__builtin_ctz(mask)].min);
+  struct Pending {
+    uint32_t node, rays;
+  };
+  std::array<Pending, kMaxDepth * kWidth> stack;
+  int size = 0;
+  stack[size++] = {0, active};
+  while (size > 0) {
+    const Pending p = stack[--size];
+    const uint32_t live = p.rays & active;  // those not blocked yet
+    if (!live) continue;
+    const Node& node = nodes_[p.node];
+    uint32_t childRays[kWidth];
+    T childEntry[kWidth];
+    packetEntries<T>(node, rays, invDir, tMin, tMax, live, childRays, childEntry);
+    for (int k = 0; k < kWidth; ++k) {
+      if (!childRays[k]) continue;
+      if (!node.count[k]) {
+        stack[size++] = {node.first[k], childRays[k]};
+        continue;
+      }
+      for (uint32_t o = node.first[k]; o < node.first[k] + node.count[k]; ++o) {
+        for (uint32_t mask = childRays[k] & active; mask; mask &= mask - 1) {
+          const int i = __builtin_ctz(mask);
+          if (objects_[o]->intersect(rays[i], ranges[i])) {
+            blockers[i] = objects_[o];
+            active &= ~(1u << i);
+            if (!active) return;
+          }
+        }
+      }
+    }
+  }
+}
+
 template <class T> void Bvh<T>::print(std::ostream& out) const {
   size_t leaves = 0, largest = 0;
   for (const Node& n : nodes_) {

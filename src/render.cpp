@@ -33,9 +33,7 @@ Image render(const SceneDesc& desc, int width, int height, const RenderOptions& 
       const int x0 = tile % tilesX * kTile, y0 = tile / tilesX * kTile;
       const int x1 = std::min(width, x0 + kTile), y1 = std::min(height, y0 + kTile);
       Tracer<T> tileTracer = tracer;
-      for (int y = y0; y < y1; ++y) {
-        for (int x = x0; x < x1; ++x) image.at(x, y) = tileTracer.pixel(camera, x, y);
-      }
+      for (int y = y0; y < y1; ++y) tileTracer.block(camera, x0, y, x1, y + 1, image);
       progress.add(int64_t(x1 - x0) * (y1 - y0));
     });
   });

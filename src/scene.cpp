@@ -126,6 +126,46 @@ bool Scene<T>::occluded(const Ray<T>& ray, Interval<T> range, const Object<T>** 
   return blocker != nullptr;
 }
 
+template <class T>
+void Scene<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* hits) const {
+  for (int i = 0; i < n; ++i) {
+    hits[i].reset();
+    Interval<T> narrowed = range;
+    for (const Object<T>* object : scanned_) {
+      if (auto hit = object->intersect(rays[i], narrowed)) {
+        narrowed.max = hit->t;
+        hits[i] = hit;
+      }
+    }
+  }
+  if (hierarchy_) hierarchy_->closestHits(rays, n, range, hits);
+}
+
+template <class T>
+void Scene<T>::occluded(const Ray<T>* rays, const Interval<T>* ranges, int n, bool* blocked,
+                        const Object<T>** lastBlocker) const {
+  const Object<T>* blockers[Bvh<T>::kPacket] = {};
+  uint32_t open = 0;  // the rays that neither the cached blocker nor an unbounded object blocks
+  for (int i = 0; i < n; ++i) {
+    if (*lastBlocker && (*lastBlocker)->intersect(rays[i], ranges[i])) {
+      blockers[i] = *lastBlocker;
+      continue;
+    }
+    for (const Object<T>* object : scanned_) {
+      if (object->intersect(rays[i], ranges[i])) {
+        blockers[i] = object;
+        break;
+      }
+    }
+    if (!blockers[i]) open |= 1u << i;
+  }
+  if (open && hierarchy_) hierarchy_->blockers(rays, ranges, open, blockers);
+  for (int i = 0; i < n; ++i) {
+    blocked[i] = blockers[i] != nullptr;
+    if (blockers[i]) *lastBlocker = blockers[i];
+  }
+}
+
 template class Scene<float>;
 template class Scene<double>;
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 
 #include <glm/gtc/constants.hpp>
@@ -10,6 +11,11 @@
 namespace rt {
 
 namespace {
+
+// The normal on the side the ray arrives from: the shading normal.
+template <class T> Vec3<T> viewerSide(const Hit<T>& hit, const Ray<T>& ray) {
+  return glm::dot(ray.dir, hit.normal) <= T(0) ? hit.normal : -hit.normal;
+}
 
 float brightest(const Color& c) { return std::max(c.r, std::max(c.g, c.b)); }
 
@@ -74,27 +80,85 @@ Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRec
   return sum / float(n * n);
 }
 
+template <class T> void Tracer<T>::block(const Camera<T>& camera, int x0, int y0, int x1, int y1, Image& image) {
+  const int n = options_.samples;
+  std::vector<Ray<T>>& rays = rays_;  // in pixel() order: pixel by pixel, row by row, then sample by sample
+  rays.clear();
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) rays.push_back(camera.sampleRay(x, y, i, j, n));
+      }
+    }
+  }
+  const size_t lights = scene_.lights().size();
+  std::vector<Color>& colors = colors_;
+  colors.resize(rays.size());
+  constexpr int kPacket = Bvh<T>::kPacket;
+  std::vector<std::optional<ShadowRay>>& shadows = shadows_;
+  shadows.resize(kPacket * lights);
+  for (size_t first = 0; first < rays.size(); first += kPacket) {
+    const int count = int(std::min<size_t>(kPacket, rays.size() - first));
+    const Ray<T>* packet = &rays[first];
+    std::optional<Hit<T>> hits[kPacket];
+    scene_.closestHits(packet, count, {}, hits);
+    // The shadow rays of the packet's hits toward each light, asked together: shadows[i · lights + l].
+    for (size_t l = 0; l < lights; ++l) {
+      Ray<T> query[kPacket];
+      Interval<T> segments[kPacket];
+      int index[kPacket], m = 0;
+      for (int i = 0; i < count; ++i) {
+        auto& s = shadows[size_t(i) * lights + l];
+        s = hits[i] ? shadowRay(*hits[i], viewerSide(*hits[i], packet[i]), scene_.lights()[l]) : std::nullopt;
+        if (s) query[m] = s->ray, segments[m] = s->segment, index[m++] = i;
+      }
+      bool answers[kPacket];
+      scene_.occluded(query, segments, m, answers, &lastBlocker_[l]);
+      for (int k = 0; k < m; ++k) shadows[size_t(index[k]) * lights + l]->blocked = answers[k];
+    }
+    for (int i = 0; i < count; ++i) {
+      colors[first + size_t(i)] =
+          follow(packet[i], hits[i], RayRecord::Kind::Primary, 0, 1.0f, nullptr, &shadows[size_t(i) * lights]).color;
+    }
+  }
+  size_t next = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      Color sum(0);
+      for (int s = 0; s < n * n; ++s) sum += colors[next++];
+      image.at(x, y) = sum / float(n * n);
+    }
+  }
+}
+
 template <class T>
 typename Tracer<T>::Traced Tracer<T>::trace(const Ray<T>& ray, RayRecord::Kind kind, int depth, float weight,
                                             RayRecord* record) {
+  return follow(ray, scene_.closestHit(ray, {}), kind, depth, weight, record, nullptr);
+}
+
+template <class T>
+typename Tracer<T>::Traced Tracer<T>::follow(const Ray<T>& ray, const std::optional<Hit<T>>& hit,
+                                             RayRecord::Kind kind, int depth, float weight, RayRecord* record,
+                                             const std::optional<ShadowRay>* shadows) {
   if (record) {
     record->kind = kind;
     record->origin = glm::dvec3(ray.origin);
     record->dir = glm::dvec3(ray.dir);
   }
-  const auto hit = scene_.closestHit(ray, {});
   if (!hit) {
     if (record) record->color = conventions_.background;
     return {conventions_.background, std::numeric_limits<T>::infinity()};
   }
-  Color color = shade(ray, *hit, depth, weight, record);
+  Color color = shade(ray, *hit, depth, weight, record, shadows);
   if (conventions_.clampEachBounce) color = glm::clamp(color, 0.0f, 1.0f);
   if (record) record->color = color;
   return {color, hit->t};
 }
 
 template <class T>
-Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float weight, RayRecord* record) {
+Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float weight, RayRecord* record,
+                       const std::optional<ShadowRay>* shadows) {
   const Material& m = hit.object->material();
   if (record) {
     record->hit = true;
@@ -110,7 +174,7 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float we
 
   const Vec3<T> v = -ray.dir;
   const bool entering = glm::dot(v, hit.normal) >= T(0);
-  const Vec3<T> n = entering ? hit.normal : -hit.normal;  // shading normal, on the viewer's side
+  const Vec3<T> n = viewerSide(hit, ray);  // shading normal
   const float fresnel = options_.fresnel ? schlick(float(glm::dot(n, v)), m.ior) : 0.0f;
   Weights w = weights(m, fresnel, conventions_.reflectionMixes);
   std::optional<Vec3<T>> refracted;
@@ -125,7 +189,7 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float we
 
   const Color ambient = w.local * m.ambient;
   Local local;
-  if (w.local > 0) local = direct(hit, n, v, record);
+  if (w.local > 0) local = direct(hit, n, v, record, shadows);
   local.diffuse *= w.local;
   local.specular *= w.local;
 
@@ -169,30 +233,38 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float we
 
 template <class T>
 typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v,
-                                            RayRecord* record) {
+                                            RayRecord* record, const std::optional<ShadowRay>* shadows) {
   const Material& m = hit.object->material();
   Local sum;
   for (size_t i = 0; i < scene_.lights().size(); ++i) {
     const Light<T>& light = scene_.lights()[i];
-    const Vec3<T> toLight = light.position - hit.point;
-    const T distance = glm::length(toLight);
-    if (!(distance > T(0))) continue;  // a light on the surface has no direction
-    const Vec3<T> l = toLight / distance;
-    // A light behind the surface, as the viewer sees it, cannot light it: for a closed surface the shadow ray
-    // would run into the object itself (§c.7: no direct light on the inside of glass), and an open one is lit
-    // on the light's side only.
-    const float nl = float(glm::dot(n, l));
-    if (!(nl > 0.0f)) continue;
-    const auto [shadowRay, segment] = spawnRayTo(hit, light.position, options_.offset);
-    const bool blocked = scene_.occluded(shadowRay, segment, &lastBlocker_[i]);
-    if (record) record->shadows.push_back({glm::dvec3(shadowRay.origin), glm::dvec3(shadowRay.dir), blocked});
-    if (blocked) continue;
-    const float specular = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, l, m.exponent)
-                                                             : cookTorranceSpecular(n, v, l, m.roughness, m.ior);
-    sum.diffuse += light.color * m.diffuse * std::min(nl, 1.0f);
+    auto s = shadows ? shadows[i] : shadowRay(hit, n, light);
+    if (!s) continue;
+    if (!shadows) s->blocked = scene_.occluded(s->ray, s->segment, &lastBlocker_[i]);
+    if (record) record->shadows.push_back({glm::dvec3(s->ray.origin), glm::dvec3(s->ray.dir), s->blocked});
+    if (s->blocked) continue;
+    const float specular = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, s->l, m.exponent)
+                                                             : cookTorranceSpecular(n, v, s->l, m.roughness, m.ior);
+    sum.diffuse += light.color * m.diffuse * std::min(s->nl, 1.0f);
     sum.specular += light.color * m.specular * specular;
   }
   return sum;
+}
+
+template <class T>
+std::optional<typename Tracer<T>::ShadowRay> Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n,
+                                                                 const Light<T>& light) const {
+  const Vec3<T> toLight = light.position - hit.point;
+  const T distance = glm::length(toLight);
+  if (!(distance > T(0))) return std::nullopt;  // a light on the surface has no direction
+  const Vec3<T> l = toLight / distance;
+  // A light behind the surface, as the viewer sees it, cannot light it: for a closed surface the shadow ray
+  // would run into the object itself (§c.7: no direct light on the inside of glass), and an open one is lit
+  // on the light's side only.
+  const float nl = float(glm::dot(n, l));
+  if (!(nl > 0.0f)) return std::nullopt;
+  const auto [ray, segment] = spawnRayTo(hit, light.position, options_.offset);
+  return ShadowRay{ray, segment, l, nl};
 }
 
 template class Tracer<float>;

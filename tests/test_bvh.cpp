@@ -114,6 +114,49 @@ TEMPLATE_TEST_CASE("the hierarchy finds exactly the hit a scan in file order fin
   }
 }
 
+TEMPLATE_TEST_CASE("a packet of rays gets the answers each ray gets alone", "[bvh]", float, double) {
+  using T = TestType;
+  constexpr int kPacket = rt::Bvh<T>::kPacket;
+  const rt::Arithmetic arithmetic{std::is_same_v<T, float> ? rt::Precision::Float : rt::Precision::Double,
+                                  rt::SphereMethod::Robust};
+  for (unsigned seed = 1; seed <= 10; ++seed) {
+    CAPTURE(seed);
+    std::mt19937 rng(seed);
+    const rt::SceneDesc desc = randomScene(rng, int(seed) * 20);
+    const rt::Scene<T> flat(desc, arithmetic, Hierarchy::Never);
+    const rt::Scene<T> tree(desc, arithmetic, Hierarchy::Always);
+    std::uniform_real_distribution<double> pos(-15, 15), spread(-0.05, 0.05), unit(0, 1);
+    const rt::Object<T>* lastBlocker = nullptr;
+    for (int p = 0; p < 200; ++p) {
+      CAPTURE(p);
+      // Odd packets are coherent (one origin, directions within a few degrees, as a pixel's eye rays), even
+      // ones scattered; sizes run through 1..kPacket.
+      const int n = 1 + p % kPacket;
+      const rt::Vec3<T> origin(pos(rng), pos(rng), pos(rng));
+      const rt::Vec3<T> axis = randomUnit<T>(rng);
+      rt::Ray<T> rays[kPacket];
+      rt::Interval<T> ranges[kPacket];
+      for (int i = 0; i < n; ++i) {
+        if (p % 2) {
+          rays[i] = {origin, rt::Vec3<T>(glm::normalize(glm::dvec3(axis) + glm::dvec3(spread(rng), spread(rng), spread(rng))))};
+        } else {
+          rays[i] = {rt::Vec3<T>(pos(rng), pos(rng), pos(rng)), randomUnit<T>(rng)};
+        }
+        ranges[i] = {T(0), unit(rng) < 0.5 ? T(std::abs(pos(rng))) : std::numeric_limits<T>::infinity()};
+      }
+      std::optional<rt::Hit<T>> hits[kPacket];
+      tree.closestHits(rays, n, {}, hits);
+      bool blocked[kPacket];
+      tree.occluded(rays, ranges, n, blocked, &lastBlocker);
+      for (int i = 0; i < n; ++i) {
+        CAPTURE(i);
+        requireSame(hits[i], flat.closestHit(rays[i], {}));
+        REQUIRE(blocked[i] == flat.occluded(rays[i], ranges[i]));
+      }
+    }
+  }
+}
+
 TEST_CASE("equal t resolve to the object that comes first in the file", "[bvh]") {
   rt::SceneDesc desc;
   for (int i = 0; i < 50; ++i) desc.objects.push_back(sphereDesc({(i % 5) * 3.0, 0, -10}, 1));

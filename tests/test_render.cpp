@@ -229,6 +229,37 @@ TEST_CASE("Rendered images are finite whatever the flags and materials", "[rende
   }
 }
 
+TEST_CASE("A rendered pixel is the colour pixel() reports for it: packets change nothing", "[render]") {
+  // pixel() traces one ray at a time, as printrays and pixelcolor do; render() goes through Tracer::block's
+  // packets and shadow cache. Scenes with and without a hierarchy, several lights, mirrors and glass.
+  for (const char* file : {"/scenes/glass_mirror.pov", "/scenes/shapes.pov", "/scenes/stability/s3_glass_mirrors.pov"}) {
+    const SceneDesc scene = loadScene(sourceDir() + file);
+    for (const int samples : {1, 2}) {
+      for (const Hierarchy hierarchy : {Hierarchy::Always, Hierarchy::Never}) {
+        CAPTURE(file, samples, int(hierarchy));
+        RenderOptions options;
+        options.samples = samples;
+        options.fresnel = samples == 2;
+        options.hierarchy = hierarchy;
+        const Image image = render(scene, 37, 23, options);
+        const Arithmetic arithmetic = chooseArithmetic(scene, options.arithmetic);
+        withPrecision(arithmetic.precision, [&](auto tag) {
+          using T = decltype(tag);
+          const Scene<T> s(scene, arithmetic, hierarchy);
+          const Camera<T> camera(scene.camera, 37, 23);
+          Tracer<T> tracer(s, options);
+          for (int y = 0; y < 23; ++y) {
+            for (int x = 0; x < 37; ++x) {
+              CAPTURE(x, y);
+              REQUIRE(image.at(x, y) == tracer.pixel(camera, x, y));
+            }
+          }
+        });
+      }
+    }
+  }
+}
+
 TEST_CASE("Bad shading flags are reported with the accepted values", "[render]") {
   const auto error = [](std::vector<std::string> args) -> std::string {
     std::ostringstream out, err;

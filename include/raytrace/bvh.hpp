@@ -28,6 +28,10 @@ template <class T> constexpr T kFarScale = T(1) + T(2) * (T(3) * std::numeric_li
 template <class T> class Bvh {
  public:
   static constexpr int kWidth = 4;  // children per node, tested together (the loops below vectorize)
+  // Rays per packet: a packet's rays go down the tree together (Wald et al., "Interactive Rendering with
+  // Coherent Ray Tracing", 2001), each tested against the nodes it enters. One ray's box test is a chain of
+  // dependent SIMD operations; the tests of a packet's rays are independent, so they overlap in the core.
+  static constexpr int kPacket = 16;
 
   // A node of the flattened 4-wide tree (Wald et al., "Getting Rid of Packets", 2008; Dammertz et al.,
   // "Shallow Bounding Volume Hierarchies", 2008): the boxes of its children in structure-of-arrays form, so
@@ -79,6 +83,12 @@ template <class T> class Bvh {
   std::optional<Hit<T>> closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>> best) const;
   // An object with a hit strictly inside `range`, or nullptr: the any-hit query.
   const Object<T>* blocker(const Ray<T>& ray, Interval<T> range) const;
+
+  // The same two queries for a packet of n ≤ kPacket rays, with the same answers as one ray at a time:
+  // best[i] = closestHit(rays[i], range, best[i]); blockers[i] = blocker(rays[i], ranges[i]) for the rays
+  // whose bit is set in `active`, the others left as they are.
+  void closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const;
+  void blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active, const Object<T>** blockers) const;
 
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<const Object<T>*>& objects() const { return objects_; }

@@ -31,6 +31,13 @@ template <class T> class Scene {
   // Buffer", 1986), and receives the blocker of this one. The answer is the same with or without it.
   bool occluded(const Ray<T>& ray, Interval<T> range, const Object<T>** lastBlocker = nullptr) const;
 
+  // The same two queries for a packet of n ≤ Bvh<T>::kPacket coherent rays (bvh.hpp), each answered exactly as
+  // the one-ray query answers it: hits[i] = closestHit(rays[i], range); blocked[i] = occluded(rays[i],
+  // ranges[i], lastBlocker).
+  void closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* hits) const;
+  void occluded(const Ray<T>* rays, const Interval<T>* ranges, int n, bool* blocked,
+                const Object<T>** lastBlocker) const;
+
   const SceneDesc& desc() const { return desc_; }
   const Arithmetic& arithmetic() const { return arithmetic_; }
   const std::vector<Light<T>>& lights() const { return lights_; }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "raytrace/camera.hpp"
+#include "raytrace/image.hpp"
 #include "raytrace/ray_tree.hpp"
 #include "raytrace/render.hpp"
 #include "raytrace/scene.hpp"
@@ -21,6 +22,9 @@ template <class T> class Tracer {
   // The colour of pixel (x, y): the float average of options.samples² stratified eye rays. With `trees`, the
   // ray tree of each eye ray is appended to it.
   Color pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees = nullptr);
+  // The pixels of [x0, x1) × [y0, y1) into `image`, each the colour pixel() gives it: the eye rays and their
+  // shadow rays go through the scene in packets (Scene::closestHits), the rest one ray at a time.
+  void block(const Camera<T>& camera, int x0, int y0, int x1, int y1, Image& image);
 
  private:
   struct Traced {
@@ -32,11 +36,28 @@ template <class T> class Tracer {
     Color diffuse{0}, specular{0};
   };
 
+  struct ShadowRay {
+    Ray<T> ray;
+    Interval<T> segment;
+    Vec3<T> l;             // unit vector to the light
+    float nl;              // n·l
+    bool blocked = false;  // the answer, once asked
+  };
+
   Traced trace(const Ray<T>& ray, RayRecord::Kind kind, int depth, float weight, RayRecord* record);
-  Color shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float weight, RayRecord* record);
+  // trace() once the closest hit is known; `shadows`, if given, are the hit's shadow rays (one per light, as
+  // shadowRay() makes them) with their answers, found beforehand for a whole packet.
+  Traced follow(const Ray<T>& ray, const std::optional<Hit<T>>& hit, RayRecord::Kind kind, int depth,
+                float weight, RayRecord* record, const std::optional<ShadowRay>* shadows);
+  Color shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float weight, RayRecord* record,
+              const std::optional<ShadowRay>* shadows);
   // Diffuse and specular light from every light the point sees (§c.1, §c.7), before weighting. `n` is the
   // shading normal on the viewer's side, `v` the unit vector to the viewer.
-  Local direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v, RayRecord* record);
+  Local direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
+               const std::optional<ShadowRay>* shadows);
+  // The shadow ray toward `light`, or nothing when the light cannot light the point from the viewer's side
+  // `n`: a light behind the surface as the viewer sees it, or on the point itself.
+  std::optional<ShadowRay> shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light) const;
   // Whether a secondary ray of accumulated weight `weight` at `depth` is worth tracing (stability.md F12).
   bool matters(float weight, int depth) const;
 
@@ -46,6 +67,9 @@ template <class T> class Tracer {
   std::vector<float> bound_;  // bound_[r]: the brightest colour a ray with r levels of recursion left can return
   float cutoff_;
   std::vector<const Object<T>*> lastBlocker_;  // per light: what blocked its latest shadow ray (Scene::occluded)
+  std::vector<Ray<T>> rays_;                   // block()'s eye rays and their colours, kept to reuse the memory
+  std::vector<Color> colors_;
+  std::vector<std::optional<ShadowRay>> shadows_;  // a packet's shadow rays, ray by ray and light by light
 };
 
 }  // namespace rt
