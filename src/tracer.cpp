@@ -243,8 +243,8 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
     if (!shadows) s->blocked = scene_.occluded(s->ray, s->segment, &lastBlocker_[i]);
     if (record) record->shadows.push_back({glm::dvec3(s->ray.origin), glm::dvec3(s->ray.dir), s->blocked});
     if (s->blocked) continue;
-    const float specular = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, s->l, m.exponent)
-                                                             : cookTorranceSpecular(n, v, s->l, m.roughness, m.ior);
+    const float specular = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, s->ray.dir, m.exponent)
+                                                             : cookTorranceSpecular(n, v, s->ray.dir, m.roughness, m.ior);
     sum.diffuse += light.color * m.diffuse * std::min(s->nl, 1.0f);
     sum.specular += light.color * m.specular * specular;
   }
@@ -254,17 +254,13 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
 template <class T>
 std::optional<typename Tracer<T>::ShadowRay> Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n,
                                                                  const Light<T>& light) const {
-  const Vec3<T> toLight = light.position - hit.point;
-  const T distance = glm::length(toLight);
-  if (!(distance > T(0))) return std::nullopt;  // a light on the surface has no direction
-  const Vec3<T> l = toLight / distance;
+  const auto [ray, segment] = spawnRayTo(hit, light.position, options_.offset);
   // A light behind the surface, as the viewer sees it, cannot light it: for a closed surface the shadow ray
   // would run into the object itself (§c.7: no direct light on the inside of glass), and an open one is lit
-  // on the light's side only.
-  const float nl = float(glm::dot(n, l));
+  // on the light's side only. A light on the point has no direction: n·l is NaN.
+  const float nl = float(glm::dot(n, ray.dir));
   if (!(nl > 0.0f)) return std::nullopt;
-  const auto [ray, segment] = spawnRayTo(hit, light.position, options_.offset);
-  return ShadowRay{ray, segment, l, nl};
+  return ShadowRay{ray, segment, nl};
 }
 
 template class Tracer<float>;

@@ -37,9 +37,8 @@ template <class T> class Tracer {
   };
 
   struct ShadowRay {
-    Ray<T> ray;
+    Ray<T> ray;            // its direction is l, the unit vector to the light
     Interval<T> segment;
-    Vec3<T> l;             // unit vector to the light
     float nl;              // n·l
     bool blocked = false;  // the answer, once asked
   };
