@@ -295,16 +295,19 @@ template <class T>
 void packetEntries(const typename Bvh<T>::Node& node, const Ray<T>* rays, const Vec3<T>* invDir, T tMin,
                    const T* tMax, uint32_t mask, uint32_t (&childRays)[Bvh<T>::kWidth],
                    T (&childEntry)[Bvh<T>::kWidth]) {
-  for (int k = 0; k < Bvh<T>::kWidth; ++k) childRays[k] = 0, childEntry[k] = std::numeric_limits<T>::infinity();
+  using Lanes = typename Bvh<T>::Lanes;
+  using LaneMask = typename Bvh<T>::LaneMask;
+  Lanes nearest = Lanes{} + std::numeric_limits<T>::infinity();
+  LaneMask entered{};
   for (; mask; mask &= mask - 1) {
     const int i = __builtin_ctz(mask);
-    T entry[Bvh<T>::kWidth];
-    for (unsigned m = Bvh<T>::entries(node, rays[i].origin, invDir[i], tMin, tMax[i], entry); m; m &= m - 1) {
-      const int k = __builtin_ctz(m);
-      childRays[k] |= 1u << i;
-      childEntry[k] = std::min(childEntry[k], entry[k]);
-    }
+    Lanes near;
+    LaneMask enters;
+    Bvh<T>::slab(node, rays[i].origin, invDir[i], tMin, tMax[i], near, enters);
+    nearest = (enters & (near < nearest)) ? near : nearest;
+    entered |= enters & (LaneMask{} + (1 << i));
   }
+  for (int k = 0; k < Bvh<T>::kWidth; ++k) childRays[k] = uint32_t(entered[k]), childEntry[k] = nearest[k];
 }
 
 template <class T>
