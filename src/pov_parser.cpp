@@ -229,7 +229,7 @@ class PovParser {
     const size_t n = scene_.objects.size();  // a file of tiny objects can outgrow memory (limits.hpp)
     const std::string shortage = objectMemoryShortage(n, n + 1, "a scene");
     if (!shortage.empty()) throw ParseError(keyword.loc, shortage);
-    scene_.objects.push_back(obj);
+    scene_.objects.push_back(std::move(obj));
   }
 
   double positive(const std::string& what) {

@@ -1,6 +1,7 @@
 #include "raytrace/tokenizer.hpp"
 
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -37,7 +38,12 @@ Token Tokenizer::next() {
   }
   t.text.assign(s_, start, i_ - start);
   if (t.kind == Token::Kind::Number) {
-    t.number = std::strtod(t.text.c_str(), nullptr);
+    // from_chars is correctly rounded like strtod and several times faster (a big scene is mostly numbers); it
+    // takes no '+' and calls an underflow out of range, so those few go to strtod.
+    const char* first = t.text.data() + (t.text[0] == '+');
+    const char* last = t.text.data() + t.text.size();
+    const auto [end, error] = std::from_chars(first, last, t.number);
+    if (error != std::errc() || end != last) t.number = std::strtod(t.text.c_str(), nullptr);
     if (!std::isfinite(t.number)) throw ParseError(t.loc, "number '" + t.text + "' is out of range");
   }
   return t;
