@@ -213,80 +213,17 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
   }
 }
 
+// One ray is a packet of one.
 template <class T>
 std::optional<Hit<T>> Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>> best) const {
-  if (nodes_.empty()) return best;
-  const Vec3<T> invDir = T(1) / ray.dir;
-  // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
-  T limit = best ? nextUp(best->t) : range.max;
-
-  // The child being visited and those still to visit, nearest on top: at most kWidth − 1 more per level.
-  struct Pending {
-    T t;
-    uint32_t first, count;
-  };
-  std::array<Pending, kMaxDepth * kWidth> stack;
-  int size = 0;
-  Pending current{range.min, 0, 0};
-  for (;;) {
-    if (current.count) {
-      for (uint32_t i = current.first; i < current.first + current.count; ++i) {
-        const Object<T>* object = objects_[i];
-        auto hit = object->intersect(ray, Interval<T>{range.min, limit});
-        if (hit && (!best || hit->t < best->t || object->id() < best->object->id())) {
-          best = hit;
-          limit = nextUp(hit->t);
-        }
-      }
-    } else {
-      const Node& node = nodes_[current.first];
-      T entry[kWidth];
-      unsigned mask = entries(node, ray.origin, invDir, range.min, limit, entry);
-      if (mask) {
-        // Visit the nearest child next; push the others farthest first so that the stack stays sorted
-        // (insertion into its top) and the hits of nearer children cut off the farther ones.
-        int k = __builtin_ctz(mask);
-        Pending nearest{entry[k], node.first[k], node.count[k]};
-        for (mask &= mask - 1; mask; mask &= mask - 1) {
-          k = __builtin_ctz(mask);
-          Pending other{entry[k], node.first[k], node.count[k]};
-          if (other.t < nearest.t) std::swap(other, nearest);
-          int at = size++;
-          while (at > 0 && stack[at - 1].t < other.t && stack[at - 1].t >= nearest.t) stack[at] = stack[at - 1], --at;
-          stack[at] = other;
-        }
-        current = nearest;
-        continue;
-      }
-    }
-    do {  // skip what the ray enters beyond a hit found since it was pushed
-      if (size == 0) return best;
-      current = stack[--size];
-    } while (current.t > limit * kFarScale<T>);
-  }
+  closestHits(&ray, 1, range, &best);
+  return best;
 }
 
 template <class T> const Object<T>* Bvh<T>::blocker(const Ray<T>& ray, Interval<T> range) const {
-  if (nodes_.empty()) return nullptr;
-  const Vec3<T> invDir = T(1) / ray.dir;
-  std::array<uint32_t, kMaxDepth * kWidth> stack;
-  int size = 0;
-  stack[size++] = 0;
-  while (size > 0) {
-    const Node& node = nodes_[stack[--size]];
-    T entry[kWidth];
-    for (unsigned mask = entries(node, ray.origin, invDir, range.min, range.max, entry); mask; mask &= mask - 1) {
-      const int k = __builtin_ctz(mask);
-      if (!node.count[k]) {
-        stack[size++] = node.first[k];
-        continue;
-      }
-      for (uint32_t i = node.first[k]; i < node.first[k] + node.count[k]; ++i) {
-        if (objects_[i]->intersect(ray, range)) return objects_[i];
-      }
-    }
-  }
-  return nullptr;
+  const Object<T>* found = nullptr;
+  blockers(&ray, &range, 1u, &found);
+  return found;
 }
 
 // The children of `node` that each ray of `rays` enters: childRays[k] has bit i set when ray i enters child k,
@@ -303,7 +240,7 @@ void packetEntries(const typename Bvh<T>::Node& node, const Ray<T>* rays, const 
     const int i = __builtin_ctz(mask);
     Lanes near;
     LaneMask enters;
-    Bvh<T>::slab(node, rays[i].origin, invDir[i], tMin, tMax[i], near, enters);
+    Bvh<T>::entries(node, rays[i].origin, invDir[i], tMin, tMax[i], near, enters);
     nearest = (enters & (near < nearest)) ? near : nearest;
     entered |= enters & (LaneMask{} + (1 << i));
   }

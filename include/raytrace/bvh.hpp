@@ -47,30 +47,18 @@ template <class T> class Bvh {
     }
   };
 
-  // Where the ray o + t·d enters each child's box within [tMin, tMax], and a bit per child it enters; invDir is
-  // 1/d. The slab test (Kay & Kajiya 1986) for all children at once. A NaN from 0·∞ (origin on a slab plane,
-  // ray parallel to it) either leaves the bounds unchanged or rejects a ray lying in a face plane of the box,
-  // which cannot reach the objects: they lie strictly inside their padded boxes (paddedBounds in bvh.cpp).
-  // Unused child slots hold the box {+∞}, which every ray misses.
   // GCC/Clang vector extensions: one SIMD instruction per operation on all children.
   typedef T Lanes __attribute__((vector_size(kWidth * sizeof(T))));
   using LaneMask = decltype(Lanes{} < Lanes{});  // integer lanes, all bits set where a comparison holds
 
-  static unsigned entries(const Node& node, const Vec3<T>& origin, const Vec3<T>& invDir, T tMin, T tMax,
-                          T (&entry)[kWidth]) {
-    Lanes near;
-    LaneMask enters;
-    slab(node, origin, invDir, tMin, tMax, near, enters);
-    std::memcpy(&entry, &near, sizeof entry);
-    unsigned mask = 0;
-    for (int k = 0; k < kWidth; ++k) mask |= enters[k] ? 1u << k : 0u;
-    return mask;
-  }
-
-  // entries() as lanes: the entry distances, and all bits set where the ray enters. (Lanes are passed by
-  // reference: a 256-bit vector of doubles passed by value would depend on the AVX ABI.)
-  static void slab(const Node& node, const Vec3<T>& origin, const Vec3<T>& invDir, T tMin, T tMax, Lanes& near,
-                   LaneMask& enters) {
+  // Where the ray o + t·d enters each child's box within [tMin, tMax] (`near`), and all bits set in `enters`
+  // for the children it enters; invDir is 1/d. The slab test (Kay & Kajiya 1986) for all children at once. A
+  // NaN from 0·∞ (origin on a slab plane, ray parallel to it) either leaves the bounds unchanged or rejects a
+  // ray lying in a face plane of the box, which cannot reach the objects: they lie strictly inside their
+  // padded boxes (paddedBounds in bvh.cpp). Unused child slots hold the box {+∞}, which every ray misses.
+  // (Lanes are passed by reference: a 256-bit vector of doubles passed by value would depend on the AVX ABI.)
+  static void entries(const Node& node, const Vec3<T>& origin, const Vec3<T>& invDir, T tMin, T tMax,
+                      Lanes& near, LaneMask& enters) {
     near = Lanes{} + tMin;
     Lanes far = Lanes{} + tMax, lo, hi;
     for (int a = 0; a < 3; ++a) {
