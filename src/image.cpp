@@ -10,6 +10,7 @@
 
 #include "raytrace/error.hpp"
 #include "raytrace/limits.hpp"
+#include "raytrace/parallel.hpp"
 #include "raytrace/png.hpp"
 
 namespace rt {
@@ -33,14 +34,16 @@ unsigned char toByte(float c, Conventions::ToByte mode) {
 }
 
 void writePng(const Image& image, const std::string& path, Conventions::ToByte mode, int threads) {
-  std::vector<unsigned char> bytes(size_t(image.width()) * size_t(image.height()) * 3);
-  unsigned char* out = bytes.data();
-  for (int y = image.height() - 1; y >= 0; --y) {
+  const size_t stride = size_t(image.width()) * 3;
+  std::vector<unsigned char> bytes(stride * size_t(image.height()));
+  parallelFor(image.height(), threads, [&](int row) {  // PNG rows run top down, pixel rows y up
+    unsigned char* out = bytes.data() + size_t(row) * stride;
+    const int y = image.height() - 1 - row;
     for (int x = 0; x < image.width(); ++x) {
       const Color& c = image.at(x, y);
       for (int k = 0; k < 3; ++k) *out++ = toByte(c[k], mode);
     }
-  }
+  });
   const std::vector<unsigned char> png = encodePng(bytes, image.width(), image.height(), threads);
   const std::string temp = path + ".tmp" + std::to_string(getpid());
   std::FILE* f = std::fopen(temp.c_str(), "wb");
