@@ -83,12 +83,16 @@ template <class T> Ray<T> spawnRay(const Hit<T>& hit, const Vec3<T>& dir, Offset
 }
 
 // A ray from `hit` toward `target` with the interval that ends just before it: the shadow segment. The
-// direction from the hit point picks the side to leave by; the ray is then aimed from its offset origin, so
-// that it reaches the target exactly at the segment's end (as the course reference aims its shadow rays).
+// direction from the hit point picks the side to leave by. The course reference then aims from its offset
+// origin, so its ray reaches the target itself; the other policies keep that direction, a ray parallel to the
+// one from the hit point: aimed from its origin at a target nearer the surface than the origin, it would
+// run back down to the surface, and scale-aware offsets are too small for that (tests/test_stability_spawn.cpp
+// counts it).
 template <class T>
 std::pair<Ray<T>, Interval<T>> spawnRayTo(const Hit<T>& hit, const Vec3<T>& target, OffsetPolicy policy) {
-  const Vec3<T> origin = spawnOrigin(hit, glm::normalize(target - hit.point), policy);
-  const Ray<T> ray{origin, glm::normalize(target - origin)};
+  const Vec3<T> dir = glm::normalize(target - hit.point);
+  const Vec3<T> origin = spawnOrigin(hit, dir, policy);
+  const Ray<T> ray{origin, policy == OffsetPolicy::Course ? glm::normalize(target - origin) : dir};
   const T dist = glm::length(target - origin);
   return {ray, Interval<T>{T(0), dist * (T(1) - kShadowEpsilon<T>)}};
 }
