@@ -81,7 +81,7 @@ Options parseFlag(const std::string& flag, Options o) {
   if (const char* p = value("--precision")) {
     o.arithmetic.precision = choice<Precision>("--precision", p,
                                                {{"float", Precision::Float}, {"double", Precision::Double},
-                                                {"auto", Precision::Auto}});
+                                                {"course", Precision::Course}, {"auto", Precision::Auto}});
     return o;
   }
   if (const char* p = value("--sphere")) {
@@ -91,9 +91,10 @@ Options parseFlag(const std::string& flag, Options o) {
     return o;
   }
   if (const char* p = value("--offset")) {
-    o.offset = choice<OffsetPolicy>("--offset", p,
-                                    {{"relative", OffsetPolicy::Relative}, {"course", OffsetPolicy::Course},
-                                     {"normal", OffsetPolicy::FixedNormal}, {"wb", OffsetPolicy::WaechterBinder}});
+    o.arithmetic.offset = choice<OffsetPolicy>(
+        "--offset", p,
+        {{"relative", OffsetPolicy::Relative}, {"course", OffsetPolicy::Course},
+         {"normal", OffsetPolicy::FixedNormal}, {"wb", OffsetPolicy::WaechterBinder}});
     return o;
   }
   if (const char* p = value("--hierarchy")) {
@@ -277,12 +278,14 @@ std::string usage() {
   for (const Command& c : commands()) text += "  " + commandUsage(c) + " [options]\n";
   text +=
       "options:\n"
-      "  --precision=float|double|auto   arithmetic for geometry (default auto: chosen per scene)\n"
+      "  --precision=float|double|course|auto\n"
+      "                                  arithmetic for geometry (default auto: chosen per scene); course\n"
+      "                                  is the course reference's float arithmetic and 0.001 offsets\n"
       "  --sphere=textbook|robust|auto   ray-sphere formula (default auto: chosen per scene)\n"
       "  --offset=relative|course|normal|wb\n"
-      "                                  spawned-ray origins: relative normal offset (default), the\n"
-      "                                  course's P + 0.001*d (its printrays outputs encode it), a fixed\n"
-      "                                  1e-4 along the normal, or Waechter-Binder's ulp offset\n"
+      "                                  spawned-ray origins (default: the arithmetic's): relative normal\n"
+      "                                  offset, the course's 0.001 along the normal, a fixed 1e-4 along\n"
+      "                                  the normal, or Waechter-Binder's ulp offset\n"
       "  --depth=N                       deepest reflection/refraction level (default: the scene language's)\n"
       "  -altbrdf                        Cook-Torrance (GGX) instead of Blinn-Phong\n"
       "  -fresnel                        Schlick-weighted reflection and refraction\n"

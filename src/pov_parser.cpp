@@ -4,8 +4,6 @@
 #include <utility>
 #include <vector>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "raytrace/limits.hpp"
 #include "raytrace/tokenizer.hpp"
 
@@ -259,21 +257,16 @@ class PovParser {
       } else if (t.text == "finish") {
         parseFinish(finish, t);
       } else if (t.text == "translate") {
-        obj.worldFromObject = glm::translate(glm::dmat4(1.0), vec3("the translation")) * obj.worldFromObject;
+        obj.transforms.push_back({TransformStep::Kind::Translate, vec3("the translation")});
       } else if (t.text == "scale") {
-        obj.worldFromObject = glm::scale(glm::dmat4(1.0), scaleFactors()) * obj.worldFromObject;
+        obj.transforms.push_back({TransformStep::Kind::Scale, scaleFactors()});
       } else if (t.text == "rotate") {
-        // The course's order R = Rx·Ry·Rz, which turns about z first (csc473-course.md §c.10).
-        const glm::dvec3 deg = vec3("the rotation");
-        glm::dmat4 r(1.0);
-        r = glm::rotate(r, glm::radians(deg.x), glm::dvec3(1, 0, 0));
-        r = glm::rotate(r, glm::radians(deg.y), glm::dvec3(0, 1, 0));
-        r = glm::rotate(r, glm::radians(deg.z), glm::dvec3(0, 0, 1));
-        obj.worldFromObject = r * obj.worldFromObject;
+        obj.transforms.push_back({TransformStep::Kind::Rotate, vec3("the rotation")});
       } else {
         throw ParseError(t.loc, "unknown " + keyword.text + " property " + t.quoted());
       }
     }
+    obj.worldFromObject = composeTransforms<double>(obj.transforms);
     Material& m = obj.material;
     m.finish = finish;
     m.ambient = float(finish.ambient) * m.pigment;

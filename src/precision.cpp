@@ -76,9 +76,14 @@ Stretch stretch(const glm::dmat4& m) {
   return {most, least};
 }
 
+double budget(const SceneScale& s) {
+  if (!(s.smallestFeature > 0) || std::isinf(s.smallestFeature)) return s.extent;
+  return s.extent / s.smallestFeature;
+}
+
 }  // namespace
 
-double precisionBudget(const SceneDesc& scene) {
+SceneScale sceneScale(const SceneDesc& scene) {
   // Two lengths set the error: coordinates, whose rounding is ε relative to their magnitude, and the distance
   // a ray travels from its origin (the camera or a surface) to what it hits, which the sphere's t error
   // scales with (stability.md F1). The box around the camera and every bounded object bounds the second by
@@ -96,18 +101,25 @@ double precisionBudget(const SceneDesc& scene) {
     lo = glm::min(lo, center - radius);
     hi = glm::max(hi, center + radius);
   }
-  const double extent = std::max({largest, glm::length(hi - lo), 1.0});
-  if (!(smallest > 0) || std::isinf(smallest)) return extent;
-  return extent / smallest;
+  return {std::max({largest, glm::length(hi - lo), 1.0}), smallest};
 }
 
+double precisionBudget(const SceneDesc& scene) { return budget(sceneScale(scene)); }
+
 Arithmetic chooseArithmetic(const SceneDesc& scene, Arithmetic requested) {
-  const double r = precisionBudget(scene);
+  const SceneScale s = sceneScale(scene);
+  const double r = budget(s);
+  const bool courseDomain = scene.language == SceneLanguage::Pov && s.smallestFeature >= kCourseMinFeature &&
+                            s.extent <= kCourseMaxExtent;
   Arithmetic a = requested;
-  if (a.precision == Precision::Auto) a.precision = r <= 1e4 ? Precision::Float : Precision::Double;
-  if (a.sphere == SphereMethod::Auto) {
-    a.sphere = (a.precision == Precision::Float && r <= 50) ? SphereMethod::Textbook : SphereMethod::Robust;
+  if (a.precision == Precision::Auto) {
+    a.precision = courseDomain ? Precision::Course : r <= 1e4 ? Precision::Float : Precision::Double;
   }
+  if (a.sphere == SphereMethod::Auto) {
+    const bool textbook = a.precision == Precision::Course || (a.precision == Precision::Float && r <= 50);
+    a.sphere = textbook ? SphereMethod::Textbook : SphereMethod::Robust;
+  }
+  if (!a.offset) a.offset = a.precision == Precision::Course ? OffsetPolicy::Course : OffsetPolicy::Relative;
   return a;
 }
 

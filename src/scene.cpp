@@ -58,6 +58,7 @@ ObjectDesc foldSimilarityIntoSphere(const ObjectDesc& desc) {
   folded.shape = SphereDesc{glm::dvec3(desc.worldFromObject * glm::dvec4(sphere->center, 1.0)),
                             std::sqrt(s2) * sphere->radius};
   folded.worldFromObject = glm::dmat4(1.0);
+  folded.transforms.clear();
   return folded;
 }
 
@@ -67,13 +68,19 @@ template <class T>
 Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy hierarchy)
     : desc_(desc), arithmetic_(arithmetic) {
   for (const LightDesc& l : desc.lights) lights_.push_back(Light<T>{Vec3<T>(l.position), l.color});
+  // The course tier does what its reference does: every transformed object is intersected on the transformed
+  // ray, with the matrix composed in T from the file's steps (worldFromObject stands in for a scene built in
+  // code).
+  const bool course = arithmetic.precision == Precision::Course;
   int id = 1;
   for (const ObjectDesc& given : desc.objects) {
-    const ObjectDesc o = foldSimilarityIntoSphere(given);
+    const ObjectDesc o = course ? given : foldSimilarityIntoSphere(given);
     auto object = makeObject<T>(o, arithmetic, id);
+    const Mat4<T> m =
+        course && !o.transforms.empty() ? composeTransforms<T>(o.transforms) : Mat4<T>(o.worldFromObject);
     // An identity transform (`translate <0,0,0>`) costs nothing: the shape is used as it is.
-    if (o.worldFromObject != glm::dmat4(1.0)) {
-      object = std::make_unique<Transformed<T>>(std::move(object), Mat4<T>(o.worldFromObject), o.material, id);
+    if (m != Mat4<T>(T(1))) {
+      object = std::make_unique<Transformed<T>>(std::move(object), m, o.material, id, course);
     }
     objects_.push_back(std::move(object));
     ++id;
@@ -108,7 +115,9 @@ std::optional<Hit<T>> Scene<T>::closestHit(const Ray<T>& ray, Interval<T> range)
       closest = hit;
     }
   }
-  return hierarchy_ ? hierarchy_->closestHit(ray, range, closest) : closest;
+  if (hierarchy_) closest = hierarchy_->closestHit(ray, range, closest);
+  if (closest) closest->point = hitPoint(ray, *closest);
+  return closest;
 }
 
 template <class T>
@@ -139,6 +148,13 @@ void Scene<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::op
     }
   }
   if (hierarchy_) hierarchy_->closestHits(rays, n, range, hits);
+  for (int i = 0; i < n; ++i) {
+    if (hits[i]) hits[i]->point = hitPoint(rays[i], *hits[i]);
+  }
+}
+
+template <class T> Vec3<T> Scene<T>::hitPoint(const Ray<T>& ray, const Hit<T>& hit) const {
+  return arithmetic_.precision == Precision::Course ? ray.at(hit.t) : hit.point;
 }
 
 template <class T>

@@ -40,6 +40,10 @@ std::optional<Hit<T>> Sphere<T>::intersect(const Ray<T>& ray, Interval<T> range)
   return hit;
 }
 
+template <class T> Vec3<T> Sphere<T>::normalAt(const Vec3<T>& point, const Hit<T>&) const {
+  return glm::normalize(point - center_);
+}
+
 template <class T> std::optional<Aabb<T>> Sphere<T>::bounds() const {
   return Aabb<T>{center_ - Vec3<T>(radius_), center_ + Vec3<T>(radius_)};
 }

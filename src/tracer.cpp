@@ -204,7 +204,8 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float we
     RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
     if (sub) sub->extraInfo.push_back(entering ? "into-object" : "into-air");
     const Traced t =
-        trace(spawnRay(hit, *refracted, options_.offset), RayRecord::Kind::Refraction, child, transmitWeight, sub);
+        trace(spawnRay(hit, *refracted, *scene_.arithmetic().offset), RayRecord::Kind::Refraction, child,
+              transmitWeight, sub);
     Color gathered = transmitTint * t.color;
     if (entering && options_.beers) gathered *= beerAttenuation(m.pigment, float(t.distance));
     refraction = w.transmission * gathered;
@@ -213,7 +214,7 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float we
   const float reflectWeight = weight * w.reflection * brightest(reflectTint);
   if (child <= conventions_.maxDepth && w.reflection > 0 && matters(reflectWeight, child)) {
     RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
-    const Ray<T> mirrored = spawnRay(hit, reflectDirection(ray.dir, n), options_.offset);
+    const Ray<T> mirrored = spawnRay(hit, reflectDirection(ray.dir, n), *scene_.arithmetic().offset);
     const Traced r = trace(mirrored, RayRecord::Kind::Reflection, child, reflectWeight, sub);
     reflection = w.reflection * reflectTint * r.color;
   }
@@ -243,8 +244,8 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
     if (!shadows) s->blocked = scene_.occluded(s->ray, s->segment, &lastBlocker_[i]);
     if (record) record->shadows.push_back({glm::dvec3(s->ray.origin), glm::dvec3(s->ray.dir), s->blocked});
     if (s->blocked) continue;
-    const float specular = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, s->ray.dir, m.exponent)
-                                                             : cookTorranceSpecular(n, v, s->ray.dir, m.roughness, m.ior);
+    const float specular = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, s->l, m.exponent)
+                                                             : cookTorranceSpecular(n, v, s->l, m.roughness, m.ior);
     sum.diffuse += light.color * m.diffuse * std::min(s->nl, 1.0f);
     sum.specular += light.color * m.specular * specular;
   }
@@ -254,13 +255,14 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
 template <class T>
 std::optional<typename Tracer<T>::ShadowRay> Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n,
                                                                  const Light<T>& light) const {
-  const auto [ray, segment] = spawnRayTo(hit, light.position, options_.offset);
+  const auto [ray, segment] = spawnRayTo(hit, light.position, *scene_.arithmetic().offset);
   // A light behind the surface, as the viewer sees it, cannot light it: for a closed surface the shadow ray
   // would run into the object itself (§c.7: no direct light on the inside of glass), and an open one is lit
   // on the light's side only. A light on the point has no direction: n·l is NaN.
-  const float nl = float(glm::dot(n, ray.dir));
+  const Vec3<T> l = glm::normalize(light.position - hit.point);
+  const float nl = float(glm::dot(n, l));
   if (!(nl > 0.0f)) return std::nullopt;
-  return ShadowRay{ray, segment, nl};
+  return ShadowRay{ray, segment, l, nl};
 }
 
 template class Tracer<float>;

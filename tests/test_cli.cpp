@@ -58,7 +58,7 @@ TEST_CASE("cli: no command, an unknown command, an unknown option") {
   CHECK(errorOf({}) == "no command given\n" + rt::usage());
   CHECK(errorOf({"render2", "a.pov"}) == "unknown command 'render2'\n" + rt::usage());
   CHECK(errorOf({"sceneinfo", "a.pov", "--fast"}) == "unknown option '--fast' (see raytrace --help)");
-  CHECK(errorOf({"sceneinfo", "a.pov", "--precision=quad"}) == "--precision must be float, double or auto, found 'quad'");
+  CHECK(errorOf({"sceneinfo", "a.pov", "--precision=quad"}) == "--precision must be float, double, course or auto, found 'quad'");
   CHECK(errorOf({"sceneinfo", "a.pov", "--sphere=fast"}) == "--sphere must be textbook, robust or auto, found 'fast'");
 }
 

@@ -9,6 +9,7 @@
 #include "raytrace/precision.hpp"
 
 using rt::Arithmetic;
+using rt::OffsetPolicy;
 using rt::Precision;
 using rt::SphereMethod;
 
@@ -17,6 +18,12 @@ namespace {
 rt::SceneDesc withCamera(glm::dvec3 location) {
   rt::SceneDesc s;
   s.camera.location = location;
+  return s;
+}
+
+// The same scene in the .cli language, which never gets the course tier: the budget tiers alone.
+rt::SceneDesc asCli(rt::SceneDesc s) {
+  s.language = rt::SceneLanguage::Cli;
   return s;
 }
 
@@ -37,9 +44,15 @@ TEST_CASE("precision: budget of a simple.pov-like scene") {
   add(s, rt::PlaneDesc{{0, 1, 0}, -4});
   // Box (−2, −4, −2)…(2, 2, 14): diagonal √(4² + 6² + 16²) = √308, over radius 2.
   CHECK(rt::precisionBudget(s) == Approx(std::sqrt(308.0) / 2));
-  const Arithmetic a = rt::chooseArithmetic(s);
+  const Arithmetic a = rt::chooseArithmetic(asCli(s));
   CHECK(a.precision == Precision::Float);
   CHECK(a.sphere == SphereMethod::Textbook);
+  CHECK(a.offset == OffsetPolicy::Relative);
+  // As a POV file it is the course's own kind of scene: the course tier.
+  const Arithmetic course = rt::chooseArithmetic(s);
+  CHECK(course.precision == Precision::Course);
+  CHECK(course.sphere == SphereMethod::Textbook);
+  CHECK(course.offset == OffsetPolicy::Course);
 }
 
 TEST_CASE("precision: scenes of planes only, or nothing, have no feature to lose") {
@@ -80,7 +93,7 @@ TEST_CASE("precision: transforms scale both the extent and the features") {
 TEST_CASE("precision: the thresholds R = 50 and R = 10000") {
   // A unit sphere at the origin and the camera at (0, 0, z): box (−1, −1, −1)…(1, 1, z), so R = √(8 + (z+1)²).
   const auto choose = [](double R) {
-    rt::SceneDesc s = withCamera({0, 0, std::sqrt(R * R - 8) - 1});
+    rt::SceneDesc s = asCli(withCamera({0, 0, std::sqrt(R * R - 8) - 1}));
     add(s, rt::SphereDesc{{0, 0, 0}, 1});
     CHECK(rt::precisionBudget(s) == Approx(R));
     return rt::chooseArithmetic(s);
@@ -96,12 +109,12 @@ TEST_CASE("precision: the thresholds R = 50 and R = 10000") {
 }
 
 TEST_CASE("precision: explicit requests win") {
-  rt::SceneDesc s = withCamera({0, 0, 1e4});
+  rt::SceneDesc s = asCli(withCamera({0, 0, 1e4}));
   add(s, rt::SphereDesc{{0, 0, 0}, 1});
   const Arithmetic forced = rt::chooseArithmetic(s, {Precision::Float, SphereMethod::Textbook});
   CHECK(forced.precision == Precision::Float);
   CHECK(forced.sphere == SphereMethod::Textbook);
-  rt::SceneDesc small = withCamera({0, 0, 5});
+  rt::SceneDesc small = asCli(withCamera({0, 0, 5}));
   add(small, rt::SphereDesc{{0, 0, 0}, 1});
   const Arithmetic dbl = rt::chooseArithmetic(small, {Precision::Double, SphereMethod::Auto});
   CHECK(dbl.precision == Precision::Double);
@@ -109,7 +122,62 @@ TEST_CASE("precision: explicit requests win") {
   CHECK(rt::chooseArithmetic(small, {Precision::Auto, SphereMethod::Robust}).sphere == SphereMethod::Robust);
 }
 
+// A POV scene gets the course tier while its smallest feature is at least 0.002 (twice the course's fixed
+// offset) and its extent at most 1000 (float's ulp there is 6e-5, well below the offset).
+TEST_CASE("precision: the course tier for course-scale POV scenes only") {
+  const auto scene = [](double scale, glm::dvec3 shift) {
+    rt::SceneDesc s = withCamera(scale * glm::dvec3(0, 0, 14) + shift);
+    add(s, rt::SphereDesc{scale * glm::dvec3(0, 0, 0) + shift, scale * 2});
+    add(s, rt::SphereDesc{scale * glm::dvec3(3, 0, 0) + shift, scale * 0.01});
+    return s;
+  };
+  const auto tier = [](const rt::SceneDesc& s) { return rt::chooseArithmetic(s).precision; };
+  CHECK(tier(scene(1, glm::dvec3(0))) == Precision::Course);
+  // Scaled by 1e-3 the small sphere's radius is 1e-5, far below the offset: the budget tiers (the extent
+  // counts as at least 1, so R = 1e5 asks for double).
+  CHECK(tier(scene(1e-3, glm::dvec3(0))) == Precision::Double);
+  // Moved 1e5 away, the coordinates' rounding nears the offset: R ≈ 1e7 asks for double.
+  CHECK(tier(scene(1, glm::dvec3(1e5, 0, 0))) == Precision::Double);
+  // A .cli scene never gets it, at any scale.
+  CHECK(tier(asCli(scene(1, glm::dvec3(0)))) == Precision::Float);
+  // The thresholds themselves: a feature of exactly 0.002 and an extent of exactly 1000 are inside.
+  rt::SceneDesc thin = scene(1, glm::dvec3(0));
+  thin.objects[1].shape = rt::SphereDesc{{3, 0, 0}, 0.002};
+  CHECK(tier(thin) == Precision::Course);
+  thin.objects[1].shape = rt::SphereDesc{{3, 0, 0}, 0.0019};
+  CHECK(tier(thin) == Precision::Float);
+  rt::SceneDesc far = withCamera({0, 0, 0});
+  add(far, rt::PlaneDesc{{0, 0, 1}, -1000});  // its point nearest the origin, (0, 0, −1000), stands in
+  CHECK(rt::sceneScale(far).extent == 1000.0);
+  CHECK(tier(far) == Precision::Course);
+  far.objects[0].shape = rt::PlaneDesc{{0, 0, 1}, -1000.5};
+  CHECK(tier(far) == Precision::Float);
+}
+
+TEST_CASE("precision: explicit requests win over the course tier, each on its own") {
+  rt::SceneDesc s = withCamera({0, 0, 14});
+  add(s, rt::SphereDesc{{0, 0, 0}, 2});
+  const Arithmetic robust = rt::chooseArithmetic(s, {Precision::Auto, SphereMethod::Robust});
+  CHECK(robust.precision == Precision::Course);
+  CHECK(robust.sphere == SphereMethod::Robust);
+  CHECK(robust.offset == OffsetPolicy::Course);
+  const Arithmetic relative = rt::chooseArithmetic(s, {Precision::Auto, SphereMethod::Auto, OffsetPolicy::Relative});
+  CHECK(relative.precision == Precision::Course);
+  CHECK(relative.sphere == SphereMethod::Textbook);
+  CHECK(relative.offset == OffsetPolicy::Relative);
+  const Arithmetic dbl = rt::chooseArithmetic(s, {Precision::Double});
+  CHECK(dbl.precision == Precision::Double);
+  CHECK(dbl.sphere == SphereMethod::Robust);
+  CHECK(dbl.offset == OffsetPolicy::Relative);
+  // Asked for, the course tier applies outside its domain too (a .cli scene here), with its own offset.
+  const Arithmetic course = rt::chooseArithmetic(asCli(s), {Precision::Course});
+  CHECK(course.precision == Precision::Course);
+  CHECK(course.sphere == SphereMethod::Textbook);
+  CHECK(course.offset == OffsetPolicy::Course);
+}
+
 TEST_CASE("precision: withPrecision calls the lambda with the chosen type") {
+  CHECK(rt::withPrecision(Precision::Course, [](auto t) { return sizeof(t); }) == sizeof(float));
   CHECK(rt::withPrecision(Precision::Float, [](auto t) { return sizeof(t); }) == sizeof(float));
   CHECK(rt::withPrecision(Precision::Double, [](auto t) { return sizeof(t); }) == sizeof(double));
 }

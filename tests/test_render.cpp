@@ -198,7 +198,7 @@ TEST_CASE("Rendered images are finite whatever the flags and materials", "[rende
             flags.brdf = brdf;
             flags.fresnel = fresnel;
             flags.beers = beers;
-            flags.offset = offset;
+            flags.arithmetic.offset = offset;
             CAPTURE(int(brdf), fresnel, beers, int(offset));
             CHECK(allFinite(render(scene, 40, 30, flags)));
           }

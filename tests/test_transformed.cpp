@@ -1,3 +1,4 @@
+#include <cmath>
 #include <memory>
 
 #include <catch2/catch.hpp>
@@ -162,4 +163,41 @@ TEST_CASE("a sphere moved by a similarity becomes a plain sphere; other transfor
   CHECK(hit->t == Approx(8.5));
   CHECK(hit->object->id() == 1);
   CHECK(dynamic_cast<const Transformed<double>*>(scene.objects().at(1).get()));
+}
+
+// The course tier (precision.hpp) keeps the similarity transform, in the float matrix the reference composes
+// from the file's steps, and reports the hit as the reference does: the point o + t·d, the normal of the
+// sphere at M⁻¹ of that point, carried out by (M⁻¹)ᵀ.
+TEST_CASE("the course tier intersects the transformed ray and takes the normal at M⁻¹·(o + t·d)",
+          "[transformed][scene]") {
+  const SceneDesc desc = parsePov(std::string(kCamera) +
+                                      "sphere { <1, 0, 0>, 2 rotate <0, 90, 0> scale 0.5 translate <1, 2, 3> }\n",
+                                  "spheres.pov");
+  const Scene<float> scene(desc, Arithmetic{Precision::Course, SphereMethod::Textbook, OffsetPolicy::Course});
+  REQUIRE(dynamic_cast<const Transformed<float>*>(scene.objects().at(0).get()));
+  const Ray<float> ray{{1.1f, 2.2f, 12}, {0, 0, -1}};
+  const auto hit = scene.closestHit(ray, Interval<float>{});
+  REQUIRE(hit);
+  // The world sphere is centred at (1, 2, 2.5) with radius 1; the ray passes √0.05 from its axis.
+  CHECK(hit->t == Approx(9.5 - std::sqrt(0.95)).margin(1e-5));
+  CHECK(hit->point == ray.at(hit->t));
+  const glm::mat4 objectFromWorld = glm::inverse(composeTransforms<float>(desc.objects.at(0).transforms));
+  const glm::vec3 local(objectFromWorld * glm::vec4(hit->point, 1));
+  const glm::vec3 objectNormal = glm::normalize(local - glm::vec3(1, 0, 0));
+  CHECK(hit->normal == glm::normalize(glm::transpose(glm::mat3(objectFromWorld)) * objectNormal));
+}
+
+// A scene built in code sets worldFromObject alone: the course tier uses it as the matrix.
+TEST_CASE("the course tier falls back to worldFromObject when no steps are recorded", "[transformed][scene]") {
+  SceneDesc desc;
+  ObjectDesc o;
+  o.shape = SphereDesc{{0, 0, 0}, 1};
+  o.worldFromObject = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -5));
+  desc.objects.push_back(o);
+  const Scene<float> scene(desc, Arithmetic{Precision::Course, SphereMethod::Textbook, OffsetPolicy::Course});
+  const auto hit = scene.closestHit(Ray<float>{{0, 0, 0}, {0, 0, -1}}, Interval<float>{});
+  REQUIRE(hit);
+  CHECK(hit->t == 4.0f);
+  CHECK(hit->point == glm::vec3(0, 0, -4));
+  CHECK(hit->normal == glm::vec3(0, 0, 1));
 }

@@ -20,6 +20,14 @@ template <class T> class Object {
   // surface (re-projected, not just ray.at(t)) and `normal` is the unit outward normal at it.
   virtual std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const = 0;
 
+  // The outward normal at `point`, a point on the surface at or next to `hit`: the course tier takes a
+  // transformed object's normal where its world hit point maps back to (Transformed). A sphere computes it
+  // from the point, as the course's reference does; the other shapes keep the hit's, the same on a flat face.
+  virtual Vec3<T> normalAt(const Vec3<T>& point, const Hit<T>& hit) const {
+    static_cast<void>(point);
+    return hit.normal;
+  }
+
   // World-space bounds, or nothing for unbounded shapes (planes), which stay outside any hierarchy.
   virtual std::optional<Aabb<T>> bounds() const = 0;
 

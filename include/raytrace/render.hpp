@@ -16,8 +16,7 @@ namespace rt {
 
 // Everything the command line can change about how a picture is made.
 struct RenderOptions {
-  Arithmetic arithmetic;                        // --precision, --sphere
-  OffsetPolicy offset = OffsetPolicy::Relative;  // --offset: spawned-ray origins
+  Arithmetic arithmetic;                         // --precision, --sphere, --offset
   Brdf brdf = Brdf::BlinnPhong;                  // -altbrdf: Cook-Torrance (§c.2)
   bool fresnel = false;                          // -fresnel: Schlick-weighted reflection and refraction (§c.5)
   bool beers = false;                            // -beers: Beer's-law absorption instead of the ×C tint (§c.6)

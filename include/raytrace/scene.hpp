@@ -46,6 +46,10 @@ template <class T> class Scene {
   const std::optional<Bvh<T>>& hierarchy() const { return hierarchy_; }
 
  private:
+  // The point a hit reports: the shape's own, re-projected onto the surface, except in the course tier, which
+  // takes o + t·d as its reference does (precision.hpp).
+  Vec3<T> hitPoint(const Ray<T>& ray, const Hit<T>& hit) const;
+
   const SceneDesc& desc_;
   Arithmetic arithmetic_;
   std::vector<Light<T>> lights_;

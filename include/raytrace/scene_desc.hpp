@@ -10,6 +10,7 @@
 
 #include "raytrace/error.hpp"
 #include "raytrace/material.hpp"
+#include "raytrace/transform.hpp"
 
 namespace rt {
 
@@ -45,6 +46,9 @@ struct ObjectDesc {
   Material material;
   glm::dmat4 worldFromObject{1.0};  // translate/rotate/scale composed in file order (§c.10)
   SourceLoc loc;                     // where the object starts, for messages
+  // The POV transforms as written, whose composeTransforms<double> is worldFromObject; empty when a scene
+  // built in code sets worldFromObject alone, which then stands in for them (Scene's course tier).
+  std::vector<TransformStep> transforms;
 };
 
 // How a scene language wants its pictures made: the conventions that reproduce each course's reference

@@ -20,9 +20,12 @@ enum class OffsetPolicy {
   // Move the re-projected hit point along the normal, to the side the ray leaves by, by kRayEpsilon
   // relative to the point's magnitude (Mitsuba 3 `offset_p`; stability.md F4a). Zero re-hits at any scale.
   Relative,
-  // The course's P + 0.001·d (csc473-course.md §c.8), which its p3/p4 printrays outputs encode: a fixed
-  // t-min of 1e-3. Fails at large coordinates and grazing angles (stability.md F4, F5); only for matching
-  // those digits, and as a point of comparison on the speed-vs-accuracy chart.
+  // The course reference's P ± 0.001·N: 0.001 along the normal, to the side the ray leaves by (the 2018
+  // reference renderer that made the p5 images; the course tier's offset, precision.hpp). Fails once the
+  // coordinates' rounding nears 0.001 or a feature is thinner than it (stability.md F4, F5; the tier's
+  // domain, chooseArithmetic()). An earlier reference (2018-05-17) moved along the ray instead, P + 0.001·d
+  // (csc473-course.md §c.8): the p3/p4 printrays texts were made by it and now differ in their 4th decimals
+  // (optional tests).
   Course,
   // A fixed 1e-4 along the normal, the other common epsilon. Fails once ulp(|p|) exceeds it (|p| ≳ 1e3 in
   // float, stability.md F4); for the chart only.
@@ -64,7 +67,7 @@ template <class T> Vec3<T> spawnOrigin(const Hit<T>& hit, const Vec3<T>& dir, Of
   const Vec3<T> outward = glm::dot(hit.normal, dir) > T(0) ? hit.normal : -hit.normal;
   switch (policy) {
     case OffsetPolicy::Course:
-      return hit.point + T(kCourseEpsilon) * dir;
+      return hit.point + T(kCourseEpsilon) * outward;
     case OffsetPolicy::FixedNormal:
       return hit.point + T(kFixedNormalEpsilon) * outward;
     case OffsetPolicy::WaechterBinder:
@@ -79,12 +82,18 @@ template <class T> Ray<T> spawnRay(const Hit<T>& hit, const Vec3<T>& dir, Offset
   return Ray<T>{spawnOrigin(hit, dir, policy), dir};
 }
 
-// A ray from `hit` toward `target` with the interval that ends just before it: the shadow segment.
+// A ray from `hit` toward `target` with the interval that ends just before it: the shadow segment. The
+// direction from the hit point picks the side to leave by. The course reference then aims from its offset
+// origin, so its ray reaches the target itself; the other policies keep that direction, a ray parallel to the
+// one from the hit point: aimed from its origin at a target nearer the surface than the origin, it would
+// run back down to the surface, and scale-aware offsets are too small for that (tests/test_stability_spawn.cpp
+// counts it).
 template <class T>
 std::pair<Ray<T>, Interval<T>> spawnRayTo(const Hit<T>& hit, const Vec3<T>& target, OffsetPolicy policy) {
   const Vec3<T> dir = glm::normalize(target - hit.point);
-  const Ray<T> ray = spawnRay(hit, dir, policy);
-  const T dist = glm::length(target - ray.origin);
+  const Vec3<T> origin = spawnOrigin(hit, dir, policy);
+  const Ray<T> ray{origin, policy == OffsetPolicy::Course ? glm::normalize(target - origin) : dir};
+  const T dist = glm::length(target - origin);
   return {ray, Interval<T>{T(0), dist * (T(1) - kShadowEpsilon<T>)}};
 }
 

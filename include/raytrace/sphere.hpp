@@ -11,6 +11,7 @@ template <class T> class Sphere final : public Object<T> {
       : Object<T>(material, id), center_(center), radius_(radius), robust_(method != SphereMethod::Textbook) {}
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
+  Vec3<T> normalAt(const Vec3<T>& point, const Hit<T>& hit) const override;
   std::optional<Aabb<T>> bounds() const override;
 
  private:

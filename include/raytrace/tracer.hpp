@@ -37,8 +37,9 @@ template <class T> class Tracer {
   };
 
   struct ShadowRay {
-    Ray<T> ray;            // its direction is l, the unit vector to the light
+    Ray<T> ray;            // aimed at the light from its offset origin (spawnRayTo)
     Interval<T> segment;
+    Vec3<T> l;             // the unit vector from the point itself to the light, which shading uses
     float nl;              // n·l
     bool blocked = false;  // the answer, once asked
   };

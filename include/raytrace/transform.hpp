@@ -1,0 +1,48 @@
+// A POV object's transforms as the file writes them, and the matrix they compose to (csc473-course.md §c.10).
+// Kept as steps so the matrix can be composed in either precision: the course tier (precision.hpp) needs the
+// very float matrix the course's reference renderer builds, rounding included.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace rt {
+
+struct TransformStep {
+  enum class Kind { Translate, Scale, Rotate } kind;
+  glm::dvec3 v;  // the offset, the scale factors, or the rotation angles about x, y and z in degrees
+};
+
+// M = step_n ⋯ step_1: each step multiplies on the left, in T arithmetic, the way the course's reference
+// builds it. `rotate <x,y,z>` is R = Rx·Ry·Rz, itself built from the identity by left-multiplying Rz, Ry, Rx
+// in turn, so it turns about z first (§c.10; the opposite of POV-Ray's order).
+template <class T> glm::mat<4, 4, T, glm::defaultp> composeTransforms(const std::vector<TransformStep>& steps) {
+  using M4 = glm::mat<4, 4, T, glm::defaultp>;
+  using V3 = glm::vec<3, T, glm::defaultp>;
+  const M4 identity(T(1));
+  M4 m = identity;
+  for (const TransformStep& s : steps) {
+    const V3 v(s.v);
+    switch (s.kind) {
+      case TransformStep::Kind::Translate:
+        m = glm::translate(identity, v) * m;
+        break;
+      case TransformStep::Kind::Scale:
+        m = glm::scale(identity, v) * m;
+        break;
+      case TransformStep::Kind::Rotate: {
+        M4 r = identity;
+        r = glm::rotate(identity, glm::radians(v.z), V3(0, 0, 1)) * r;
+        r = glm::rotate(identity, glm::radians(v.y), V3(0, 1, 0)) * r;
+        r = glm::rotate(identity, glm::radians(v.x), V3(1, 0, 0)) * r;
+        m = r * m;
+        break;
+      }
+    }
+  }
+  return m;
+}
+
+}  // namespace rt
