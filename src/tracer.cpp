@@ -255,13 +255,13 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
 template <class T>
 std::optional<typename Tracer<T>::ShadowRay> Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n,
                                                                  const Light<T>& light) const {
-  const auto [ray, segment] = spawnRayTo(hit, light.position, *scene_.arithmetic().offset);
   // A light behind the surface, as the viewer sees it, cannot light it: for a closed surface the shadow ray
   // would run into the object itself (§c.7: no direct light on the inside of glass), and an open one is lit
   // on the light's side only. A light on the point has no direction: n·l is NaN.
   const Vec3<T> l = glm::normalize(light.position - hit.point);
   const float nl = float(glm::dot(n, l));
   if (!(nl > 0.0f)) return std::nullopt;
+  const auto [ray, segment] = spawnRayTo(hit, light.position, *scene_.arithmetic().offset);
   return ShadowRay{ray, segment, l, nl};
 }
 
