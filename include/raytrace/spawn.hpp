@@ -87,14 +87,19 @@ template <class T> Ray<T> spawnRay(const Hit<T>& hit, const Vec3<T>& dir, Offset
 // origin, so its ray reaches the target itself; the other policies keep that direction, a ray parallel to the
 // one from the hit point: aimed from its origin at a target nearer the surface than the origin, it would
 // run back down to the surface, and scale-aware offsets are too small for that (tests/test_stability_spawn.cpp
-// counts it).
+// counts it). `dir` is normalize(target − hit.point), for a caller that has it already.
 template <class T>
-std::pair<Ray<T>, Interval<T>> spawnRayTo(const Hit<T>& hit, const Vec3<T>& target, OffsetPolicy policy) {
-  const Vec3<T> dir = glm::normalize(target - hit.point);
+std::pair<Ray<T>, Interval<T>> spawnRayTo(const Hit<T>& hit, const Vec3<T>& target, const Vec3<T>& dir,
+                                          OffsetPolicy policy) {
   const Vec3<T> origin = spawnOrigin(hit, dir, policy);
   const Ray<T> ray{origin, policy == OffsetPolicy::Course ? glm::normalize(target - origin) : dir};
   const T dist = glm::length(target - origin);
   return {ray, Interval<T>{T(0), dist * (T(1) - kShadowEpsilon<T>)}};
+}
+
+template <class T>
+std::pair<Ray<T>, Interval<T>> spawnRayTo(const Hit<T>& hit, const Vec3<T>& target, OffsetPolicy policy) {
+  return spawnRayTo(hit, target, glm::normalize(target - hit.point), policy);
 }
 
 }  // namespace rt
