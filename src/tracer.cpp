@@ -261,7 +261,8 @@ std::optional<typename Tracer<T>::ShadowRay> Tracer<T>::shadowRay(const Hit<T>& 
   const Vec3<T> l = glm::normalize(light.position - hit.point);
   const float nl = float(glm::dot(n, l));
   if (!(nl > 0.0f)) return std::nullopt;
-  const auto [ray, segment] = spawnRayTo(hit, light.position, l, *scene_.arithmetic().offset);
+  // n faces the light (n·l > 0), so it picks the side to leave by as l would.
+  const auto [ray, segment] = spawnRayTo(hit, light.position, l, n, *scene_.arithmetic().offset);
   return ShadowRay{ray, segment, l, nl};
 }
 

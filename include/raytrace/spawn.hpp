@@ -87,11 +87,13 @@ template <class T> Ray<T> spawnRay(const Hit<T>& hit, const Vec3<T>& dir, Offset
 // origin, so its ray reaches the target itself; the other policies keep that direction, a ray parallel to the
 // one from the hit point: aimed from its origin at a target nearer the surface than the origin, it would
 // run back down to the surface, and scale-aware offsets are too small for that (tests/test_stability_spawn.cpp
-// counts it). `dir` is normalize(target − hit.point), for a caller that has it already.
+// counts it). `dir` is normalize(target − hit.point) and `side` a vector on the side of the surface to leave
+// by: `dir` itself, or a shading normal already known to face the target, which lets the origin be found
+// without waiting for dir's square root.
 template <class T>
 std::pair<Ray<T>, Interval<T>> spawnRayTo(const Hit<T>& hit, const Vec3<T>& target, const Vec3<T>& dir,
-                                          OffsetPolicy policy) {
-  const Vec3<T> origin = spawnOrigin(hit, dir, policy);
+                                          const Vec3<T>& side, OffsetPolicy policy) {
+  const Vec3<T> origin = spawnOrigin(hit, side, policy);
   const Ray<T> ray{origin, policy == OffsetPolicy::Course ? glm::normalize(target - origin) : dir};
   const T dist = glm::length(target - origin);
   return {ray, Interval<T>{T(0), dist * (T(1) - kShadowEpsilon<T>)}};
@@ -99,7 +101,8 @@ std::pair<Ray<T>, Interval<T>> spawnRayTo(const Hit<T>& hit, const Vec3<T>& targ
 
 template <class T>
 std::pair<Ray<T>, Interval<T>> spawnRayTo(const Hit<T>& hit, const Vec3<T>& target, OffsetPolicy policy) {
-  return spawnRayTo(hit, target, glm::normalize(target - hit.point), policy);
+  const Vec3<T> dir = glm::normalize(target - hit.point);
+  return spawnRayTo(hit, target, dir, dir, policy);
 }
 
 }  // namespace rt
