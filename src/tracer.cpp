@@ -244,9 +244,10 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
     if (!shadows) s->blocked = scene_.occluded(s->ray, s->segment, &lastBlocker_[i]);
     if (record) record->shadows.push_back({glm::dvec3(s->ray.origin), glm::dvec3(s->ray.dir), s->blocked});
     if (s->blocked) continue;
+    sum.diffuse += light.color * m.diffuse * std::min(s->nl, 1.0f);
+    if (m.specular == Color(0)) continue;  // a matte surface: no power to take
     const float specular = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, s->l, m.exponent)
                                                              : cookTorranceSpecular(n, v, s->l, m.roughness, m.ior);
-    sum.diffuse += light.color * m.diffuse * std::min(s->nl, 1.0f);
     sum.specular += light.color * m.specular * specular;
   }
   return sum;
