@@ -42,6 +42,8 @@ KNOBS = [
     ("precision", {"precision": "float"}),
     ("precision", {"precision": "float", "sphere": "textbook"}),
     ("sphere", {"sphere": "textbook"}),
+    # The course tier: the course reference's float arithmetic with its 0.001 offsets (precision.hpp).
+    ("precision", {"precision": "course", "offset": "course"}),
     ("offset", {"offset": "course"}),
     ("offset", {"offset": "normal"}),
     ("offset", {"offset": "wb"}),
