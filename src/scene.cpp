@@ -105,34 +105,20 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
   }
 }
 
+// One ray is a packet of one.
 template <class T>
 std::optional<Hit<T>> Scene<T>::closestHit(const Ray<T>& ray, Interval<T> range) const {
-  std::optional<Hit<T>> closest;
-  for (const Object<T>* object : scanned_) {
-    // Narrowing to the strict interval keeps the earlier object on an exact tie.
-    if (auto hit = object->intersect(ray, range)) {
-      range.max = hit->t;
-      closest = hit;
-    }
-  }
-  if (hierarchy_) closest = hierarchy_->closestHit(ray, range, closest);
-  if (closest) closest->point = hitPoint(ray, *closest);
-  return closest;
+  std::optional<Hit<T>> hit;
+  closestHits(&ray, 1, range, &hit);
+  return hit;
 }
 
 template <class T>
 bool Scene<T>::occluded(const Ray<T>& ray, Interval<T> range, const Object<T>** lastBlocker) const {
-  if (lastBlocker && *lastBlocker && (*lastBlocker)->intersect(ray, range)) return true;
-  const Object<T>* blocker = nullptr;
-  for (const Object<T>* object : scanned_) {
-    if (object->intersect(ray, range)) {
-      blocker = object;
-      break;
-    }
-  }
-  if (!blocker && hierarchy_) blocker = hierarchy_->blocker(ray, range);
-  if (lastBlocker && blocker) *lastBlocker = blocker;
-  return blocker != nullptr;
+  const Object<T>* none = nullptr;
+  bool blocked;
+  occluded(&ray, &range, 1, &blocked, lastBlocker ? lastBlocker : &none);
+  return blocked;
 }
 
 template <class T>
@@ -141,6 +127,7 @@ void Scene<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::op
     hits[i].reset();
     Interval<T> narrowed = range;
     for (const Object<T>* object : scanned_) {
+      // Narrowing to the strict interval keeps the earlier object on an exact tie.
       if (auto hit = object->intersect(rays[i], narrowed)) {
         narrowed.max = hit->t;
         hits[i] = hit;
