@@ -118,7 +118,8 @@ template <class T> void Tracer<T>::block(const Camera<T>& camera, int x0, int y0
     }
     for (int i = 0; i < count; ++i) {
       colors[first + size_t(i)] =
-          follow(packet[i], hits[i], RayRecord::Kind::Primary, 0, 1.0f, nullptr, &shadows[size_t(i) * lights]).color;
+          follow(packet[i], hits[i], RayRecord::Kind::Primary, 0, 1.0f, nullptr, shadows.data() + size_t(i) * lights)
+              .color;
     }
   }
   size_t next = 0;
