@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <tuple>
 
 #include <glm/gtc/constants.hpp>
 
@@ -109,8 +110,12 @@ template <class T> void Tracer<T>::block(const Camera<T>& camera, int x0, int y0
       int index[kPacket], m = 0;
       for (int i = 0; i < count; ++i) {
         auto& s = shadows[size_t(i) * lights + l];
-        s = hits[i] ? shadowRay(*hits[i], viewerSide(*hits[i], packet[i]), scene_.lights()[l]) : std::nullopt;
-        if (s) query[m] = s->ray, segments[m] = s->segment, index[m++] = i;
+        s.emplace();
+        if (!hits[i] || !shadowRay(*hits[i], viewerSide(*hits[i], packet[i]), scene_.lights()[l], *s)) {
+          s.reset();
+          continue;
+        }
+        query[m] = s->ray, segments[m] = s->segment, index[m++] = i;
       }
       bool answers[kPacket];
       scene_.occluded(query, segments, m, answers, &lastBlocker_[l]);
@@ -240,9 +245,15 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
   Local sum;
   for (size_t i = 0; i < scene_.lights().size(); ++i) {
     const Light<T>& light = scene_.lights()[i];
-    auto s = shadows ? shadows[i] : shadowRay(hit, n, light);
+    ShadowRay own;
+    const ShadowRay* s = nullptr;
+    if (shadows) {
+      if (shadows[i]) s = &*shadows[i];
+    } else if (shadowRay(hit, n, light, own)) {
+      own.blocked = scene_.occluded(own.ray, own.segment, &lastBlocker_[i]);
+      s = &own;
+    }
     if (!s) continue;
-    if (!shadows) s->blocked = scene_.occluded(s->ray, s->segment, &lastBlocker_[i]);
     if (record) record->shadows.push_back({glm::dvec3(s->ray.origin), glm::dvec3(s->ray.dir), s->blocked});
     if (s->blocked) continue;
     sum.diffuse += light.color * m.diffuse * std::min(s->nl, 1.0f);
@@ -255,17 +266,17 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
 }
 
 template <class T>
-std::optional<typename Tracer<T>::ShadowRay> Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n,
-                                                                 const Light<T>& light) const {
+bool Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, ShadowRay& out) const {
   // A light behind the surface, as the viewer sees it, cannot light it: for a closed surface the shadow ray
   // would run into the object itself (§c.7: no direct light on the inside of glass), and an open one is lit
   // on the light's side only. A light on the point has no direction: n·l is NaN.
-  const Vec3<T> l = glm::normalize(light.position - hit.point);
-  const float nl = float(glm::dot(n, l));
-  if (!(nl > 0.0f)) return std::nullopt;
+  out.l = glm::normalize(light.position - hit.point);
+  out.nl = float(glm::dot(n, out.l));
+  if (!(out.nl > 0.0f)) return false;
   // n faces the light (n·l > 0), so it picks the side to leave by as l would.
-  const auto [ray, segment] = spawnRayTo(hit, light.position, l, n, *scene_.arithmetic().offset);
-  return ShadowRay{ray, segment, l, nl};
+  std::tie(out.ray, out.segment) = spawnRayTo(hit, light.position, out.l, n, *scene_.arithmetic().offset);
+  out.blocked = false;
+  return true;
 }
 
 template class Tracer<float>;

@@ -55,9 +55,11 @@ template <class T> class Tracer {
   // shading normal on the viewer's side, `v` the unit vector to the viewer.
   Local direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
                const std::optional<ShadowRay>* shadows);
-  // The shadow ray toward `light`, or nothing when the light cannot light the point from the viewer's side
-  // `n`: a light behind the surface as the viewer sees it, or on the point itself.
-  std::optional<ShadowRay> shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light) const;
+  // The shadow ray toward `light`, or false when the light cannot light the point from the viewer's side `n`:
+  // a light behind the surface as the viewer sees it, or on the point itself.
+  // It is written into `out` in place (it is made for every hit and light, and a returned copy would be
+  // read back before its bytes have settled: a store-forwarding stall per ray).
+  bool shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, ShadowRay& out) const;
   // Whether a secondary ray of accumulated weight `weight` at `depth` is worth tracing (stability.md F12).
   bool matters(float weight, int depth) const;
 
