@@ -5,7 +5,6 @@
 #include <limits>
 #include <memory>
 #include <optional>
-#include <tuple>
 
 #include <glm/gtc/constants.hpp>
 
@@ -274,7 +273,7 @@ bool Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& l
   out.nl = float(glm::dot(n, out.l));
   if (!(out.nl > 0.0f)) return false;
   // n faces the light (n·l > 0), so it picks the side to leave by as l would.
-  std::tie(out.ray, out.segment) = spawnRayTo(hit, light.position, out.l, n, *scene_.arithmetic().offset);
+  spawnRayTo(hit, light.position, out.l, n, *scene_.arithmetic().offset, out.ray, out.segment);
   out.blocked = false;
   return true;
 }

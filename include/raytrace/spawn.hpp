@@ -89,20 +89,22 @@ template <class T> Ray<T> spawnRay(const Hit<T>& hit, const Vec3<T>& dir, Offset
 // run back down to the surface, and scale-aware offsets are too small for that (tests/test_stability_spawn.cpp
 // counts it). `dir` is normalize(target − hit.point) and `side` a vector on the side of the surface to leave
 // by: `dir` itself, or a shading normal already known to face the target, which lets the origin be found
-// without waiting for dir's square root.
+// without waiting for dir's square root. The ray and segment are written in place: the tracer makes one for
+// every hit and light.
 template <class T>
-std::pair<Ray<T>, Interval<T>> spawnRayTo(const Hit<T>& hit, const Vec3<T>& target, const Vec3<T>& dir,
-                                          const Vec3<T>& side, OffsetPolicy policy) {
-  const Vec3<T> origin = spawnOrigin(hit, side, policy);
-  const Ray<T> ray{origin, policy == OffsetPolicy::Course ? glm::normalize(target - origin) : dir};
-  const T dist = glm::length(target - origin);
-  return {ray, Interval<T>{T(0), dist * (T(1) - kShadowEpsilon<T>)}};
+void spawnRayTo(const Hit<T>& hit, const Vec3<T>& target, const Vec3<T>& dir, const Vec3<T>& side,
+                OffsetPolicy policy, Ray<T>& ray, Interval<T>& segment) {
+  ray.origin = spawnOrigin(hit, side, policy);
+  ray.dir = policy == OffsetPolicy::Course ? glm::normalize(target - ray.origin) : dir;
+  segment = {T(0), glm::length(target - ray.origin) * (T(1) - kShadowEpsilon<T>)};
 }
 
 template <class T>
 std::pair<Ray<T>, Interval<T>> spawnRayTo(const Hit<T>& hit, const Vec3<T>& target, OffsetPolicy policy) {
   const Vec3<T> dir = glm::normalize(target - hit.point);
-  return spawnRayTo(hit, target, dir, dir, policy);
+  std::pair<Ray<T>, Interval<T>> out;
+  spawnRayTo(hit, target, dir, dir, policy, out.first, out.second);
+  return out;
 }
 
 }  // namespace rt
