@@ -110,11 +110,12 @@ template <class T> void Tracer<T>::block(const Camera<T>& camera, int x0, int y0
       for (int i = 0; i < count; ++i) {
         auto& s = shadows[size_t(i) * lights + l];
         s.emplace();
-        if (!hits[i] || !shadowRay(*hits[i], viewerSide(*hits[i], packet[i]), scene_.lights()[l], *s)) {
-          s.reset();
-          continue;
-        }
-        query[m] = s->ray, segments[m] = s->segment, index[m++] = i;
+        if (!hits[i] || !shadowRay(*hits[i], viewerSide(*hits[i], packet[i]), scene_.lights()[l], *s)) s.reset();
+      }
+      // Gathered in a second pass: copied right after it is written, a ray is read back before its stores
+      // have left the store buffer, and each such read stalls.
+      for (int i = 0; i < count; ++i) {
+        if (const auto& s = shadows[size_t(i) * lights + l]) query[m] = s->ray, segments[m] = s->segment, index[m++] = i;
       }
       bool answers[kPacket];
       scene_.occluded(query, segments, m, answers, &lastBlocker_[l]);
