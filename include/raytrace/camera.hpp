@@ -11,8 +11,15 @@ template <class T> class Camera {
  public:
   Camera(const CameraDesc& desc, int width, int height);
 
-  // The eye ray through a point of the image given in pixel units from the lower-left image corner.
-  Ray<T> ray(T px, T py) const;
+  // The eye ray through a point of the image given in pixel units from the lower-left image corner:
+  // d = Us·right + Vs·up + l̂ with Us = −½ + px/w, Vs = −½ + py/h (lecture 2 via §d); right and up are used as
+  // given, so `right` carries the aspect ratio and nothing is re-orthogonalized. (Inline: a ray returned
+  // through memory and copied on would be read back before its stores settle, once per sample.)
+  Ray<T> ray(T px, T py) const {
+    const T us = T(-0.5) + px / T(width_);
+    const T vs = T(-0.5) + py / T(height_);
+    return Ray<T>{origin_, glm::normalize(us * right_ + vs * up_ + forward_)};
+  }
   // The eye ray of pixel (x, y), through the pixel's own sample point (CameraDesc::pixelOffset).
   Ray<T> pixelRay(int x, int y) const { return sampleRay(x, y, 0, 0, 1); }
   // Sub-sample (i, j) of an n × n grid over pixel (x, y), centred on the pixel's sample point (§c.12: the
