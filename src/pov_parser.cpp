@@ -1,5 +1,6 @@
 #include "raytrace/pov_parser.hpp"
 
+#include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -81,18 +82,26 @@ class PovParser {
   }
 
   // `<a, b, …>` with between minN and maxN components.
-  std::vector<double> vector(int minN, int maxN, const std::string& what) {
+  // The components of a vector: at most four are ever wanted, and `size` counts all that were written.
+  struct Components {
+    std::array<double, 4> v{};
+    size_t size = 0;
+    double operator[](size_t i) const { return v[i]; }
+  };
+
+  // `<a, b, …>` with between minN and maxN (at most 4) components.
+  Components vector(int minN, int maxN, const std::string& what) {
     // The messages are put together only for an error: this runs for every vector of every object.
     const Token& open = next();
     if (!isPunct(open, '<')) throw ParseError(open.loc, "expected '<' to start " + what + ", found " + open.quoted());
-    std::vector<double> v;
-    v.reserve(size_t(maxN));
+    Components v;
     for (;;) {
       const Token& t = next();
       if (t.kind != Token::Kind::Number) {
         throw ParseError(t.loc, "expected a number in " + what + ", found " + t.quoted());
       }
-      v.push_back(t.number);
+      if (v.size < v.v.size()) v.v[v.size] = t.number;
+      ++v.size;
       if (!isPunct(peek(), ',')) break;
       next();
     }
@@ -100,9 +109,9 @@ class PovParser {
     if (!isPunct(close, '>')) {
       throw ParseError(close.loc, "expected ',' or '>' in " + what + ", found " + close.quoted());
     }
-    if (int(v.size()) < minN || int(v.size()) > maxN) {
+    if (int(v.size) < minN || int(v.size) > maxN) {
       const std::string want = minN == maxN ? std::to_string(minN) : std::to_string(minN) + " or " + std::to_string(maxN);
-      throw ParseError(close.loc, what + " needs " + want + " components, found " + std::to_string(v.size()));
+      throw ParseError(close.loc, what + " needs " + want + " components, found " + std::to_string(v.size));
     }
     return v;
   }
@@ -123,11 +132,11 @@ class PovParser {
     }
     const SourceLoc at = peek().loc;
     const auto v = vector(3, 4, "an '" + t.text + "' colour");
-    if (t.text == "rgb" && v.size() == 4) {
+    if (t.text == "rgb" && v.size == 4) {
       scene_.warnings.push_back(at.str() + ": warning: 'rgb' with 4 values; the fourth is read as the filter");
     }
     rgb = Color(float(v[0]), float(v[1]), float(v[2]));
-    filter = v.size() == 4 ? float(v[3]) : 0.0f;
+    filter = v.size == 4 ? float(v[3]) : 0.0f;
     if (filter < 0 || filter > 1) throw ParseError(at, "filter must be between 0 and 1, found " + num(filter));
   }
 
