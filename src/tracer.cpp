@@ -83,11 +83,18 @@ Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRec
 template <class T> void Tracer<T>::block(const Camera<T>& camera, int x0, int y0, int x1, int y1, Image& image) {
   const int n = options_.samples;
   std::vector<Ray<T>>& rays = rays_;  // in pixel() order: pixel by pixel, row by row, then sample by sample
-  rays.clear();
+  rays.resize(size_t(x1 - x0) * size_t(y1 - y0) * size_t(n * n));
+  size_t k = 0;
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x) {
       for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) rays.push_back(camera.sampleRay(x, y, i, j, n));
+        for (int j = 0; j < n; ++j) {
+          // Stored member by member from registers: push_back would store the ray on the stack and copy it
+          // from there at once, a store-forwarding stall per sample.
+          const Ray<T> ray = camera.sampleRay(x, y, i, j, n);
+          rays[k].origin = ray.origin;
+          rays[k++].dir = ray.dir;
+        }
       }
     }
   }
