@@ -213,19 +213,6 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
   }
 }
 
-// One ray is a packet of one.
-template <class T>
-std::optional<Hit<T>> Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>> best) const {
-  closestHits(&ray, 1, range, &best);
-  return best;
-}
-
-template <class T> const Object<T>* Bvh<T>::blocker(const Ray<T>& ray, Interval<T> range) const {
-  const Object<T>* found = nullptr;
-  blockers(&ray, &range, 1u, &found);
-  return found;
-}
-
 // The children of `node` that each ray of `rays` enters: childRays[k] has bit i set when ray i enters child k,
 // and childEntry[k] is the nearest of their entry distances.
 template <class T>
@@ -254,9 +241,11 @@ void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::opti
   T limit[kPacket];
   for (int i = 0; i < n; ++i) {
     invDir[i] = T(1) / rays[i].dir;
+    // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
     limit[i] = best[i] ? nextUp(best[i]->t) : range.max;
   }
-  // As in closestHit, with the rays that enter each child: the child the packet enters first is visited next.
+  // Children still to visit, each with the rays that enter it, nearest on top: the child the packet enters
+  // first is visited next, and the hits found there cut off the farther ones.
   struct Pending {
     T t;
     uint32_t first, count, rays;

@@ -219,8 +219,13 @@ TEST_CASE("coincident objects still split into small leaves", "[bvh]") {
 TEST_CASE("an empty hierarchy answers nothing", "[bvh]") {
   const rt::Bvh<float> empty({});
   const rt::Ray<float> ray{{0, 0, 0}, {0, 0, -1}};
-  CHECK(!empty.closestHit(ray, {}, std::nullopt));
-  CHECK(!empty.blocker(ray, {}));
+  std::optional<rt::Hit<float>> hit;
+  empty.closestHits(&ray, 1, {}, &hit);
+  CHECK(!hit);
+  const rt::Interval<float> range;
+  const rt::Object<float>* blocker = nullptr;
+  empty.blockers(&ray, &range, 1u, &blocker);
+  CHECK(!blocker);
   std::ostringstream out;
   empty.print(out);
   CHECK(out.str() == "BVH: 0 objects, 0 nodes of up to 4 children, 0 leaves, largest leaf 0\n");

@@ -78,15 +78,11 @@ template <class T> class Bvh {
   // surface area heuristic, then collapsed to 4 children per node.
   explicit Bvh(const std::vector<const Object<T>*>& objects);
 
-  // The closest hit strictly inside `range`, or `best` when nothing is closer. Equal t resolve to the lower
-  // object id, so the answer is the one a scan in file order gives (Scene::closestHit).
-  std::optional<Hit<T>> closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>> best) const;
-  // An object with a hit strictly inside `range`, or nullptr: the any-hit query.
-  const Object<T>* blocker(const Ray<T>& ray, Interval<T> range) const;
-
-  // The same two queries for a packet of n ≤ kPacket rays, with the same answers as one ray at a time:
-  // best[i] = closestHit(rays[i], range, best[i]); blockers[i] = blocker(rays[i], ranges[i]) for the rays
-  // whose bit is set in `active`, the others left as they are.
+  // The two queries, for a packet of n ≤ kPacket rays (one ray is a packet of one); each ray gets the answer
+  // it would get alone. best[i] becomes the closest hit of rays[i] strictly inside `range`, or stays when
+  // nothing is closer; equal t resolve to the lower object id, so the answer is the one a scan in file order
+  // gives (Scene::closestHits). blockers[i] becomes an object with a hit strictly inside ranges[i] (the
+  // any-hit query), for the rays whose bit is set in `active`; the others are left as they are.
   void closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const;
   void blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active, const Object<T>** blockers) const;
 
