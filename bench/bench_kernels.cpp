@@ -1,4 +1,4 @@
-// Kernel benchmarks (Google Benchmark): ray-sphere, ray-box (a node's four boxes), and closest-hit / shadow queries with and without
+// Kernel benchmarks (Google Benchmark): ray-sphere, ray-box (a packet against a node's four boxes), and closest-hit / shadow queries with and without
 // the hierarchy. Figures, not tests: build with -DRAYTRACE_BENCHMARKS=ON and run build/raytrace_bench.
 #include <benchmark/benchmark.h>
 
@@ -40,26 +40,29 @@ BENCHMARK_TEMPLATE(BM_RaySphere, float, rt::SphereMethod::Textbook);
 BENCHMARK_TEMPLATE(BM_RaySphere, float, rt::SphereMethod::Robust);
 BENCHMARK_TEMPLATE(BM_RaySphere, double, rt::SphereMethod::Robust);
 
-// The node test of the hierarchy: the boxes of four children at once, about half the rays hitting each.
+// The node test of the hierarchy: a packet of 16 rays against the boxes of four children, about half the rays
+// entering each.
 template <class T> void BM_RayBox4(benchmark::State& state) {
-  typename rt::Bvh<T>::Node node;
+  using Bvh = rt::Bvh<T>;
+  typename Bvh::Node node;
   node.size = 4;
   for (int k = 0; k < 4; ++k) {
     for (int a = 0; a < 3; ++a) node.lo[a][k] = T(-1 + 0.1 * k), node.hi[a][k] = T(1 - 0.1 * k);
   }
   const auto rays = raysToward<T>({0, 0, 0}, T(1.6), 2);
-  std::vector<rt::Vec3<T>> inverse;
-  for (const auto& r : rays) inverse.push_back(T(1) / r.dir);
-  size_t i = 0;
-  typename rt::Bvh<T>::Lanes near;
-  typename rt::Bvh<T>::LaneMask enters;
-  for (auto _ : state) {
-    const size_t k = i++ % kRays;
-    rt::Bvh<T>::entries(node, rays[k].origin, inverse[k], T(0), std::numeric_limits<T>::infinity(), near, enters);
-    benchmark::DoNotOptimize(near);
-    benchmark::DoNotOptimize(enters);
+  std::vector<typename Bvh::Packet> packets(kRays / Bvh::kPacket);
+  for (size_t r = 0; r < rays.size(); ++r) {
+    packets[r / Bvh::kPacket].set(int(r % Bvh::kPacket), rays[r], std::numeric_limits<T>::infinity());
   }
-  state.SetItemsProcessed(state.iterations() * 4);
+  size_t i = 0;
+  uint32_t childRays[Bvh::kWidth];
+  T childEntry[Bvh::kWidth];
+  for (auto _ : state) {
+    Bvh::entries(node, packets[i++ % packets.size()], T(0), 0xffff, childRays, childEntry);
+    benchmark::DoNotOptimize(childRays);
+    benchmark::DoNotOptimize(childEntry);
+  }
+  state.SetItemsProcessed(state.iterations() * 4 * Bvh::kPacket);
 }
 BENCHMARK_TEMPLATE(BM_RayBox4, float);
 BENCHMARK_TEMPLATE(BM_RayBox4, double);

@@ -190,13 +190,7 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
       children[size_t(widest)] = split;
       children.push_back(split + 1);
     }
-    Node node;
-    for (int a = 0; a < 3; ++a) {
-      std::fill(node.lo[a], node.lo[a] + kWidth, std::numeric_limits<T>::infinity());
-      std::fill(node.hi[a], node.hi[a] + kWidth, std::numeric_limits<T>::infinity());
-    }
-    std::fill(node.first, node.first + kWidth, 0u);
-    std::fill(node.count, node.count + kWidth, 0u);
+    Node node{};
     node.size = int(children.size());
     for (int k = 0; k < node.size; ++k) {
       const BinaryNode<T>& b = binary[children[size_t(k)]];
@@ -213,37 +207,115 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
   }
 }
 
-// The children of `node` that each ray of `rays` enters: childRays[k] has bit i set when ray i enters child k,
-// and childEntry[k] is the nearest of their entry distances.
-template <class T>
-void packetEntries(const typename Bvh<T>::Node& node, const Ray<T>* rays, const Vec3<T>* invDir, T tMin,
-                   const T* tMax, uint32_t mask, uint32_t (&childRays)[Bvh<T>::kWidth],
-                   T (&childEntry)[Bvh<T>::kWidth]) {
-  using Lanes = typename Bvh<T>::Lanes;
-  using LaneMask = typename Bvh<T>::LaneMask;
-  Lanes nearest = Lanes{} + std::numeric_limits<T>::infinity();
-  LaneMask entered{};
-  for (; mask; mask &= mask - 1) {
-    const int i = __builtin_ctz(mask);
-    Lanes near;
-    LaneMask enters;
-    Bvh<T>::entries(node, rays[i].origin, invDir[i], tMin, tMax[i], near, enters);
-    nearest = (enters & (near < nearest)) ? near : nearest;
-    entered |= enters & (LaneMask{} + (1 << i));
+namespace {
+
+// The node test for R rays at once (GCC/Clang vector extensions): lane r·kWidth + k tests ray first + r
+// against child k, so one SIMD operation on `Lanes` does R·kWidth box-slab steps.
+template <class T, int R>
+[[gnu::always_inline]] inline void entriesOf(const typename Bvh<T>::Node& node, const typename Bvh<T>::Packet& packet,
+                                             T tMin, uint32_t rays, uint32_t (&childRays)[Bvh<T>::kWidth],
+                                             T (&childEntry)[Bvh<T>::kWidth]) {
+  constexpr int W = Bvh<T>::kWidth;
+  typedef T Quad __attribute__((vector_size(W * sizeof(T))));
+  typedef T Lanes __attribute__((vector_size(R * W * sizeof(T))));
+  using LaneMask = decltype(Lanes{} < Lanes{});  // integer lanes, all bits set where a comparison holds
+  using Int = std::conditional_t<sizeof(T) == 4, int32_t, int64_t>;
+  constexpr T inf = std::numeric_limits<T>::infinity();
+  // The children's bounds, repeated for each of the R rays.
+  Lanes lo[3], hi[3];
+  for (int a = 0; a < 3; ++a) {
+    Quad q[2];
+    std::memcpy(&q[0], node.lo[a], sizeof(Quad));
+    std::memcpy(&q[1], node.hi[a], sizeof(Quad));
+    for (int b = 0; b < 2; ++b) {
+      Lanes& out = b ? hi[a] : lo[a];
+      if constexpr (R == 1) out = q[b];
+      if constexpr (R == 2) out = __builtin_shufflevector(q[b], q[b], 0, 1, 2, 3, 0, 1, 2, 3);
+      if constexpr (R == 4) out = __builtin_shufflevector(q[b], q[b], 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3);
+    }
   }
-  for (int k = 0; k < Bvh<T>::kWidth; ++k) childRays[k] = uint32_t(entered[k]), childEntry[k] = nearest[k];
+  LaneMask unitBit;  // 1 << r in the lanes of ray r
+  for (int j = 0; j < R * W; ++j) unitBit[j] = Int(1) << (j / W);
+  Lanes nearest = Lanes{} + inf;
+  LaneMask entered{};
+  for (uint32_t pending = rays; pending;) {
+    const int first = __builtin_ctz(pending) & ~(R - 1);
+    pending &= ~(((1u << R) - 1) << first);
+    Lanes origin, invDir, near = Lanes{} + tMin, far;
+    std::memcpy(&far, packet.tMax[first], sizeof far);
+    for (int a = 0; a < 3; ++a) {
+      std::memcpy(&origin, packet.origin[a][first], sizeof origin);
+      std::memcpy(&invDir, packet.invDir[a][first], sizeof invDir);
+      const Lanes t0 = (lo[a] - origin) * invDir, t1 = (hi[a] - origin) * invDir;
+      // min and max written so that a NaN from 0·∞ in t0 or t1 never replaces near or far.
+      const Lanes tNear = t1 < t0 ? t1 : t0, tFar = t0 < t1 ? t1 : t0;
+      near = near < tNear ? tNear : near;
+      far = tFar < far ? tFar : far;
+    }
+    // near = +∞ when the ray runs parallel to a slab outside it, toward +∞: a miss even if tMax is +∞.
+    const LaneMask rayBit = (unitBit << first) & Int(rays);
+    const LaneMask enters = (near <= far * kFarScale<T>) & (near < inf) & (rayBit != 0);
+    nearest = (enters & (near < nearest)) ? near : nearest;
+    entered |= enters & rayBit;
+  }
+  for (int k = 0; k < W; ++k) {
+    childRays[k] = uint32_t(entered[k]);
+    childEntry[k] = nearest[k];
+    for (int r = 1; r < R; ++r) {
+      childRays[k] |= uint32_t(entered[r * W + k]);
+      childEntry[k] = std::min(childEntry[k], nearest[r * W + k]);
+    }
+  }
+}
+
+// One kernel per SIMD width, chosen at run time as Embree does: R = how many rays' kWidth lanes fit in a
+// register. Without a target attribute the compiler assumes only the baseline (SSE2 on x86-64). The kernels
+// do the same operations in the same order, so they give the same bits.
+template <class T> constexpr int raysPerRegister(int bytes) {
+  return std::max(1, bytes / int(Bvh<T>::kWidth * sizeof(T)));
+}
+template <class T>
+void entriesBaseline(const typename Bvh<T>::Node& node, const typename Bvh<T>::Packet& packet, T tMin,
+                     uint32_t rays, uint32_t (&childRays)[Bvh<T>::kWidth], T (&childEntry)[Bvh<T>::kWidth]) {
+  entriesOf<T, raysPerRegister<T>(16)>(node, packet, tMin, rays, childRays, childEntry);
+}
+#if defined(__x86_64__)
+template <class T>
+[[gnu::target("avx2")]] void entriesAvx2(const typename Bvh<T>::Node& node, const typename Bvh<T>::Packet& packet,
+                                         T tMin, uint32_t rays, uint32_t (&childRays)[Bvh<T>::kWidth],
+                                         T (&childEntry)[Bvh<T>::kWidth]) {
+  entriesOf<T, raysPerRegister<T>(32)>(node, packet, tMin, rays, childRays, childEntry);
+}
+#endif
+
+}  // namespace
+
+template <class T> const std::vector<typename Bvh<T>::Kernel>& Bvh<T>::kernels() {
+  static const std::vector<Kernel> supported = [] {
+    std::vector<Kernel> k;
+#if defined(__x86_64__)
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx2")) k.push_back(&entriesAvx2<T>);
+#endif
+    k.push_back(&entriesBaseline<T>);
+    return k;
+  }();
+  return supported;
+}
+
+template <class T>
+void Bvh<T>::entries(const Node& node, const Packet& packet, T tMin, uint32_t rays, uint32_t (&childRays)[kWidth],
+                     T (&childEntry)[kWidth]) {
+  static const Kernel widest = kernels().front();
+  widest(node, packet, tMin, rays, childRays, childEntry);
 }
 
 template <class T>
 void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const {
   if (nodes_.empty() || n == 0) return;
-  Vec3<T> invDir[kPacket];
-  T limit[kPacket];
-  for (int i = 0; i < n; ++i) {
-    invDir[i] = T(1) / rays[i].dir;
-    // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
-    limit[i] = best[i] ? nextUp(best[i]->t) : range.max;
-  }
+  Packet packet{};
+  // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
+  for (int i = 0; i < n; ++i) packet.set(i, rays[i], best[i] ? nextUp(best[i]->t) : range.max);
   // Children still to visit, each with the rays that enter it, nearest on top: the child the packet enters
   // first is visited next, and the hits found there cut off the farther ones.
   struct Pending {
@@ -259,21 +331,21 @@ void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::opti
         const Object<T>* object = objects_[o];
         for (uint32_t mask = current.rays; mask; mask &= mask - 1) {
           const int i = __builtin_ctz(mask);
-          auto hit = object->intersect(rays[i], Interval<T>{range.min, limit[i]});
+          auto hit = object->intersect(rays[i], Interval<T>{range.min, packet.tMax[i][0]});
           if (hit && (!best[i] || hit->t < best[i]->t || object->id() < best[i]->object->id())) {
             best[i] = hit;
-            limit[i] = nextUp(hit->t);
+            std::fill_n(packet.tMax[i], kWidth, nextUp(hit->t));
           }
         }
       }
     } else {
+      const Node& node = nodes_[current.first];
       uint32_t childRays[kWidth];
       T childEntry[kWidth];
-      packetEntries<T>(nodes_[current.first], rays, invDir, range.min, limit, current.rays, childRays, childEntry);
-      const Node& node = nodes_[current.first];
+      entries(node, packet, range.min, current.rays, childRays, childEntry);
       const int base = size;
       int nearest = -1;
-      for (int k = 0; k < kWidth; ++k) {
+      for (int k = 0; k < node.size; ++k) {
         if (!childRays[k]) continue;
         int later = k;
         if (nearest < 0 || childEntry[k] < childEntry[nearest]) std::swap(later, nearest);
@@ -293,7 +365,7 @@ void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::opti
       if (size == 0) return;
       current = stack[--size];
       for (uint32_t mask = current.rays; mask && !found; mask &= mask - 1) {
-        found = !(current.t > limit[__builtin_ctz(mask)] * kFarScale<T>);
+        found = !(current.t > packet.tMax[__builtin_ctz(mask)][0] * kFarScale<T>);
       }
     }
   }
@@ -303,17 +375,15 @@ template <class T>
 void Bvh<T>::blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active,
                       const Object<T>** blockers) const {
   if (nodes_.empty()) return;
-  Vec3<T> invDir[kPacket];
-  T tMax[kPacket];
-  for (uint32_t mask = active; mask; mask &= mask - 1) {
-    const int i = __builtin_ctz(mask);
-    invDir[i] = T(1) / rays[i].dir;
-    tMax[i] = ranges[i].max;
-  }
+  Packet packet{};
   // Every ray has its own tMin; the smallest, tested against all, only admits more boxes, whose objects are
   // then tested with each ray's own range.
   T tMin = std::numeric_limits<T>::infinity();
-  for (uint32_t mask = active; mask; mask &= mask - 1) tMin = std::min(tMin, ranges[__builtin_ctz(mask)].min);
+  for (uint32_t mask = active; mask; mask &= mask - 1) {
+    const int i = __builtin_ctz(mask);
+    packet.set(i, rays[i], ranges[i].max);
+    tMin = std::min(tMin, ranges[i].min);
+  }
   struct Pending {
     uint32_t node, rays;
   };
@@ -327,8 +397,8 @@ void Bvh<T>::blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t ac
     const Node& node = nodes_[p.node];
     uint32_t childRays[kWidth];
     T childEntry[kWidth];
-    packetEntries<T>(node, rays, invDir, tMin, tMax, live, childRays, childEntry);
-    for (int k = 0; k < kWidth; ++k) {
+    entries(node, packet, tMin, live, childRays, childEntry);
+    for (int k = 0; k < node.size; ++k) {
       if (!childRays[k]) continue;
       if (!node.count[k]) {
         stack[size++] = {node.first[k], childRays[k]};

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <cstring>
 #include <random>
 #include <set>
 #include <sstream>
@@ -152,6 +153,46 @@ TEMPLATE_TEST_CASE("a packet of rays gets the answers each ray gets alone", "[bv
         CAPTURE(i);
         requireSame(hits[i], flat.closestHit(rays[i], {}));
         REQUIRE(blocked[i] == flat.occluded(rays[i], ranges[i]));
+      }
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("every SIMD kernel of the node test gives the baseline's bits", "[bvh]", float, double) {
+  using Bvh = rt::Bvh<TestType>;
+  using T = TestType;
+  const auto& kernels = Bvh::kernels();
+  INFO(kernels.size() << " kernels on this processor");
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> pos(-4, 4), unit(0, 1);
+  for (int trial = 0; trial < 2000; ++trial) {
+    CAPTURE(trial);
+    typename Bvh::Node node{};
+    node.size = 1 + trial % Bvh::kWidth;
+    for (int k = 0; k < node.size; ++k) {
+      for (int a = 0; a < 3; ++a) {
+        const double x = pos(rng), y = pos(rng);
+        node.lo[a][k] = T(std::min(x, y)), node.hi[a][k] = T(std::max(x, y));
+      }
+    }
+    typename Bvh::Packet packet{};
+    for (int i = 0; i < Bvh::kPacket; ++i) {
+      // Some rays start on a slab plane or run parallel to one: the 0·∞ cases.
+      rt::Vec3<T> origin(pos(rng), pos(rng), pos(rng)), dir = randomUnit<T>(rng);
+      if (unit(rng) < 0.2) origin.x = node.lo[0][0];
+      if (unit(rng) < 0.2) dir.y = T(0);
+      packet.set(i, {origin, dir}, unit(rng) < 0.5 ? T(std::abs(pos(rng))) : std::numeric_limits<T>::infinity());
+    }
+    const uint32_t rays = uint32_t(rng()) & ((1u << Bvh::kPacket) - 1);
+    uint32_t expectedRays[Bvh::kWidth], childRays[Bvh::kWidth];
+    T expectedEntry[Bvh::kWidth], childEntry[Bvh::kWidth];
+    kernels.back()(node, packet, T(0), rays, expectedRays, expectedEntry);
+    for (const auto kernel : kernels) {
+      kernel(node, packet, T(0), rays, childRays, childEntry);
+      for (int k = 0; k < node.size; ++k) {
+        CAPTURE(k);
+        REQUIRE(childRays[k] == expectedRays[k]);
+        REQUIRE(std::memcmp(&childEntry[k], &expectedEntry[k], sizeof(T)) == 0);
       }
     }
   }

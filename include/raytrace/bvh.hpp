@@ -34,45 +34,44 @@ template <class T> class Bvh {
   static constexpr int kPacket = 16;
 
   // A node of the flattened 4-wide tree (Wald et al., "Getting Rid of Packets", 2008; Dammertz et al.,
-  // "Shallow Bounding Volume Hierarchies", 2008): the boxes of its children in structure-of-arrays form, so
-  // that one pass of SIMD arithmetic tests all of them. Child k < size is a leaf holding
+  // "Shallow Bounding Volume Hierarchies", 2008). Child k < size is a leaf holding
   // objects_[first[k], first[k] + count[k]) when count[k] > 0, else the node nodes_[first[k]].
   struct Node {
     T lo[3][kWidth], hi[3][kWidth];  // [axis][child]
     uint32_t first[kWidth], count[kWidth];
-    int size = 0;  // children in use; the boxes of the others are {+∞}
+    int size = 0;  // children in use
 
     Aabb<T> box(int k) const {
       return {{lo[0][k], lo[1][k], lo[2][k]}, {hi[0][k], hi[1][k], hi[2][k]}};
     }
   };
 
-  // GCC/Clang vector extensions: one SIMD instruction per operation on all children.
-  typedef T Lanes __attribute__((vector_size(kWidth * sizeof(T))));
-  using LaneMask = decltype(Lanes{} < Lanes{});  // integer lanes, all bits set where a comparison holds
+  // A packet laid out for the node test (bvh.cpp): each of ray i's values repeated kWidth times, once per
+  // child, so that a SIMD register holds the values of one or more whole rays. tMax[i] is where ray i stops,
+  // invDir[a][i] is 1/d.
+  struct Packet {
+    alignas(64) T origin[3][kPacket][kWidth];
+    alignas(64) T invDir[3][kPacket][kWidth];
+    alignas(64) T tMax[kPacket][kWidth];
 
-  // Where the ray o + t·d enters each child's box within [tMin, tMax] (`near`), and all bits set in `enters`
-  // for the children it enters; invDir is 1/d. The slab test (Kay & Kajiya 1986) for all children at once. A
-  // NaN from 0·∞ (origin on a slab plane, ray parallel to it) either leaves the bounds unchanged or rejects a
-  // ray lying in a face plane of the box, which cannot reach the objects: they lie strictly inside their
-  // padded boxes (paddedBounds in bvh.cpp). Unused child slots hold the box {+∞}, which every ray misses.
-  // (Lanes are passed by reference: a 256-bit vector of doubles passed by value would depend on the AVX ABI.)
-  static void entries(const Node& node, const Vec3<T>& origin, const Vec3<T>& invDir, T tMin, T tMax,
-                      Lanes& near, LaneMask& enters) {
-    near = Lanes{} + tMin;
-    Lanes far = Lanes{} + tMax, lo, hi;
-    for (int a = 0; a < 3; ++a) {
-      std::memcpy(&lo, node.lo[a], sizeof lo);
-      std::memcpy(&hi, node.hi[a], sizeof hi);
-      const Lanes t0 = (lo - origin[a]) * invDir[a], t1 = (hi - origin[a]) * invDir[a];
-      // min and max written so that a NaN from 0·∞ in t0 or t1 never replaces near or far.
-      const Lanes tNear = t1 < t0 ? t1 : t0, tFar = t0 < t1 ? t1 : t0;
-      near = near < tNear ? tNear : near;
-      far = tFar < far ? tFar : far;
+    void set(int i, const Ray<T>& ray, T max) {
+      for (int a = 0; a < 3; ++a) std::fill_n(origin[a][i], kWidth, ray.origin[a]);
+      for (int a = 0; a < 3; ++a) std::fill_n(invDir[a][i], kWidth, T(1) / ray.dir[a]);
+      std::fill_n(tMax[i], kWidth, max);
     }
-    // An unused slot is entered at +∞, which only the near < ∞ test rejects when tMax is +∞ too.
-    enters = (near <= far * kFarScale<T>) & (near < std::numeric_limits<T>::infinity());
-  }
+  };
+
+  // Which children of `node` the rays whose bits are set in `rays` enter within [tMin, tMax[i]]: bit i of
+  // childRays[k] is set when ray i enters child k, and childEntry[k] is the nearest of their entry distances
+  // (+∞ when none enters). The slab test (Kay & Kajiya 1986), for all children at once and for as many rays
+  // at once as the widest SIMD registers of the processor hold. A NaN from 0·∞ (origin on a slab plane, ray
+  // parallel to it) either leaves the bounds unchanged or rejects a ray lying in a face plane of the box,
+  // which cannot reach the objects: they lie strictly inside their padded boxes (paddedBounds in bvh.cpp).
+  static void entries(const Node& node, const Packet& packet, T tMin, uint32_t rays, uint32_t (&childRays)[kWidth],
+                      T (&childEntry)[kWidth]);
+  // The implementations of entries() this processor can run, widest SIMD first; entries() uses the first.
+  using Kernel = void (*)(const Node&, const Packet&, T, uint32_t, uint32_t (&)[kWidth], T (&)[kWidth]);
+  static const std::vector<Kernel>& kernels();
 
   // Builds over `objects`, all of which must have bounds(), in O(n log n): a binary tree by the binned
   // surface area heuristic, then collapsed to 4 children per node.
