@@ -95,8 +95,11 @@ template <class T>
 void spawnRayTo(const Hit<T>& hit, const Vec3<T>& target, const Vec3<T>& dir, const Vec3<T>& side,
                 OffsetPolicy policy, Ray<T>& ray, Interval<T>& segment) {
   ray.origin = spawnOrigin(hit, side, policy);
-  ray.dir = policy == OffsetPolicy::Course ? glm::normalize(target - ray.origin) : dir;
-  segment = {T(0), glm::length(target - ray.origin) * (T(1) - kShadowEpsilon<T>)};
+  const Vec3<T> toTarget = target - ray.origin;
+  const T distance = glm::length(toTarget);
+  // glm::normalize(toTarget) with the square root already taken: the same bits.
+  ray.dir = policy == OffsetPolicy::Course ? toTarget * (T(1) / distance) : dir;
+  segment = {T(0), distance * (T(1) - kShadowEpsilon<T>)};
 }
 
 template <class T>
