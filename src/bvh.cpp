@@ -288,6 +288,15 @@ template <class T>
 }
 #endif
 
+// The packet a query fills in, one per thread. A kernel computes on whole registers, so it may read the lanes
+// of rays that are not in the query: they hold what an earlier query left there, or zeros, and the results
+// are masked out. Zeroing a fresh packet for every query would cost more than the rest of a short one.
+// Queries never nest (objects do not query the scene), so one packet per thread is enough.
+template <class T> typename Bvh<T>::Packet& scratchPacket() {
+  thread_local typename Bvh<T>::Packet packet{};
+  return packet;
+}
+
 }  // namespace
 
 template <class T> const std::vector<typename Bvh<T>::Kernel>& Bvh<T>::kernels() {
@@ -313,7 +322,7 @@ void Bvh<T>::entries(const Node& node, const Packet& packet, T tMin, uint32_t ra
 template <class T>
 void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const {
   if (nodes_.empty() || n == 0) return;
-  Packet packet{};
+  Packet& packet = scratchPacket<T>();
   // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
   for (int i = 0; i < n; ++i) packet.set(i, rays[i], best[i] ? nextUp(best[i]->t) : range.max);
   // Children still to visit, each with the rays that enter it, nearest on top: the child the packet enters
@@ -375,7 +384,7 @@ template <class T>
 void Bvh<T>::blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active,
                       const Object<T>** blockers) const {
   if (nodes_.empty()) return;
-  Packet packet{};
+  Packet& packet = scratchPacket<T>();
   // Every ray has its own tMin; the smallest, tested against all, only admits more boxes, whose objects are
   // then tested with each ray's own range.
   T tMin = std::numeric_limits<T>::infinity();
