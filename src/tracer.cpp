@@ -278,11 +278,11 @@ bool Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& l
   // on the light's side only. A light on the point has no direction: n·l is NaN.
   out.l = glm::normalize(light.position - hit.point);
   out.nl = float(glm::dot(n, out.l));
-  if (!(out.nl > 0.0f)) return false;
-  // n faces the light (n·l > 0), so it picks the side to leave by as l would.
+  // Where n faces the light (n·l > 0) it picks the side to leave by as l would. The ray is made before the
+  // verdict, which it does not need, so that the two chains of square root and division overlap.
   spawnRayTo(hit, light.position, out.l, n, *scene_.arithmetic().offset, out.ray, out.segment);
   out.blocked = false;
-  return true;
+  return out.nl > 0.0f;
 }
 
 template class Tracer<float>;
