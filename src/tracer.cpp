@@ -248,7 +248,9 @@ template <class T>
 typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v,
                                             RayRecord* record, const std::optional<ShadowRay>* shadows) {
   const Material& m = hit.object->material();
-  Local sum;
+  // Summed in locals, not in the returned struct: that one lives in the caller's memory, and each sum would
+  // wait for the store before it.
+  Color diffuse(0), specular(0);
   for (size_t i = 0; i < scene_.lights().size(); ++i) {
     const Light<T>& light = scene_.lights()[i];
     ShadowRay own;
@@ -262,13 +264,13 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
     if (!s) continue;
     if (record) record->shadows.push_back({glm::dvec3(s->ray.origin), glm::dvec3(s->ray.dir), s->blocked});
     if (s->blocked) continue;
-    sum.diffuse += light.color * m.diffuse * std::min(s->nl, 1.0f);
+    diffuse += light.color * m.diffuse * std::min(s->nl, 1.0f);
     if (m.specular == Color(0)) continue;  // a matte surface: no power to take
-    const float specular = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, s->l, m.exponent)
-                                                             : cookTorranceSpecular(n, v, s->l, m.roughness, m.ior);
-    sum.specular += light.color * m.specular * specular;
+    const float factor = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, s->l, m.exponent)
+                                                           : cookTorranceSpecular(n, v, s->l, m.roughness, m.ior);
+    specular += light.color * m.specular * factor;
   }
-  return sum;
+  return {diffuse, specular};
 }
 
 template <class T>
