@@ -66,10 +66,13 @@ class PovParser {
   }
   void expect(char c, const std::string& context) { expect(c, context.c_str()); }
 
-  // `what` completes "expected a number …", e.g. "after 'ambient'" or "for the sphere radius".
-  double number(const std::string& what) {
+  // `what` completes "expected a number for …", e.g. "the sphere radius". The messages here are put together
+  // only for an error: these run for every object, and the names are C strings so that they cost nothing.
+  double numberFor(const char* what) {
     const Token& t = next();
-    if (t.kind != Token::Kind::Number) throw ParseError(t.loc, "expected a number " + what + ", found " + t.quoted());
+    if (t.kind != Token::Kind::Number) {
+      throw ParseError(t.loc, std::string("expected a number for ") + what + ", found " + t.quoted());
+    }
     return t.number;
   }
   // The number after a keyword, e.g. `ambient 0.2`.
@@ -90,15 +93,16 @@ class PovParser {
   };
 
   // `<a, b, …>` with between minN and maxN (at most 4) components.
-  Components vector(int minN, int maxN, const std::string& what) {
-    // The messages are put together only for an error: this runs for every vector of every object.
+  Components vector(int minN, int maxN, const char* what) {
     const Token& open = next();
-    if (!isPunct(open, '<')) throw ParseError(open.loc, "expected '<' to start " + what + ", found " + open.quoted());
+    if (!isPunct(open, '<')) {
+      throw ParseError(open.loc, std::string("expected '<' to start ") + what + ", found " + open.quoted());
+    }
     Components v;
     for (;;) {
       const Token& t = next();
       if (t.kind != Token::Kind::Number) {
-        throw ParseError(t.loc, "expected a number in " + what + ", found " + t.quoted());
+        throw ParseError(t.loc, std::string("expected a number in ") + what + ", found " + t.quoted());
       }
       if (v.size < v.v.size()) v.v[v.size] = t.number;
       ++v.size;
@@ -107,16 +111,16 @@ class PovParser {
     }
     const Token& close = next();
     if (!isPunct(close, '>')) {
-      throw ParseError(close.loc, "expected ',' or '>' in " + what + ", found " + close.quoted());
+      throw ParseError(close.loc, std::string("expected ',' or '>' in ") + what + ", found " + close.quoted());
     }
     if (int(v.size) < minN || int(v.size) > maxN) {
       const std::string want = minN == maxN ? std::to_string(minN) : std::to_string(minN) + " or " + std::to_string(maxN);
-      throw ParseError(close.loc, what + " needs " + want + " components, found " + std::to_string(v.size));
+      throw ParseError(close.loc, std::string(what) + " needs " + want + " components, found " + std::to_string(v.size));
     }
     return v;
   }
 
-  glm::dvec3 vec3(const std::string& what) {
+  glm::dvec3 vec3(const char* what) {
     const auto v = vector(3, 3, what);
     return {v[0], v[1], v[2]};
   }
@@ -131,7 +135,7 @@ class PovParser {
       throw ParseError(t.loc, "expected 'rgb' or 'rgbf' in the " + owner + " colour, found " + t.quoted());
     }
     const SourceLoc at = peek().loc;
-    const auto v = vector(3, 4, "an '" + t.text + "' colour");
+    const auto v = vector(3, 4, t.text == "rgb" ? "an 'rgb' colour" : "an 'rgbf' colour");
     if (t.text == "rgb" && v.size == 4) {
       scene_.warnings.push_back(at.str() + ": warning: 'rgb' with 4 values; the fourth is read as the filter");
     }
@@ -193,7 +197,7 @@ class PovParser {
       const glm::dvec3 normal = vec3("the plane normal");
       if (normal == glm::dvec3(0)) throw ParseError(at, "the plane normal is zero");
       expect(',', "after the plane normal");
-      obj.shape = PlaneDesc{normal, number("for the plane distance")};
+      obj.shape = PlaneDesc{normal, numberFor("the plane distance")};
     } else if (kind == "triangle") {
       TriangleDesc tri;
       tri.a = vec3("the first triangle vertex");
@@ -239,16 +243,16 @@ class PovParser {
     scene_.objects.push_back(std::move(obj));
   }
 
-  double positive(const std::string& what) {
+  double positive(const char* what) {
     const SourceLoc at = peek().loc;
-    const double v = number("for " + what);
-    if (!(v > 0)) throw ParseError(at, what + " must be greater than 0, found " + num(v));
+    const double v = numberFor(what);
+    if (!(v > 0)) throw ParseError(at, std::string(what) + " must be greater than 0, found " + num(v));
     return v;
   }
-  double nonNegative(const std::string& what) {
+  double nonNegative(const char* what) {
     const SourceLoc at = peek().loc;
-    const double v = number("for " + what);
-    if (v < 0) throw ParseError(at, what + " must not be negative, found " + num(v));
+    const double v = numberFor(what);
+    if (v < 0) throw ParseError(at, std::string(what) + " must not be negative, found " + num(v));
     return v;
   }
 
@@ -290,7 +294,7 @@ class PovParser {
   // `scale <x,y,z>` or POV-Ray's uniform `scale s`; a zero factor would make the object unrenderable.
   glm::dvec3 scaleFactors() {
     const SourceLoc at = peek().loc;
-    const glm::dvec3 s = peek().kind == Token::Kind::Number ? glm::dvec3(number("for the scale")) : vec3("the scale");
+    const glm::dvec3 s = peek().kind == Token::Kind::Number ? glm::dvec3(numberFor("the scale")) : vec3("the scale");
     if (s.x == 0 || s.y == 0 || s.z == 0) throw ParseError(at, "a scale factor is zero");
     return s;
   }

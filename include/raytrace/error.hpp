@@ -1,24 +1,24 @@
 // User-facing errors. Thrown once where the problem is found, caught only in main(), printed as one line.
 #pragma once
 
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 namespace rt {
 
-// The name of a scene file, shared by every location in it: a scene has a location per token, and copying
-// one copies a pointer instead of the whole path.
+// The name of a scene file, shared by every location in it. A scene has a location per token, so a location
+// must be free to make and copy: names are interned for the life of the process (a handful of files), and a
+// FileName is a pointer to one.
 class FileName {
  public:
-  FileName() : name_(std::make_shared<const std::string>()) {}
-  FileName(std::string name) : name_(std::make_shared<const std::string>(std::move(name))) {}  // NOLINT: implicit
-  const std::string& str() const { return *name_; }
-  friend bool operator==(const FileName& a, const std::string& b) { return *a.name_ == b; }
+  FileName() = default;
+  FileName(const std::string& name);  // NOLINT: implicit
+  const std::string& str() const;
+  friend bool operator==(const FileName& a, const std::string& b) { return a.str() == b; }
 
  private:
-  std::shared_ptr<const std::string> name_;
+  const std::string* name_ = nullptr;  // into the intern table; null for no file
 };
 
 // A position in a scene file; line and column are 1-based, as editors show them.
