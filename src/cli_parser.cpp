@@ -109,7 +109,7 @@ class CliParser {
     }
     if (!haveFov_) throw ParseError(lines_.here(), "the scene has no 'fov'");
     scene_.writes = std::move(writes_);
-    return scene_;
+    return std::move(scene_);  // parse() is the parser's last act
   }
 
  private:

@@ -44,7 +44,7 @@ class PovParser {
       }
     }
     if (!haveCamera) throw ParseError(peek().loc, "the scene has no camera");
-    return scene_;
+    return std::move(scene_);  // parse() is the parser's last act
   }
 
  private:
