@@ -215,6 +215,7 @@ template <class T, int R>
 [[gnu::always_inline]] inline void entriesOf(const typename Bvh<T>::Node& node, const typename Bvh<T>::Packet& packet,
                                              T tMin, uint32_t rays, uint32_t (&childRays)[Bvh<T>::kWidth],
                                              T (&childEntry)[Bvh<T>::kWidth]) {
+  static_assert(R == 1 || R == 2, "the registers of the kernels below hold one or two rays");
   constexpr int W = Bvh<T>::kWidth;
   typedef T Quad __attribute__((vector_size(W * sizeof(T))));
   typedef T Lanes __attribute__((vector_size(R * W * sizeof(T))));
@@ -231,7 +232,6 @@ template <class T, int R>
       Lanes& out = b ? hi[a] : lo[a];
       if constexpr (R == 1) out = q[b];
       if constexpr (R == 2) out = __builtin_shufflevector(q[b], q[b], 0, 1, 2, 3, 0, 1, 2, 3);
-      if constexpr (R == 4) out = __builtin_shufflevector(q[b], q[b], 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3);
     }
   }
   LaneMask unitBit;  // 1 << r in the lanes of ray r

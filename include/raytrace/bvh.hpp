@@ -27,10 +27,10 @@ template <class T> constexpr T kFarScale = T(1) + T(2) * (T(3) * std::numeric_li
 
 template <class T> class Bvh {
  public:
-  static constexpr int kWidth = 4;  // children per node, tested together (the loops below vectorize)
+  static constexpr int kWidth = 4;  // children per node, tested together in the lanes of a SIMD register
   // Rays per packet: a packet's rays go down the tree together (Wald et al., "Interactive Rendering with
-  // Coherent Ray Tracing", 2001), each tested against the nodes it enters. One ray's box test is a chain of
-  // dependent SIMD operations; the tests of a packet's rays are independent, so they overlap in the core.
+  // Coherent Ray Tracing", 2001), each tested against the nodes it enters. The tests of a packet's rays are
+  // independent: they share wide registers and overlap in the core.
   static constexpr int kPacket = 16;
 
   // A node of the flattened 4-wide tree (Wald et al., "Getting Rid of Packets", 2008; Dammertz et al.,
