@@ -32,16 +32,17 @@ void putChunk(std::vector<unsigned char>& out, const char* type, const unsigned 
 // Rows [first, last) with filter type 2, "Up" (§9.2): each byte minus the byte above it, so smooth vertical
 // gradients become small numbers that deflate well. It is cheap and needs no per-row choice.
 std::vector<unsigned char> filterRows(const std::vector<unsigned char>& rgb, size_t stride, int first, int last) {
-  std::vector<unsigned char> out;
-  out.reserve((stride + 1) * size_t(last - first));
+  std::vector<unsigned char> out((stride + 1) * size_t(last - first));
+  unsigned char* to = out.data();
   for (int y = first; y < last; ++y) {
     const unsigned char* row = rgb.data() + size_t(y) * stride;
-    out.push_back(2);
+    *to++ = 2;
     if (y == 0) {
-      out.insert(out.end(), row, row + stride);
+      std::copy(row, row + stride, to);
     } else {
-      for (size_t i = 0; i < stride; ++i) out.push_back(static_cast<unsigned char>(row[i] - row[i - stride]));
+      for (size_t i = 0; i < stride; ++i) to[i] = static_cast<unsigned char>(row[i] - row[i - stride]);
     }
+    to += stride;
   }
   return out;
 }
