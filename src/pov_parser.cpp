@@ -184,8 +184,8 @@ class PovParser {
   }
 
   void parseObject(const Token& keyword) {
-    const std::string& kind = keyword.text;
-    expect('{', "after '" + kind + "'");
+    const std::string_view kind = keyword.text;
+    expect('{', "after " + keyword.quoted());
     ObjectDesc obj;
     obj.loc = keyword.loc;
     if (kind == "sphere") {
@@ -276,7 +276,7 @@ class PovParser {
       } else if (t.text == "rotate") {
         obj.transforms.push_back({TransformStep::Kind::Rotate, vec3("the rotation")});
       } else {
-        throw ParseError(t.loc, "unknown " + keyword.text + " property " + t.quoted());
+        throw ParseError(t.loc, "unknown " + std::string(keyword.text) + " property " + t.quoted());
       }
     }
     obj.worldFromObject = composeTransforms<double>(obj.transforms);
@@ -333,8 +333,8 @@ class PovParser {
     }
   }
 
-  static std::string unclosed(const std::string& what, const Token& opener) {
-    return "end of file inside the " + what + " started at line " + std::to_string(opener.loc.line) +
+  static std::string unclosed(std::string_view what, const Token& opener) {
+    return "end of file inside the " + std::string(what) + " started at line " + std::to_string(opener.loc.line) +
            "; expected '}'";
   }
 

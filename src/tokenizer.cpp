@@ -24,27 +24,30 @@ Token Tokenizer::next() {
   const size_t start = i_;
   const char c = s_[i_];
   if (startsNumber()) {
-    lexNumber(t);
+    t.kind = Token::Kind::Number;
+    lexNumber();
   } else if (isWordStart(c)) {
     t.kind = Token::Kind::Word;
-    while (i_ < s_.size() && isWordChar(s_[i_])) advance();
+    while (i_ < s_.size() && isWordChar(s_[i_])) ++i_;
   } else if (std::isprint(static_cast<unsigned char>(c))) {
     t.kind = Token::Kind::Punct;
-    advance();
+    ++i_;
   } else {
     char hex[8];
     std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned char>(c));
     throw ParseError(t.loc, std::string("unexpected byte ") + hex + " (is this a text scene file?)");
   }
-  t.text.assign(s_, start, i_ - start);
+  // No token holds a line end, so its characters all stand on the line it starts.
+  col_ += int(i_ - start);
+  t.text = s_.substr(start, i_ - start);
   if (t.kind == Token::Kind::Number) {
     // from_chars is correctly rounded like strtod and several times faster (a big scene is mostly numbers); it
     // takes no '+' and calls an underflow out of range, so those few go to strtod.
     const char* first = t.text.data() + (t.text[0] == '+');
     const char* last = t.text.data() + t.text.size();
     const auto [end, error] = std::from_chars(first, last, t.number);
-    if (error != std::errc() || end != last) t.number = std::strtod(t.text.c_str(), nullptr);
-    if (!std::isfinite(t.number)) throw ParseError(t.loc, "number '" + t.text + "' is out of range");
+    if (error != std::errc() || end != last) t.number = std::strtod(std::string(t.text).c_str(), nullptr);
+    if (!std::isfinite(t.number)) throw ParseError(t.loc, "number " + t.quoted() + " is out of range");
   }
   return t;
 }
@@ -86,17 +89,16 @@ bool Tokenizer::startsNumber() const {
   return isDigit(peek(k)) || (peek(k) == '.' && isDigit(peek(k + 1)));
 }
 
-void Tokenizer::lexNumber(Token& t) {
-  t.kind = Token::Kind::Number;
-  if (peek() == '-' || peek() == '+') advance();
-  while (isDigit(peek())) advance();
-  if (peek() == '.') advance();
-  while (isDigit(peek())) advance();
+void Tokenizer::lexNumber() {
+  if (peek() == '-' || peek() == '+') ++i_;
+  while (isDigit(peek())) ++i_;
+  if (peek() == '.') ++i_;
+  while (isDigit(peek())) ++i_;
   // An exponent only if digits follow, so that `1e` stays a number and a word.
   if ((peek() == 'e' || peek() == 'E') &&
       (isDigit(peek(1)) || ((peek(1) == '-' || peek(1) == '+') && isDigit(peek(2))))) {
-    advance(), advance();
-    while (isDigit(peek())) advance();
+    i_ += 2;
+    while (isDigit(peek())) ++i_;
   }
 }
 

@@ -28,7 +28,7 @@ std::vector<std::string> describe(const std::string& text) {
   std::vector<std::string> out;
   for (const Token& t : tokenize(text, "t.pov")) {
     const char* kind = t.kind == Kind::Number ? "N" : t.kind == Kind::Word ? "W" : t.kind == Kind::Punct ? "P" : "E";
-    out.push_back(std::string(kind) + ":" + t.text + "@" + std::to_string(t.loc.line) + ":" +
+    out.push_back(std::string(kind) + ":" + std::string(t.text) + "@" + std::to_string(t.loc.line) + ":" +
                   std::to_string(t.loc.col));
   }
   return out;

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 
 #include "raytrace/error.hpp"
 
@@ -10,12 +11,12 @@ namespace rt {
 
 struct Token {
   enum class Kind { Number, Word, Punct, End } kind = Kind::End;
-  std::string text;    // as written in the file
+  std::string_view text;  // as written, inside the text the tokenizer reads
   double number = 0;   // the value of a Number
   SourceLoc loc;
 
   // How a message quotes it: 'abc', or "end of file".
-  std::string quoted() const { return kind == Kind::End ? "end of file" : "'" + text + "'"; }
+  std::string quoted() const { return kind == Kind::End ? "end of file" : "'" + std::string(text) + "'"; }
 };
 
 // Splits POV text into tokens, one at a time, so that a huge scene never holds more than one token in memory
@@ -25,9 +26,11 @@ struct Token {
 // ParseError for an unterminated comment, a number out of range or a byte that cannot be in a text file.
 class Tokenizer {
  public:
-  // `text` must outlive the tokenizer, so a temporary is refused at compile time.
-  Tokenizer(const std::string& text, const std::string& file) : s_(text), file_(file) {}
-  Tokenizer(std::string&& text, const std::string& file) = delete;
+  // `text` must outlive the tokenizer and its tokens, so a temporary string is refused at compile time.
+  // `firstLine` is the line `text` starts on, when it is a part of a file that starts a line.
+  Tokenizer(std::string_view text, const std::string& file, int firstLine = 1)
+      : s_(text), file_(file), line_(firstLine) {}
+  Tokenizer(std::string&& text, const std::string& file, int firstLine = 1) = delete;
 
   // The next token; at the end of the text an End token, as often as asked.
   Token next();
@@ -40,12 +43,12 @@ class Tokenizer {
   void advance();
   void skipSpaceAndComments();
   bool startsNumber() const;
-  void lexNumber(Token& t);
+  void lexNumber();
 
-  const std::string& s_;
+  std::string_view s_;
   FileName file_;  // shared by the location of every token
   size_t i_ = 0;
-  int line_ = 1, col_ = 1;
+  int line_, col_ = 1;
 };
 
 }  // namespace rt
