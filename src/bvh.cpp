@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 
+#include "raytrace/parallel.hpp"
 #include "raytrace/report.hpp"
 
 namespace rt {
@@ -61,39 +62,30 @@ template <class T> struct BinaryNode {
   uint32_t count = 0;  // 0 for an inner node
 };
 
-// Binned SAH build (Wald 2007); `order` receives the object indices in leaf order.
-template <class T>
-std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& objects, std::vector<uint32_t>& order) {
-  std::vector<Aabb<T>> boxes;
-  std::vector<Vec3<T>> centroids;
-  boxes.reserve(objects.size());
-  centroids.reserve(objects.size());
-  for (const Object<T>* o : objects) {
-    boxes.push_back(paddedBounds(*o));
-    centroids.push_back(centroid(boxes.back()));
-  }
-  order.resize(objects.size());
-  for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-
-  std::vector<BinaryNode<T>> nodes;
-  nodes.reserve(2 * objects.size() - 1);
-  nodes.push_back({{}, 0, uint32_t(objects.size())});
+// Binned SAH build (Wald 2007) over the objects' boxes and centroids; `order` holds the object indices,
+// reordered into leaf order as nodes split.
+template <class T> class BinaryBuilder {
+ public:
   struct Task {
     uint32_t node;
     int depth;
   };
-  std::vector<Task> tasks{{0, 0}};
-  while (!tasks.empty()) {
-    const Task task = tasks.back();
-    tasks.pop_back();
+
+  BinaryBuilder(const std::vector<Aabb<T>>& boxes, const std::vector<Vec3<T>>& centroids, std::vector<uint32_t>& order)
+      : boxes_(boxes), centroids_(centroids), order_(order) {}
+
+  // Gives the task's node its box and, when a split pays, two children appended to `nodes`, as tasks in `out`.
+  // Touches only the node's own range of `order`, so nodes of disjoint ranges may be split at the same time.
+  // The task is taken by value, as `out` may be the vector it comes from.
+  void split(std::vector<BinaryNode<T>>& nodes, Task task, std::vector<Task>& out) const {
     const uint32_t first = nodes[task.node].first, count = nodes[task.node].count;
     Aabb<T> box, centres;
     for (uint32_t i = first; i < first + count; ++i) {
-      box.expand(boxes[order[i]]);
-      centres.expand(centroids[order[i]]);
+      box.expand(boxes_[order_[i]]);
+      centres.expand(centroids_[order_[i]]);
     }
     nodes[task.node].box = box;
-    if (count == 1 || task.depth >= kMaxDepth) continue;
+    if (count == 1 || task.depth >= kMaxDepth) return;
 
     // Bin the centroids along their longest extent and sweep the bin boundaries for the lowest surface area
     // heuristic cost, kTraversalCost + (A_left·N_left + A_right·N_right) / A_node, against N for a leaf.
@@ -101,7 +93,7 @@ std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& obje
     const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     const T binScale = T(kBins) / extent[axis];
     const auto binOf = [&](uint32_t object) {
-      return std::min(kBins - 1, int((centroids[object][axis] - centres.min[axis]) * binScale));
+      return std::min(kBins - 1, int((centroids_[object][axis] - centres.min[axis]) * binScale));
     };
     double bestCost = std::numeric_limits<double>::infinity();
     int bestSplit = 0;
@@ -109,8 +101,8 @@ std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& obje
       std::array<Aabb<T>, kBins> binBox;
       std::array<uint32_t, kBins> binCount{};
       for (uint32_t i = first; i < first + count; ++i) {
-        const int b = binOf(order[i]);
-        binBox[b].expand(boxes[order[i]]);
+        const int b = binOf(order_[i]);
+        binBox[b].expand(boxes_[order_[i]]);
         ++binCount[b];
       }
       // rightCost[s] is A·N of bins s..end, the right side of a split before bin s.
@@ -133,13 +125,13 @@ std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& obje
         if (cost < bestCost) bestCost = cost, bestSplit = s;
       }
     }
-    if (count <= kMaxLeaf && !(bestCost < double(count))) continue;
+    if (count <= kMaxLeaf && !(bestCost < double(count))) return;
 
     uint32_t middle;
     if (bestSplit > 0) {
-      const auto split = std::partition(order.begin() + first, order.begin() + first + count,
+      const auto split = std::partition(order_.begin() + first, order_.begin() + first + count,
                                         [&](uint32_t o) { return binOf(o) < bestSplit; });
-      middle = uint32_t(split - order.begin());
+      middle = uint32_t(split - order_.begin());
     } else {
       middle = first + count / 2;  // all centroids coincide: any halving is as good as another
     }
@@ -148,18 +140,86 @@ std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& obje
     nodes.push_back(BinaryNode<T>{{}, middle, first + count - middle});
     nodes[task.node].first = left;
     nodes[task.node].count = 0;
-    tasks.push_back({left, task.depth + 1});
-    tasks.push_back({left + 1, task.depth + 1});
+    out.push_back({left, task.depth + 1});
+    out.push_back({left + 1, task.depth + 1});
+  }
+
+  // The whole subtree under each task, depth first.
+  void finish(std::vector<BinaryNode<T>>& nodes, std::vector<Task> tasks) const {
+    while (!tasks.empty()) {
+      const Task task = tasks.back();
+      tasks.pop_back();
+      split(nodes, task, tasks);
+    }
+  }
+
+ private:
+  const std::vector<Aabb<T>>& boxes_;
+  const std::vector<Vec3<T>>& centroids_;
+  std::vector<uint32_t>& order_;
+};
+
+// Subtrees built apart on the threads: a fixed number, so that the tree is the same for any thread count.
+constexpr size_t kSubtrees = 16;
+// Below this many objects one thread builds the tree faster than several can start.
+constexpr size_t kMinParallelBuild = 4096;
+
+// The binary tree and, in `order`, the object indices in leaf order. The top levels are split breadth first
+// until there are kSubtrees nodes to split, and the subtrees under them are built on the threads, each into
+// its own array, then appended. Every node is split as a one-thread build would split it.
+template <class T>
+std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& objects, std::vector<uint32_t>& order,
+                                       int threads) {
+  const size_t n = objects.size();
+  std::vector<Aabb<T>> boxes(n);
+  std::vector<Vec3<T>> centroids(n);
+  parallelFor(int((n + 4095) / 4096), threads, [&](int block) {
+    for (size_t i = size_t(block) * 4096; i < std::min(n, size_t(block + 1) * 4096); ++i) {
+      boxes[i] = paddedBounds(*objects[i]);
+      centroids[i] = centroid(boxes[i]);
+    }
+  });
+  order.resize(n);
+  for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+
+  using Task = typename BinaryBuilder<T>::Task;
+  const BinaryBuilder<T> builder(boxes, centroids, order);
+  std::vector<BinaryNode<T>> nodes;
+  nodes.reserve(2 * n - 1);
+  nodes.push_back({{}, 0, uint32_t(n)});
+  std::vector<Task> tasks{{0, 0}};
+  if (threads <= 1 || n < kMinParallelBuild) {
+    builder.finish(nodes, tasks);
+    return nodes;
+  }
+  size_t next = 0;
+  for (; next < tasks.size() && tasks.size() - next < kSubtrees; ++next) builder.split(nodes, tasks[next], tasks);
+  // The tasks not yet split are the roots of the subtrees; each subtree's node 0 is a copy of its root.
+  const std::vector<Task> roots(tasks.begin() + std::ptrdiff_t(next), tasks.end());
+  std::vector<std::vector<BinaryNode<T>>> subtrees(roots.size());
+  parallelFor(int(roots.size()), threads, [&](int k) {
+    std::vector<BinaryNode<T>>& sub = subtrees[size_t(k)];
+    sub.push_back(nodes[roots[size_t(k)].node]);
+    builder.finish(sub, {{0, roots[size_t(k)].depth}});
+  });
+  for (size_t k = 0; k < roots.size(); ++k) {
+    // Local node i ≥ 1 lands at base + i − 1; an inner node's `first` is its children's local index.
+    const uint32_t base = uint32_t(nodes.size());
+    for (BinaryNode<T>& node : subtrees[k]) {
+      if (!node.count) node.first += base - 1;
+    }
+    nodes[roots[k].node] = subtrees[k][0];
+    nodes.insert(nodes.end(), subtrees[k].begin() + 1, subtrees[k].end());
   }
   return nodes;
 }
 
 }  // namespace
 
-template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects) {
+template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects, int threads) {
   if (objects.empty()) return;
   std::vector<uint32_t> order;
-  const std::vector<BinaryNode<T>> binary = buildBinary(objects, order);
+  const std::vector<BinaryNode<T>> binary = buildBinary(objects, order, threads);
   objects_.reserve(objects.size());
   for (uint32_t i : order) objects_.push_back(objects[i]);
 

@@ -133,7 +133,7 @@ template <class F> auto withScene(const Invocation& inv, F&& f) {
   const Arithmetic arithmetic = chooseArithmetic(inv.scene, inv.options.arithmetic);
   return withPrecision(arithmetic.precision, [&](auto tag) {
     using T = decltype(tag);
-    const Scene<T> scene(inv.scene, arithmetic, inv.options.hierarchy);
+    const Scene<T> scene(inv.scene, arithmetic, inv.options.hierarchy, inv.options.threads);
     const Camera<T> camera(inv.scene.camera, inv.width, inv.height);
     return f(scene, camera);
   });
@@ -345,7 +345,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     inv.x = parseInt(positional[3], "pixel x", 0, inv.width - 1);
     inv.y = parseInt(positional[4], "pixel y", 0, inv.height - 1);
   }
-  inv.scene = loadScene(positional[0]);
+  inv.scene = loadScene(positional[0], options.threads);
   for (const std::string& w : inv.scene.warnings) err << w << "\n";
   return command->run(inv, out);
 }

@@ -66,9 +66,9 @@ SceneLanguage sceneLanguage(const std::string& path, const std::string& text) {
   return looksLikeCli(text) ? SceneLanguage::Cli : SceneLanguage::Pov;
 }
 
-SceneDesc loadScene(const std::string& path) {
+SceneDesc loadScene(const std::string& path, int threads) {
   const std::string text = readFile(path);
-  return sceneLanguage(path, text) == SceneLanguage::Cli ? parseCli(text, path) : parsePov(text, path);
+  return sceneLanguage(path, text) == SceneLanguage::Cli ? parseCli(text, path) : parsePov(text, path, threads);
 }
 
 }  // namespace rt

@@ -1,11 +1,18 @@
 #include "raytrace/pov_parser.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <optional>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "raytrace/limits.hpp"
+#include "raytrace/parallel.hpp"
 #include "raytrace/tokenizer.hpp"
 
 namespace rt {
@@ -20,12 +27,30 @@ std::string num(double v) {
 
 class PovParser {
  public:
-  PovParser(const std::string& text, const std::string& file) : tokens_(text, file), current_(tokens_.next()) {
+  // `text` is a whole file, or whole lines of one from line `firstLine` on, one of `parts` read at once.
+  PovParser(std::string_view text, const std::string& file, int firstLine = 1, std::uint64_t parts = 1)
+      : tokens_(text, file, firstLine), current_(tokens_.next()), parts_(parts) {
     scene_.file = file;
   }
 
   SceneDesc parse() {
-    bool haveCamera = false;
+    statements();
+    if (cameras_ == 0) throw ParseError(peek().loc, "the scene has no camera");
+    return std::move(scene_);  // parse() is the parser's last act
+  }
+
+  // A part of a file: its statements, and how many of them were cameras.
+  struct Part {
+    SceneDesc scene;
+    int cameras;
+  };
+  Part part() {
+    statements();
+    return {std::move(scene_), cameras_};
+  }
+
+ private:
+  void statements() {
     while (peek().kind != Token::Kind::End) {
       const Token& t = next();
       if (t.kind != Token::Kind::Word) {
@@ -33,7 +58,7 @@ class PovParser {
       }
       if (t.text == "camera") {
         parseCamera(t);
-        haveCamera = true;
+        ++cameras_;
       } else if (t.text == "light_source") {
         parseLight(t);
       } else if (t.text == "sphere" || t.text == "plane" || t.text == "triangle" || t.text == "box" ||
@@ -43,11 +68,8 @@ class PovParser {
         throw ParseError(t.loc, "unknown keyword " + t.quoted());
       }
     }
-    if (!haveCamera) throw ParseError(peek().loc, "the scene has no camera");
-    return std::move(scene_);  // parse() is the parser's last act
   }
 
- private:
   const Token& peek() const { return current_; }
   // By value: the token after it replaces the lookahead, and a caller's `const Token&` keeps the value alive.
   Token next() {
@@ -237,8 +259,9 @@ class PovParser {
       obj.shape = cyl;
     }
     parseModifiers(obj, keyword);
-    const size_t n = scene_.objects.size();  // a file of tiny objects can outgrow memory (limits.hpp)
-    const std::string shortage = objectMemoryShortage(n, n + 1, "a scene");
+    // A file of tiny objects can outgrow memory (limits.hpp). A part stands for its share of the file.
+    const std::uint64_t n = scene_.objects.size();
+    const std::string shortage = objectMemoryShortage(n * parts_, (n + 1) * parts_, "a scene");
     if (!shortage.empty()) throw ParseError(keyword.loc, shortage);
     scene_.objects.push_back(std::move(obj));
   }
@@ -340,11 +363,105 @@ class PovParser {
 
   Tokenizer tokens_;
   Token current_;  // the one token of lookahead
+  std::uint64_t parts_;
   SceneDesc scene_;
+  int cameras_ = 0;
 };
+
+// Parts of at least this size are worth a thread: about 2 ms of reading.
+constexpr size_t kMinPartBytes = size_t(256) << 10;
+
+// Line ends (LF, CRLF, lone CR) in `text`, as the tokenizer counts them.
+int lineEnds(std::string_view text) {
+  int n = int(std::count(text.begin(), text.end(), '\n'));
+  for (size_t at = text.find('\r'); at != std::string_view::npos; at = text.find('\r', at + 1)) {
+    if (at + 1 == text.size() || text[at + 1] != '\n') ++n;
+  }
+  return n;
+}
+
+// Whether a statement keyword opens the line that starts at `at`, after blanks.
+bool statementStartsLine(std::string_view text, size_t at) {
+  while (at < text.size() && (text[at] == ' ' || text[at] == '\t')) ++at;
+  for (const std::string_view keyword :
+       {"camera", "light_source", "sphere", "plane", "triangle", "box", "cone", "cylinder"}) {
+    if (text.compare(at, keyword.size(), keyword) == 0) {
+      const size_t after = at + keyword.size();
+      return after == text.size() || !(std::isalnum(static_cast<unsigned char>(text[after])) || text[after] == '_');
+    }
+  }
+  return false;
+}
+
+// Where to cut the text into about `count` parts of equal size: each cut is at the start of a line that a
+// statement keyword opens, the first after its even share. Some may fall inside a statement or a comment
+// after all; parseParts() finds out.
+std::vector<size_t> partStarts(std::string_view text, int count) {
+  std::vector<size_t> starts{0};
+  for (int k = 1; k < count; ++k) {
+    const size_t from = std::max(starts.back() + 1, text.size() / size_t(count) * size_t(k));
+    for (size_t at = text.find_first_of("\n\r", from); at != std::string_view::npos;
+         at = text.find_first_of("\n\r", at + 1)) {
+      const size_t line = at + 1;  // a CR followed by LF does not end the line; its LF does
+      if (text[at] == '\r' && line < text.size() && text[line] == '\n') continue;
+      if (statementStartsLine(text, line)) {
+        starts.push_back(line);
+        break;
+      }
+    }
+  }
+  return starts;
+}
+
+// Reads the parts at once, as if each were a file. Together they mean what the whole file means when every
+// part reads to its end without an error, so that each cut lay between two statements and outside any comment
+// (a comment cannot hide a cut: a line comment ends before it, and a block comment left open is an error), and
+// when the file has one camera (a second camera statement changes the first's). Otherwise nothing, and the
+// whole file is read in one piece, for its exact error or meaning.
+std::optional<SceneDesc> parseParts(std::string_view text, const std::string& file,
+                                    const std::vector<size_t>& starts, int threads) {
+  const size_t n = starts.size();
+  std::vector<int> firstLines{1};
+  for (size_t k = 1; k < n; ++k) {
+    firstLines.push_back(firstLines.back() + lineEnds(text.substr(starts[k - 1], starts[k] - starts[k - 1])));
+  }
+  std::vector<std::optional<PovParser::Part>> parts(n);
+  parallelFor(int(n), threads, [&](int k) {
+    const size_t begin = starts[size_t(k)], end = size_t(k) + 1 < n ? starts[size_t(k) + 1] : text.size();
+    try {
+      parts[size_t(k)] = PovParser(text.substr(begin, end - begin), file, firstLines[size_t(k)], n).part();
+    } catch (const ParseError&) {  // reported by the reading of the whole file
+    }
+  });
+  int cameras = 0;
+  size_t objects = 0;
+  for (const auto& part : parts) {
+    if (!part) return std::nullopt;
+    cameras += part->cameras;
+    objects += part->scene.objects.size();
+  }
+  if (cameras != 1) return std::nullopt;
+  SceneDesc scene = std::move(parts[0]->scene);
+  scene.objects.reserve(objects);
+  for (size_t k = 1; k < n; ++k) {
+    SceneDesc& s = parts[k]->scene;
+    if (parts[k]->cameras == 1) scene.camera = s.camera;
+    scene.lights.insert(scene.lights.end(), s.lights.begin(), s.lights.end());
+    std::move(s.objects.begin(), s.objects.end(), std::back_inserter(scene.objects));
+    std::move(s.warnings.begin(), s.warnings.end(), std::back_inserter(scene.warnings));
+    s = SceneDesc();  // its memory back before the next part's objects are moved
+  }
+  return scene;
+}
 
 }  // namespace
 
-SceneDesc parsePov(const std::string& text, const std::string& file) { return PovParser(text, file).parse(); }
+SceneDesc parsePov(const std::string& text, const std::string& file, int threads) {
+  if (text.size() >= 2 * kMinPartBytes && threads > 1) {
+    const int count = int(std::min<size_t>(size_t(threads) * 2, text.size() / kMinPartBytes));
+    if (auto scene = parseParts(text, file, partStarts(text, count), threads)) return std::move(*scene);
+  }
+  return PovParser(text, file).parse();
+}
 
 }  // namespace rt

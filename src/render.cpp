@@ -21,7 +21,7 @@ Image render(const SceneDesc& desc, int width, int height, const RenderOptions& 
   Image image(width, height);
   withPrecision(arithmetic.precision, [&](auto tag) {
     using T = decltype(tag);
-    const Scene<T> scene(desc, arithmetic, options.hierarchy);
+    const Scene<T> scene(desc, arithmetic, options.hierarchy, options.threads);
     const Camera<T> camera(desc.camera, width, height);
     const Tracer<T> tracer(scene, options);
     // Every pixel is computed on its own from constant state (the tracers' shadow caches change the order of

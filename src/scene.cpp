@@ -65,7 +65,7 @@ ObjectDesc foldSimilarityIntoSphere(const ObjectDesc& desc) {
 }  // namespace
 
 template <class T>
-Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy hierarchy)
+Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy hierarchy, int threads)
     : desc_(desc), arithmetic_(arithmetic) {
   for (const LightDesc& l : desc.lights) lights_.push_back(Light<T>{Vec3<T>(l.position), l.color});
   // The course tier does what its reference does: every transformed object is intersected on the transformed
@@ -98,7 +98,7 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
   const bool build = hierarchy == Hierarchy::Always ||
                      (hierarchy == Hierarchy::Auto && bounded.size() >= kHierarchyMinObjects);
   if (build) {
-    hierarchy_.emplace(bounded);
+    hierarchy_.emplace(bounded, threads);
   } else {
     scanned_.clear();
     for (const auto& o : objects_) scanned_.push_back(o.get());

@@ -239,6 +239,25 @@ TEST_CASE("the tree holds every bounded object once, inside nested boxes", "[bvh
   }
 }
 
+// Large enough that the top of the tree is split first and the subtrees under it are built on the threads; a
+// tenth of the spheres coincide, so that some subtrees stop early.
+TEST_CASE("the tree is the same, node for node, for any number of threads", "[bvh]") {
+  std::mt19937 rng(20000);
+  rt::SceneDesc desc = randomScene(rng, 20000);
+  for (int i = 0; i < 2000; ++i) desc.objects.push_back(sphereDesc({4, 4, 4}, 0.5));
+  const rt::Arithmetic arithmetic{rt::Precision::Float, rt::SphereMethod::Robust};
+  const auto printed = [&](int threads) {
+    const rt::Scene<float> scene(desc, arithmetic, Hierarchy::Always, threads);
+    std::ostringstream out;
+    scene.hierarchy()->print(out);
+    return out.str();
+  };
+  const std::string one = printed(1);
+  CHECK(one.size() > 100000);
+  CHECK(printed(2) == one);
+  CHECK(printed(5) == one);
+}
+
 TEST_CASE("a hierarchy is built only where it pays", "[bvh]") {
   rt::SceneDesc desc;
   for (int i = 0; i < 3; ++i) desc.objects.push_back(sphereDesc({i * 3.0, 0, 0}, 1));

@@ -73,8 +73,9 @@ template <class T> class Bvh {
   static const std::vector<Kernel>& kernels();
 
   // Builds over `objects`, all of which must have bounds(), in O(n log n): a binary tree by the binned
-  // surface area heuristic, then collapsed to 4 children per node.
-  explicit Bvh(const std::vector<const Object<T>*>& objects);
+  // surface area heuristic, then collapsed to 4 children per node. The tree is the same for any number of
+  // `threads`.
+  explicit Bvh(const std::vector<const Object<T>*>& objects, int threads = 1);
 
   // The two queries, for a packet of n ≤ kPacket rays (one ray is a packet of one); each ray gets the answer
   // it would get alone. best[i] becomes the closest hit of rays[i] strictly inside `range`, or stays when

@@ -19,7 +19,7 @@ std::string extension(const std::string& path);
 // from its text (looksLikeCli), with the POV subset as the fallback.
 SceneLanguage sceneLanguage(const std::string& path, const std::string& text);
 
-// Reads and parses a scene in its language (sceneLanguage).
-SceneDesc loadScene(const std::string& path);
+// Reads and parses a scene in its language (sceneLanguage), a large POV file on up to `threads` threads.
+SceneDesc loadScene(const std::string& path, int threads = 1);
 
 }  // namespace rt

@@ -7,7 +7,8 @@
 
 namespace rt {
 
-// Parses a whole .pov text. Throws ParseError ("file:line:col: error: …") at the first problem.
-SceneDesc parsePov(const std::string& text, const std::string& file);
+// Parses a whole .pov text. Throws ParseError ("file:line:col: error: …") at the first problem. A large text
+// is read in parts on up to `threads` threads; the result is the same for any number.
+SceneDesc parsePov(const std::string& text, const std::string& file, int threads = 1);
 
 }  // namespace rt

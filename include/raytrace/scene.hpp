@@ -19,8 +19,9 @@ template <class T> struct Light {
 
 template <class T> class Scene {
  public:
-  // `arithmetic` must be resolved (no Auto) and match T; see chooseArithmetic().
-  Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy hierarchy = Hierarchy::Auto);
+  // `arithmetic` must be resolved (no Auto) and match T; see chooseArithmetic(). `threads` build the hierarchy;
+  // the scene is the same for any number.
+  Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy hierarchy = Hierarchy::Auto, int threads = 1);
 
   // The closest hit strictly inside `range` over all objects. Equal t resolve to the object that comes first
   // in the file, so results never depend on traversal order (stability.md F13).
