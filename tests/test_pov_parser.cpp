@@ -2,7 +2,13 @@
 // with its file:line:col.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -370,4 +376,101 @@ TEST_CASE("pov: commas between shape parameters") {
         "s.pov:2:20: error: expected ',' after the cylinder base, found '<'");
   CHECK(errorOf("plane { <0,1,0>, 1 pigment { rgb <1,1,1> } ior 2 }") ==
         "s.pov:2:44: error: unknown plane property 'ior'");
+}
+
+namespace {
+
+// Everything a parse yields that a part of a file could get wrong: each object's location, shape, material
+// and transform, the lights, the camera, the warnings.
+std::string everything(const SceneDesc& s) {
+  std::ostringstream out;
+  out.precision(17);
+  const auto v = [&](const glm::dvec3& p) { out << p.x << ',' << p.y << ',' << p.z << ' '; };
+  v(s.camera.location), v(s.camera.up), v(s.camera.right), v(s.camera.lookAt);
+  for (const rt::LightDesc& l : s.lights) v(l.position), v(l.color);
+  for (const rt::ObjectDesc& o : s.objects) {
+    out << '\n' << o.loc.str() << ' ' << o.shape.index() << ' ';
+    std::visit(
+        [&](const auto& shape) {
+          using S = std::decay_t<decltype(shape)>;
+          if constexpr (std::is_same_v<S, rt::SphereDesc>) v(shape.center), out << shape.radius;
+          if constexpr (std::is_same_v<S, rt::PlaneDesc>) v(shape.normal), out << shape.distance;
+          if constexpr (std::is_same_v<S, rt::TriangleDesc>) v(shape.a), v(shape.b), v(shape.c);
+          if constexpr (std::is_same_v<S, rt::BoxDesc>) v(shape.min), v(shape.max);
+          if constexpr (std::is_same_v<S, rt::ConeDesc>) v(shape.base), v(shape.cap), out << shape.capRadius;
+          if constexpr (std::is_same_v<S, rt::CylinderDesc>) v(shape.base), v(shape.cap), out << shape.radius;
+        },
+        o.shape);
+    out << ' ';
+    v(o.material.pigment), v(o.material.specular);
+    v(glm::dvec3(o.worldFromObject[3]));
+    out << o.transforms.size();
+  }
+  for (const std::string& w : s.warnings) out << '\n' << w;
+  return out.str();
+}
+
+// About 1.25 MiB of statements in every layout: one-line and multi-line, indented, with line comments (some
+// naming a shape), warnings to locate, and line ends of one kind (a line is `eol`).
+std::string largeScene(const std::string& eol) {
+  std::string s = "camera { location <0, 2, 10> look_at <0, 0, 0> }" + eol;
+  s += "light_source { <10, 20, 30> color rgb <1, 1, 1> }" + eol;
+  for (int i = 0; s.size() < (size_t(5) << 18); ++i) {
+    const std::string n = std::to_string(i % 97) + "." + std::to_string(i % 10);
+    switch (i % 5) {
+      case 0: s += "sphere { <" + n + ", 0, -1>, 0.5 pigment { color rgb <1, 0.5, " + n + "> } }" + eol; break;
+      case 1: s += "box {" + eol + "  <0, 0, 0>, <1, " + n + ", 1>" + eol + "  finish { metallic 1 }" + eol + "}" + eol; break;
+      case 2: s += "  plane { <0, 1, 0>, -" + n + " } // sphere { <9, 9, 9>, 1 }" + eol; break;
+      case 3: s += "// sphere { <8, 8, 8>, 1 }" + eol + "\tcone { <0, 0, 0>, 1, <0, " + n + ", 0>, 0 }" + eol; break;
+      default: s += "cylinder { <0, 0, 0>, <0, 1, 0>, 0.5 translate <" + n + ", 0, 0> }" + eol; break;
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("pov: a large file reads the same on any number of threads, with any line ends") {
+  for (const std::string eol : {"\n", "\r\n", "\r"}) {
+    const std::string text = largeScene(eol);
+    const std::string one = everything(parsePov(text, "big.pov", 1));
+    CHECK(one.size() > 1000000);
+    CHECK(everything(parsePov(text, "big.pov", 2)) == one);
+    CHECK(everything(parsePov(text, "big.pov", 7)) == one);
+  }
+}
+
+// Cuts fall where a keyword opens a line, which inside a block comment or a statement is no statement at all;
+// and a second camera changes only what it names. Each reads as the whole file does.
+TEST_CASE("pov: a large file whose keyword lines lie in comments, or with two cameras, reads as one piece") {
+  std::string commented = largeScene("\n");
+  commented.insert(commented.size() / 2, "/*\n" + largeScene("\n") + "*/\n");
+  const std::string one = everything(parsePov(commented, "c.pov", 1));
+  CHECK(parsePov(commented, "c.pov", 1).objects.size() == parsePov(largeScene("\n"), "c.pov", 1).objects.size());
+  CHECK(everything(parsePov(commented, "c.pov", 4)) == one);
+
+  const std::string cameras = largeScene("\n") + "camera { location <1, 2, 3> }\n";
+  const SceneDesc s = parsePov(cameras, "d.pov", 4);
+  CHECK(s.camera.location == glm::dvec3(1, 2, 3));
+  CHECK(s.camera.lookAt == glm::dvec3(0, 0, 0));
+  CHECK(everything(s) == everything(parsePov(cameras, "d.pov", 1)));
+}
+
+TEST_CASE("pov: an error in a large file is the error a one-piece read reports, on any number of threads") {
+  const std::string text = largeScene("\n");
+  const int lines = int(std::count(text.begin(), text.end(), '\n'));
+  for (const auto& [bad, message] : std::vector<std::pair<std::string, std::string>>{
+           {"sphere { <0, 0, 0>, -1 }\n", ":21: error: the sphere radius must be greater than 0, found -1"},
+           {"/* never closed\n", ":1: error: comment '/*' is never closed"},
+           {"box { <0, 0, 0> <1, 1, 1> }\n", ":17: error: expected ',' after the first box corner, found '<'"}}) {
+    for (const size_t line : {text.find("\nsphere", text.size() / 3) + 1, text.size()}) {
+      const std::string broken = text.substr(0, line) + bad + text.substr(line);
+      const int lineNo = int(std::count(text.begin(), text.begin() + std::ptrdiff_t(line), '\n')) + 1;
+      const std::string expected = "e.pov:" + std::to_string(lineNo) + message;
+      for (const int threads : {1, 2, 5}) {
+        INFO("line " << lineNo << " of " << lines << ", threads " << threads);
+        CHECK_THROWS_WITH(parsePov(broken, "e.pov", threads), expected);
+      }
+    }
+  }
 }
