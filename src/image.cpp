@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <new>
+#include <type_traits>
 
 #include <glm/gtc/type_ptr.hpp>
 #include <unistd.h>
@@ -24,7 +26,9 @@ Image::Image(int width, int height) : width_(width), height_(height) {
   const std::string what = "a " + std::to_string(width) + "x" + std::to_string(height) + " image";
   const std::string shortage = memoryShortage(what, bytes, availableMemory());
   if (!shortage.empty()) throw Error(shortage);
-  pixels_.assign(size_t(width) * size_t(height), Color(0));
+  static_assert(std::is_trivially_copyable_v<Color>, "pixels start as calloc's zero bytes");
+  pixels_.reset(static_cast<Color*>(std::calloc(size_t(width) * size_t(height), sizeof(Color))));
+  if (!pixels_) throw std::bad_alloc();
 }
 
 unsigned char toByte(float c, Conventions::ToByte mode) {
