@@ -43,16 +43,17 @@ unsigned char toByte(float c, Conventions::ToByte mode) {
 
 void writePng(const Image& image, const std::string& path, Conventions::ToByte mode, int threads) {
   const size_t stride = size_t(image.width()) * 3;
-  std::vector<unsigned char> bytes(stride * size_t(image.height()));
+  // Left unset, as every byte is written below, on the threads.
+  const std::unique_ptr<unsigned char[]> bytes(new unsigned char[stride * size_t(image.height())]);
   parallelFor(image.height(), threads, [&](int row) {  // PNG rows run top down, pixel rows y up
     // Locals, not the captured references, so that the byte stores cannot alias them and the loop vectorizes.
     const size_t n = stride;
     const Conventions::ToByte m = mode;
-    unsigned char* out = bytes.data() + size_t(row) * n;
+    unsigned char* out = bytes.get() + size_t(row) * n;
     const float* in = glm::value_ptr(image.at(0, image.height() - 1 - row));
     for (size_t i = 0; i < n; ++i) out[i] = toByte(in[i], m);
   });
-  const std::vector<unsigned char> png = encodePng(bytes, image.width(), image.height(), threads);
+  const std::vector<unsigned char> png = encodePng(bytes.get(), image.width(), image.height(), threads);
   const std::string temp = path + ".tmp" + std::to_string(getpid());
   std::FILE* f = std::fopen(temp.c_str(), "wb");
   if (!f) throw Error("cannot write '" + path + "': " + std::strerror(errno));

@@ -13,7 +13,7 @@ namespace rt {
 
 namespace {
 
-constexpr size_t kSegmentBytes = size_t(1) << 20;  // raw bytes per independently compressed segment
+constexpr size_t kSegmentBytes = size_t(1) << 18;  // raw bytes per independently compressed segment
 constexpr size_t kMaxChunk = size_t(1) << 30;      // IDAT data per chunk, below the 2³¹ − 1 limit (§5.3)
 
 void putU32(std::vector<unsigned char>& out, uint32_t v) {
@@ -31,11 +31,11 @@ void putChunk(std::vector<unsigned char>& out, const char* type, const unsigned 
 
 // Rows [first, last) with filter type 2, "Up" (§9.2): each byte minus the byte above it, so smooth vertical
 // gradients become small numbers that deflate well. It is cheap and needs no per-row choice.
-std::vector<unsigned char> filterRows(const std::vector<unsigned char>& rgb, size_t stride, int first, int last) {
+std::vector<unsigned char> filterRows(const unsigned char* rgb, size_t stride, int first, int last) {
   std::vector<unsigned char> out((stride + 1) * size_t(last - first));
   unsigned char* to = out.data();
   for (int y = first; y < last; ++y) {
-    const unsigned char* row = rgb.data() + size_t(y) * stride;
+    const unsigned char* row = rgb + size_t(y) * stride;
     *to++ = 2;
     if (y == 0) {
       std::copy(row, row + stride, to);
@@ -67,7 +67,7 @@ std::vector<unsigned char> deflateSegment(std::vector<unsigned char>& data, bool
 
 }  // namespace
 
-std::vector<unsigned char> encodePng(const std::vector<unsigned char>& rgb, int width, int height, int threads) {
+std::vector<unsigned char> encodePng(const unsigned char* rgb, int width, int height, int threads) {
   const size_t stride = size_t(width) * 3;
   const int rowsPerSegment = int(std::max<size_t>(1, kSegmentBytes / (stride + 1)));
   const int segments = (height + rowsPerSegment - 1) / rowsPerSegment;

@@ -62,14 +62,14 @@ TEST_CASE("encodePng round-trips through zlib, in one segment and in many", "[pn
     std::vector<unsigned char> rgb(size_t(width) * size_t(height) * 3);
     // Smooth rows with noise: compressible, but never trivially.
     for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = static_cast<unsigned char>(i / 97 + rng() % 8);
-    const auto png = rt::encodePng(rgb, width, height, 1);
+    const auto png = rt::encodePng(rgb.data(), width, height, 1);
     int w = 0, h = 0;
     CHECK(decode(png, w, h) == rgb);
     CHECK(w == width);
     CHECK(h == height);
     // The file depends on the pixels only.
-    CHECK(rt::encodePng(rgb, width, height, 2) == png);
-    CHECK(rt::encodePng(rgb, width, height, 5) == png);
+    CHECK(rt::encodePng(rgb.data(), width, height, 2) == png);
+    CHECK(rt::encodePng(rgb.data(), width, height, 5) == png);
   }
 }
 

