@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <new>
 #include <optional>
 #include <string_view>
 #include <utility>
@@ -36,8 +37,12 @@ class PovParser {
       : tokens_(text, file, firstLine), current_(tokens_.next()), parts_(parts) {
     scene_.file = file;
     // Room for as many objects as a typical file of this size holds, so that a large file does not copy its
-    // objects into ever larger arrays as it is read. Pages are only taken once objects fill them.
-    scene_.objects.reserve(text.size() / kTypicalObjectBytes);
+    // objects into ever larger arrays as it is read; pages are only taken once objects fill them. A power of
+    // two, so that the array still doubles where parseObject() checks the memory (powers of two): it never
+    // grows past a check that would have stopped it.
+    size_t room = 1;
+    while (room * 2 <= text.size() / kTypicalObjectBytes) room *= 2;
+    scene_.objects.reserve(room);
   }
 
   SceneDesc parse() {
@@ -375,6 +380,9 @@ class PovParser {
   int cameras_ = 0;
 };
 
+// The shortest an object can be written: `plane{<0,1,0>,0}`.
+constexpr size_t kMinObjectBytes = 16;
+
 // Parts of at least this size are worth a thread: about 2 ms of reading.
 constexpr size_t kMinPartBytes = size_t(256) << 10;
 
@@ -438,6 +446,7 @@ std::optional<SceneDesc> parseParts(std::string_view text, const std::string& fi
     try {
       parts[size_t(k)] = PovParser(text.substr(begin, end - begin), file, firstLines[size_t(k)], n).part();
     } catch (const ParseError&) {  // reported by the reading of the whole file
+    } catch (const std::bad_alloc&) {  // so is a lack of memory, where the file's own checks see it
     }
   });
   int cameras = 0;
@@ -464,7 +473,12 @@ std::optional<SceneDesc> parseParts(std::string_view text, const std::string& fi
 }  // namespace
 
 SceneDesc parsePov(const std::string& text, const std::string& file, int threads) {
-  if (text.size() >= 2 * kMinPartBytes && threads > 1) {
+  // In parts only with memory to spare for as many objects as the text could hold: where memory is short, the
+  // one-piece read meets the memory checks exactly where it would on one thread, and the parts, which would
+  // use memory of their own first, are not tried.
+  const std::uint64_t mostObjects = text.size() / kMinObjectBytes;
+  if (text.size() >= 2 * kMinPartBytes && threads > 1 &&
+      memoryShortage("", mostObjects * kBytesPerObject, availableMemory()).empty()) {
     const int count = int(std::min<size_t>(size_t(threads) * 2, text.size() / kMinPartBytes));
     if (auto scene = parseParts(text, file, partStarts(text, count), threads)) return std::move(*scene);
   }
