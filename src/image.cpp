@@ -46,7 +46,9 @@ void writePng(const Image& image, const std::string& path, Conventions::ToByte m
   // Left unset, as every byte is written below, on the threads.
   const std::unique_ptr<unsigned char[]> bytes(new unsigned char[stride * size_t(image.height())]);
   parallelFor(image.height(), threads, [&](int row) {  // PNG rows run top down, pixel rows y up
-    // Locals, not the captured references, so that the byte stores cannot alias them and the loop vectorizes.
+    // A row of pixels is 3·width floats in a row. Locals, not the captured references, so that the byte stores
+    // cannot alias them and the loop vectorizes.
+    static_assert(sizeof(Color) == 3 * sizeof(float), "no padding between pixels");
     const size_t n = stride;
     const Conventions::ToByte m = mode;
     unsigned char* out = bytes.get() + size_t(row) * n;

@@ -26,7 +26,7 @@ std::string num(double v) {
   return buf;
 }
 
-// About the fewest bytes an object takes in the files we know: the benchmark's spheres take 160, the course's
+// Fewer bytes than an object takes in the files we know: the benchmark's spheres take 160, the course's
 // objects more (each has a pigment and a finish). A denser file just grows its array a few more times.
 constexpr size_t kTypicalObjectBytes = 128;
 
