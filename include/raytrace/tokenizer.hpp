@@ -12,7 +12,7 @@ namespace rt {
 struct Token {
   enum class Kind { Number, Word, Punct, End } kind = Kind::End;
   std::string_view text;  // as written, inside the text the tokenizer reads
-  double number = 0;   // the value of a Number
+  double number = 0;      // the value of a Number
   SourceLoc loc;
 
   // How a message quotes it: 'abc', or "end of file".
