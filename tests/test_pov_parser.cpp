@@ -3,8 +3,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
-#include <sstream>
+#include <random>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -381,33 +382,33 @@ TEST_CASE("pov: commas between shape parameters") {
 namespace {
 
 // Everything a parse yields that a part of a file could get wrong: each object's location, shape, material
-// and transform, the lights, the camera, the warnings.
+// and transform, the lights, the camera, the warnings. As bit patterns, so that equal means identical (and a
+// large file compares in milliseconds).
 std::string everything(const SceneDesc& s) {
-  std::ostringstream out;
-  out.precision(17);
-  const auto v = [&](const glm::dvec3& p) { out << p.x << ',' << p.y << ',' << p.z << ' '; };
+  std::string out;
+  const auto put = [&](double x) { out.append(reinterpret_cast<const char*>(&x), sizeof x); };
+  const auto v = [&](const glm::dvec3& p) { put(p.x), put(p.y), put(p.z); };
   v(s.camera.location), v(s.camera.up), v(s.camera.right), v(s.camera.lookAt);
   for (const rt::LightDesc& l : s.lights) v(l.position), v(l.color);
   for (const rt::ObjectDesc& o : s.objects) {
-    out << '\n' << o.loc.str() << ' ' << o.shape.index() << ' ';
+    put(o.loc.line), put(o.loc.col), put(double(o.shape.index()));
     std::visit(
         [&](const auto& shape) {
           using S = std::decay_t<decltype(shape)>;
-          if constexpr (std::is_same_v<S, rt::SphereDesc>) v(shape.center), out << shape.radius;
-          if constexpr (std::is_same_v<S, rt::PlaneDesc>) v(shape.normal), out << shape.distance;
+          if constexpr (std::is_same_v<S, rt::SphereDesc>) v(shape.center), put(shape.radius);
+          if constexpr (std::is_same_v<S, rt::PlaneDesc>) v(shape.normal), put(shape.distance);
           if constexpr (std::is_same_v<S, rt::TriangleDesc>) v(shape.a), v(shape.b), v(shape.c);
           if constexpr (std::is_same_v<S, rt::BoxDesc>) v(shape.min), v(shape.max);
-          if constexpr (std::is_same_v<S, rt::ConeDesc>) v(shape.base), v(shape.cap), out << shape.capRadius;
-          if constexpr (std::is_same_v<S, rt::CylinderDesc>) v(shape.base), v(shape.cap), out << shape.radius;
+          if constexpr (std::is_same_v<S, rt::ConeDesc>) v(shape.base), v(shape.cap), put(shape.capRadius);
+          if constexpr (std::is_same_v<S, rt::CylinderDesc>) v(shape.base), v(shape.cap), put(shape.radius);
         },
         o.shape);
-    out << ' ';
     v(o.material.pigment), v(o.material.specular);
     v(glm::dvec3(o.worldFromObject[3]));
-    out << o.transforms.size();
+    put(double(o.transforms.size()));
   }
-  for (const std::string& w : s.warnings) out << '\n' << w;
-  return out.str();
+  for (const std::string& w : s.warnings) out += "\n" + w;
+  return out;
 }
 
 // About 1.25 MiB of statements in every layout: one-line and multi-line, indented, with line comments (some
@@ -472,5 +473,45 @@ TEST_CASE("pov: an error in a large file is the error a one-piece read reports, 
         CHECK_THROWS_WITH(parsePov(broken, "e.pov", threads), expected);
       }
     }
+  }
+}
+
+// The argument for reading in parts (a part that reads to its end leaves the next cut between statements and
+// outside comments) tried on seeded edits that keep the file valid but put line breaks, comments and
+// statement-like lines where cuts may fall: between any two tokens, or at the start of a line. On any number
+// of threads the scene is the one-piece read's.
+TEST_CASE("pov: a large file with seeded comments and line breaks reads as one piece on any number of threads") {
+  const std::string clean = largeScene("\n");
+  const std::vector<std::string> betweenTokens{"\n", "\r\n", "\r", "/* sphere { */", "/*\nsphere { <1, 2, 3>, 1 }\n*/",
+                                               "// }\n", "\n  \n"};
+  const std::vector<std::string> lineStarts{"// sphere { <1, 1, 1>, 1 }\n", "/*\ncamera { location <9, 9, 9> }\n*/\n",
+                                            "sphere { <5, 5, 5>, 0.5 }\n", "\n"};
+  // Places in the clean text: spaces between tokens (outside the line comments), and the starts of lines that
+  // start a statement (a letter in column 1).
+  std::vector<size_t> spaces, starts;
+  for (size_t at = 0, line = 0; at < clean.size(); ++at) {
+    if (clean[at] == '\n') line = at + 1;
+    if (clean[at] == ' ' && clean.substr(line, at - line).find("//") == std::string::npos) {
+      spaces.push_back(at);
+    }
+    if (at == line && std::isalpha(static_cast<unsigned char>(clean[at]))) starts.push_back(at);
+  }
+  std::mt19937 rng(4730);
+  for (int trial = 0; trial < 8; ++trial) {
+    std::vector<std::pair<size_t, std::string>> inserts;
+    for (int k = 0; k < 40; ++k) {
+      if (rng() % 2) {
+        inserts.emplace_back(spaces[rng() % spaces.size()], betweenTokens[rng() % betweenTokens.size()]);
+      } else {
+        inserts.emplace_back(starts[rng() % starts.size()], lineStarts[rng() % lineStarts.size()]);
+      }
+    }
+    std::sort(inserts.begin(), inserts.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::string text = clean;
+    for (const auto& [at, what] : inserts) text.insert(at, what);  // from the back, so places stay valid
+    CAPTURE(trial);
+    const std::string one = everything(parsePov(text, "r.pov", 1));
+    CHECK(everything(parsePov(text, "r.pov", 2)) == one);
+    CHECK(everything(parsePov(text, "r.pov", 5)) == one);
   }
 }
