@@ -292,7 +292,8 @@ std::string usage() {
       "  -beers                          Beer's-law absorption inside transparent objects\n"
       "  -ss=N                           N x N stratified samples per pixel (1 to 64)\n"
       "  -normals                        colour each hit by its normal (debug)\n"
-      "  --threads N                     render on N threads (default: every core); same image for any N\n"
+      "  --threads N                     load, build and render on N threads (default: every core); same\n"
+      "                                  scene and image for any N\n"
       "  --quiet                         no progress line (shown only while rendering to a terminal)\n"
       "  -sds                            accepted for the course; a hierarchy is used whenever it pays\n"
       "  --hierarchy=auto|always|never   force the bounding volume hierarchy on or off (same image)\n";
