@@ -27,7 +27,7 @@ std::string num(double v) {
 }
 
 // Fewer bytes than an object takes in the files we know: the benchmark's spheres take 160, the course's
-// objects more (each has a pigment and a finish). A denser file just grows its array a few more times.
+// objects more (each has a pigment and a finish). A denser file just grows its array once or twice more.
 constexpr size_t kTypicalObjectBytes = 128;
 
 class PovParser {
@@ -39,10 +39,12 @@ class PovParser {
     // Room for as many objects as a typical file of this size holds, so that a large file does not copy its
     // objects into ever larger arrays as it is read; pages are only taken once objects fill them. A power of
     // two, so that the array still doubles where parseObject() checks the memory (powers of two): it never
-    // grows past a check that would have stopped it.
+    // grows past a check that would have stopped it. Only where memory allows, as the checks would.
     size_t room = 1;
-    while (room * 2 <= text.size() / kTypicalObjectBytes) room *= 2;
-    scene_.objects.reserve(room);
+    while (room < text.size() / kTypicalObjectBytes) room *= 2;
+    if (room > 1 && memoryShortage("", room * sizeof(ObjectDesc), availableMemory()).empty()) {
+      scene_.objects.reserve(room);
+    }
   }
 
   SceneDesc parse() {
