@@ -295,18 +295,21 @@ void Tracer<T>::shadowRays(const std::optional<Hit<T>>* hits, const Ray<T>* rays
     return;
   }
   // shadowRay() and spawnRayTo() with the course's offset, lane by lane; lanes without a hit compute on zeros
-  // and are dropped.
+  // and are dropped. (The arrays are not zeroed whole: that costs more than the rest for a short packet.)
   constexpr int kLanes = Bvh<T>::kPacket;
-  T p[3][kLanes] = {}, n[3][kLanes] = {}, outward[3][kLanes] = {};
+  T p[3][kLanes], n[3][kLanes], outward[3][kLanes];
   for (int i = 0; i < count; ++i) {
-    if (!hits[i]) continue;
-    const Vec3<T> side = viewerSide(*hits[i], rays[i]);
-    // spawnOrigin(): the hit's normal, turned to the side to leave by.
-    const Vec3<T> o = glm::dot(hits[i]->normal, side) > T(0) ? hits[i]->normal : -hits[i]->normal;
-    for (int a = 0; a < 3; ++a) p[a][i] = hits[i]->point[a], n[a][i] = side[a], outward[a][i] = o[a];
+    Vec3<T> point(0), side(0), o(0);
+    if (hits[i]) {
+      point = hits[i]->point;
+      side = viewerSide(*hits[i], rays[i]);
+      // spawnOrigin(): the hit's normal, turned to the side to leave by.
+      o = glm::dot(hits[i]->normal, side) > T(0) ? hits[i]->normal : -hits[i]->normal;
+    }
+    for (int a = 0; a < 3; ++a) p[a][i] = point[a], n[a][i] = side[a], outward[a][i] = o[a];
   }
   T l[3][kLanes], nl[kLanes], origin[3][kLanes], dir[3][kLanes], far[kLanes];
-  for (int i = 0; i < kLanes; ++i) {
+  for (int i = 0; i < count; ++i) {
     // glm::normalize(v) is v · (1 / sqrt(v·v)), and glm::dot adds (x + y) + z.
     const T vx = light.position.x - p[0][i], vy = light.position.y - p[1][i], vz = light.position.z - p[2][i];
     const T inv = T(1) / std::sqrt(vx * vx + vy * vy + vz * vz);
