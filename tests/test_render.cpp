@@ -232,7 +232,8 @@ TEST_CASE("Rendered images are finite whatever the flags and materials", "[rende
 TEST_CASE("A rendered pixel is the colour pixel() reports for it: packets change nothing", "[render]") {
   // pixel() traces one ray at a time, as printrays and pixelcolor do; render() goes through Tracer::block's
   // packets and shadow cache. Scenes with and without a hierarchy, several lights, mirrors and glass.
-  for (const char* file : {"/scenes/glass_mirror.pov", "/scenes/shapes.pov", "/scenes/stability/s3_glass_mirrors.pov"}) {
+  for (const char* file : {"/scenes/glass_mirror.pov", "/scenes/shapes.pov", "/scenes/stability/s3_glass_mirrors.pov",
+                           "/scenes/default.pov", "/scenes/stability/s1_grazing.pov"}) {
     const SceneDesc scene = loadScene(sourceDir() + file);
     for (const int samples : {1, 2}) {
       for (const Hierarchy hierarchy : {Hierarchy::Always, Hierarchy::Never}) {
