@@ -113,7 +113,11 @@ template <class T> void Tracer<T>::block(const Camera<T>& camera, int x0, int y0
       Ray<T> query[kPacket];
       Interval<T> segments[kPacket];
       int index[kPacket], m = 0;
-      shadowRays(hits, packet, count, scene_.lights()[l], shadows.data() + l, lights);
+      for (int i = 0; i < count; ++i) {
+        auto& s = shadows[size_t(i) * lights + l];
+        s.emplace();
+        if (!hits[i] || !shadowRay(*hits[i], viewerSide(*hits[i], packet[i]), scene_.lights()[l], *s)) s.reset();
+      }
       // Gathered in a second pass: copied right after it is written, a ray is read back before its stores
       // have left the store buffer, and each such read stalls.
       for (int i = 0; i < count; ++i) {
@@ -281,60 +285,6 @@ bool Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& l
   spawnRayTo(hit, light.position, out.l, n, *scene_.arithmetic().offset, out.ray, out.segment);
   out.blocked = false;
   return out.nl > 0.0f;
-}
-
-template <class T>
-void Tracer<T>::shadowRays(const std::optional<Hit<T>>* hits, const Ray<T>* rays, int count, const Light<T>& light,
-                           std::optional<ShadowRay>* out, size_t stride) const {
-  if (*scene_.arithmetic().offset != OffsetPolicy::Course) {
-    for (int i = 0; i < count; ++i) {
-      auto& s = out[size_t(i) * stride];
-      s.emplace();
-      if (!hits[i] || !shadowRay(*hits[i], viewerSide(*hits[i], rays[i]), light, *s)) s.reset();
-    }
-    return;
-  }
-  // shadowRay() and spawnRayTo() with the course's offset, lane by lane; lanes without a hit compute on zeros
-  // and are dropped. (The arrays are not zeroed whole: that costs more than the rest for a short packet.)
-  constexpr int kLanes = Bvh<T>::kPacket;
-  T p[3][kLanes], n[3][kLanes], outward[3][kLanes];
-  for (int i = 0; i < count; ++i) {
-    Vec3<T> point(0), side(0), o(0);
-    if (hits[i]) {
-      point = hits[i]->point;
-      side = viewerSide(*hits[i], rays[i]);
-      // spawnOrigin(): the hit's normal, turned to the side to leave by.
-      o = glm::dot(hits[i]->normal, side) > T(0) ? hits[i]->normal : -hits[i]->normal;
-    }
-    for (int a = 0; a < 3; ++a) p[a][i] = point[a], n[a][i] = side[a], outward[a][i] = o[a];
-  }
-  T l[3][kLanes], nl[kLanes], origin[3][kLanes], dir[3][kLanes], far[kLanes];
-  for (int i = 0; i < count; ++i) {
-    // glm::normalize(v) is v · (1 / sqrt(v·v)), and glm::dot adds (x + y) + z.
-    const T vx = light.position.x - p[0][i], vy = light.position.y - p[1][i], vz = light.position.z - p[2][i];
-    const T inv = T(1) / std::sqrt(vx * vx + vy * vy + vz * vz);
-    l[0][i] = vx * inv, l[1][i] = vy * inv, l[2][i] = vz * inv;
-    nl[i] = n[0][i] * l[0][i] + n[1][i] * l[1][i] + n[2][i] * l[2][i];
-    for (int a = 0; a < 3; ++a) origin[a][i] = p[a][i] + T(kCourseEpsilon) * outward[a][i];
-    const T tx = light.position.x - origin[0][i], ty = light.position.y - origin[1][i],
-            tz = light.position.z - origin[2][i];
-    const T distance = std::sqrt(tx * tx + ty * ty + tz * tz);
-    const T scale = T(1) / distance;
-    dir[0][i] = tx * scale, dir[1][i] = ty * scale, dir[2][i] = tz * scale;
-    far[i] = distance * (T(1) - kShadowEpsilon<T>);
-  }
-  for (int i = 0; i < count; ++i) {
-    auto& s = out[size_t(i) * stride];
-    if (!hits[i] || !(float(nl[i]) > 0.0f)) {
-      s.reset();
-      continue;
-    }
-    s.emplace();
-    s->ray = {{origin[0][i], origin[1][i], origin[2][i]}, {dir[0][i], dir[1][i], dir[2][i]}};
-    s->segment = {T(0), far[i]};
-    s->l = {l[0][i], l[1][i], l[2][i]};
-    s->nl = float(nl[i]);
-  }
 }
 
 template class Tracer<float>;

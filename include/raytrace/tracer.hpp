@@ -60,11 +60,6 @@ template <class T> class Tracer {
   // It is written into `out` in place (it is made for every hit and light, and a returned copy would be
   // read back before its bytes have settled: a store-forwarding stall per ray).
   bool shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, ShadowRay& out) const;
-  // shadowRay() for the hits of a packet at once, out[i · stride] for hits[i], reset where there is none. With
-  // the course's offsets the rays are computed side by side, in loops the compiler vectorizes: the same
-  // operations in the same order, so the same bits, without waiting on each ray's square roots and divisions.
-  void shadowRays(const std::optional<Hit<T>>* hits, const Ray<T>* rays, int count, const Light<T>& light,
-                  std::optional<ShadowRay>* out, size_t stride) const;
   // Whether a secondary ray of accumulated weight `weight` at `depth` is worth tracing (stability.md F12).
   bool matters(float weight, int depth) const;
 
