@@ -30,21 +30,33 @@ std::string num(double v) {
 // objects more (each has a pigment and a finish). A denser file just grows its array once or twice more.
 constexpr size_t kTypicalObjectBytes = 128;
 
+// The shortest an object can be written: `plane{<0,1,0>,0}`.
+constexpr size_t kMinObjectBytes = 16;
+
+// Texts of at least this size are large: worth a thread as a part of a file (about 2 ms of reading), and
+// worth reserving room for their objects.
+constexpr size_t kMinPartBytes = size_t(256) << 10;
+
+// The objects to reserve room for in a text of `bytes`: as many as a typical file of this size holds, so that a
+// large file does not copy its objects into ever larger arrays as it is read (pages are only taken once
+// objects fill them). A power of two, so that the array still doubles where parseObject() checks the memory
+// (powers of two): it never grows past a check that would have stopped it. None for a small text.
+size_t objectRoom(size_t bytes) {
+  if (bytes < kMinPartBytes) return 0;
+  size_t room = 1;
+  while (room < bytes / kTypicalObjectBytes) room *= 2;
+  return room;
+}
+
 class PovParser {
  public:
   // `text` is a whole file, or whole lines of one from line `firstLine` on, one of `parts` read at once.
-  PovParser(std::string_view text, const std::string& file, int firstLine = 1, std::uint64_t parts = 1)
+  // `room` objects are reserved (objectRoom(), where memory allows).
+  PovParser(std::string_view text, const std::string& file, size_t room, int firstLine = 1,
+            std::uint64_t parts = 1)
       : tokens_(text, file, firstLine), current_(tokens_.next()), parts_(parts) {
     scene_.file = file;
-    // Room for as many objects as a typical file of this size holds, so that a large file does not copy its
-    // objects into ever larger arrays as it is read; pages are only taken once objects fill them. A power of
-    // two, so that the array still doubles where parseObject() checks the memory (powers of two): it never
-    // grows past a check that would have stopped it. Only where memory allows, as the checks would.
-    size_t room = 1;
-    while (room < text.size() / kTypicalObjectBytes) room *= 2;
-    if (room > 1 && memoryShortage("", room * sizeof(ObjectDesc), availableMemory()).empty()) {
-      scene_.objects.reserve(room);
-    }
+    scene_.objects.reserve(room);
   }
 
   SceneDesc parse() {
@@ -382,12 +394,6 @@ class PovParser {
   int cameras_ = 0;
 };
 
-// The shortest an object can be written: `plane{<0,1,0>,0}`.
-constexpr size_t kMinObjectBytes = 16;
-
-// Parts of at least this size are worth a thread: about 2 ms of reading.
-constexpr size_t kMinPartBytes = size_t(256) << 10;
-
 // Line ends (LF, CRLF, lone CR) in `text`, as the tokenizer counts them.
 int lineEnds(std::string_view text) {
   int n = int(std::count(text.begin(), text.end(), '\n'));
@@ -446,7 +452,9 @@ std::optional<SceneDesc> parseParts(std::string_view text, const std::string& fi
   parallelFor(int(n), threads, [&](int k) {
     const size_t begin = starts[size_t(k)], end = size_t(k) + 1 < n ? starts[size_t(k) + 1] : text.size();
     try {
-      parts[size_t(k)] = PovParser(text.substr(begin, end - begin), file, firstLines[size_t(k)], n).part();
+      // The room of every part together is within the memory parsePov() found for the whole text.
+      parts[size_t(k)] =
+          PovParser(text.substr(begin, end - begin), file, objectRoom(end - begin), firstLines[size_t(k)], n).part();
     } catch (const ParseError&) {  // reported by the reading of the whole file
     } catch (const std::bad_alloc&) {  // so is a lack of memory, where the file's own checks see it
     }
@@ -475,16 +483,21 @@ std::optional<SceneDesc> parseParts(std::string_view text, const std::string& fi
 }  // namespace
 
 SceneDesc parsePov(const std::string& text, const std::string& file, int threads) {
+  const size_t room = objectRoom(text.size());
+  if (room == 0) return PovParser(text, file, 0).parse();  // a small text: nothing to reserve or to share out
   // In parts only with memory to spare for as many objects as the text could hold: where memory is short, the
   // one-piece read meets the memory checks exactly where it would on one thread, and the parts, which would
   // use memory of their own first, are not tried.
+  const std::uint64_t available = availableMemory();
   const std::uint64_t mostObjects = text.size() / kMinObjectBytes;
   if (text.size() >= 2 * kMinPartBytes && threads > 1 &&
-      memoryShortage("", mostObjects * kBytesPerObject, availableMemory()).empty()) {
+      memoryShortage("", mostObjects * kBytesPerObject, available).empty()) {
     const int count = int(std::min<size_t>(size_t(threads) * 2, text.size() / kMinPartBytes));
     if (auto scene = parseParts(text, file, partStarts(text, count), threads)) return std::move(*scene);
   }
-  return PovParser(text, file).parse();
+  // Room only where memory allows, as parseObject()'s checks would.
+  const bool roomFits = memoryShortage("", room * sizeof(ObjectDesc), available).empty();
+  return PovParser(text, file, roomFits ? room : 0).parse();
 }
 
 }  // namespace rt
