@@ -204,12 +204,10 @@ int printbvh(const Invocation& inv, std::ostream& out) {
 // gets each of them instead, in file order, each showing the scene as it stood at its command.
 int renderImage(const Invocation& inv, std::ostream&) {
   if (inv.scene.writes.empty()) {
-    writePng(render(inv.scene, inv.width, inv.height, inv.options), "output.png", inv.scene.conventions.toByte,
-             inv.options.threads);
+    writePng(renderRgb8(inv.scene, inv.width, inv.height, inv.options), "output.png", inv.options.threads);
   }
   for (const WriteDesc& w : inv.scene.writes) {
-    writePng(render(w.scene, inv.width, inv.height, inv.options), w.path, w.scene.conventions.toByte,
-             inv.options.threads);
+    writePng(renderRgb8(w.scene, inv.width, inv.height, inv.options), w.path, inv.options.threads);
   }
   return 0;
 }

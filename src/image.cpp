@@ -19,16 +19,32 @@
 
 namespace rt {
 
-Image::Image(int width, int height) : width_(width), height_(height) {
-  // The float pixels and what writePng makes of them: the 8-bit pixels, their filtered rows and the
-  // compressed stream, each about 3 bytes a pixel at most.
-  const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * (sizeof(Color) + 9);
+namespace {
+
+// What a PNG of the 8-bit pixels takes besides them: its compressed segments and the file, each about 3 bytes
+// a pixel at most.
+constexpr std::uint64_t kRgb8BytesPerPixel = 9;
+
+void checkMemory(int width, int height, std::uint64_t bytesPerPixel) {
+  const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * bytesPerPixel;
   const std::string what = "a " + std::to_string(width) + "x" + std::to_string(height) + " image";
   const std::string shortage = memoryShortage(what, bytes, availableMemory());
   if (!shortage.empty()) throw Error(shortage);
+}
+
+}  // namespace
+
+Image::Image(int width, int height) : width_(width), height_(height) {
+  // The float pixels, then the 8-bit ones writePng makes of them.
+  checkMemory(width, height, sizeof(Color) + kRgb8BytesPerPixel);
   static_assert(std::is_trivially_copyable_v<Color>, "pixels start as calloc's zero bytes");
   pixels_.reset(static_cast<Color*>(std::calloc(size_t(width) * size_t(height), sizeof(Color))));
   if (!pixels_) throw std::bad_alloc();
+}
+
+Rgb8Image::Rgb8Image(int width, int height) : width_(width), height_(height) {
+  checkMemory(width, height, kRgb8BytesPerPixel);
+  bytes_.reset(new unsigned char[size_t(width) * size_t(height) * 3]);
 }
 
 unsigned char toByte(float c, Conventions::ToByte mode) {
@@ -41,21 +57,21 @@ unsigned char toByte(float c, Conventions::ToByte mode) {
   return static_cast<unsigned char>(int(double(v) + half));
 }
 
+void toBytes(const float* in, size_t count, unsigned char* out, Conventions::ToByte mode) {
+  for (size_t i = 0; i < count; ++i) out[i] = toByte(in[i], mode);
+}
+
 void writePng(const Image& image, const std::string& path, Conventions::ToByte mode, int threads) {
-  const size_t stride = size_t(image.width()) * 3;
-  // Left unset, as every byte is written below, on the threads.
-  const std::unique_ptr<unsigned char[]> bytes(new unsigned char[stride * size_t(image.height())]);
-  parallelFor(image.height(), threads, [&](int row) {  // PNG rows run top down, pixel rows y up
-    // A row of pixels is 3·width floats in a row. Locals, not the captured references, so that the byte stores
-    // cannot alias them and the loop vectorizes.
-    static_assert(sizeof(Color) == 3 * sizeof(float), "no padding between pixels");
-    const size_t n = stride;
-    const Conventions::ToByte m = mode;
-    unsigned char* out = bytes.get() + size_t(row) * n;
-    const float* in = glm::value_ptr(image.at(0, image.height() - 1 - row));
-    for (size_t i = 0; i < n; ++i) out[i] = toByte(in[i], m);
+  Rgb8Image bytes(image.width(), image.height());
+  parallelFor(image.height(), threads, [&](int y) {
+    static_assert(sizeof(Color) == 3 * sizeof(float), "a row of pixels is 3·width floats in a row");
+    toBytes(glm::value_ptr(image.at(0, y)), size_t(image.width()) * 3, bytes.at(0, y), mode);
   });
-  const std::vector<unsigned char> png = encodePng(bytes.get(), image.width(), image.height(), threads);
+  writePng(bytes, path, threads);
+}
+
+void writePng(const Rgb8Image& image, const std::string& path, int threads) {
+  const std::vector<unsigned char> png = encodePng(image.data(), image.width(), image.height(), threads);
   const std::string temp = path + ".tmp" + std::to_string(getpid());
   std::FILE* f = std::fopen(temp.c_str(), "wb");
   if (!f) throw Error("cannot write '" + path + "': " + std::strerror(errno));

@@ -13,8 +13,11 @@ namespace rt {
 
 namespace {
 
-constexpr size_t kSegmentBytes = size_t(1) << 18;  // raw bytes per independently compressed segment
-constexpr size_t kMaxChunk = size_t(1) << 30;      // IDAT data per chunk, below the 2³¹ − 1 limit (§5.3)
+// Raw bytes per independently compressed segment: 30 segments at 1280×960, so that the threads finish close
+// together; 64 KiB to 16 MiB segments give files within 0.3 % of each other on the bench scenes.
+constexpr size_t kSegmentBytes = size_t(1) << 17;
+
+const unsigned char kIdat[] = {'I', 'D', 'A', 'T'};
 
 void putU32(std::vector<unsigned char>& out, uint32_t v) {
   for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<unsigned char>(v >> shift));
@@ -47,22 +50,38 @@ std::vector<unsigned char> filterRows(const unsigned char* rgb, size_t stride, i
   return out;
 }
 
-// Raw deflate of one segment. Every segment but the last ends with a sync flush, which byte-aligns it without
-// marking the final block, so the segments concatenate into one valid deflate stream (RFC 1951 §3.2.3; the
-// technique of pigz).
-std::vector<unsigned char> deflateSegment(std::vector<unsigned char>& data, bool last) {
+// A segment of the zlib stream (RFC 1950), the data of an IDAT chunk of its own.
+struct Segment {
+  std::vector<unsigned char> data;  // the first also holds the stream's header
+  uLong crc;                        // CRC-32 of "IDAT" and `data`: the chunk's, but the last one's trailer
+  uLong adler;                      // Adler-32 of the segment's filtered bytes
+  size_t filteredSize;
+};
+
+// Rows [first, last) filtered and deflated, with everything their chunk needs computed on this thread. Every
+// segment but the last ends with a sync flush, which byte-aligns it without marking the final block, so the
+// segments concatenate into one valid deflate stream (RFC 1951 §3.2.3; the technique of pigz).
+Segment compress(const unsigned char* rgb, size_t stride, int first, int last, bool final) {
+  std::vector<unsigned char> filtered = filterRows(rgb, stride, first, last);
+  Segment s;
+  s.adler = adler32(1, filtered.data(), uInt(filtered.size()));
+  s.filteredSize = filtered.size();
   z_stream z{};
   if (deflateInit2(&z, 1, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK) throw Error("cannot start zlib");
-  std::vector<unsigned char> out(deflateBound(&z, uLong(data.size())) + 16);
-  z.next_in = data.data();
-  z.avail_in = uInt(data.size());
-  z.next_out = out.data();
-  z.avail_out = uInt(out.size());
-  const int status = deflate(&z, last ? Z_FINISH : Z_SYNC_FLUSH);
-  out.resize(z.total_out);
+  // The zlib header: deflate with a 32 KiB window, at the fastest level (RFC 1950 §2.2).
+  const size_t header = first == 0 ? 2 : 0;
+  s.data.resize(header + deflateBound(&z, uLong(filtered.size())) + 16);
+  s.data[0] = 0x78, s.data[1] = 0x01;
+  z.next_in = filtered.data();
+  z.avail_in = uInt(filtered.size());
+  z.next_out = s.data.data() + header;
+  z.avail_out = uInt(s.data.size() - header);
+  const int status = deflate(&z, final ? Z_FINISH : Z_SYNC_FLUSH);
+  s.data.resize(header + z.total_out);
   deflateEnd(&z);
-  if (status != (last ? Z_STREAM_END : Z_OK)) throw Error("zlib failed to compress the image");
-  return out;
+  if (status != (final ? Z_STREAM_END : Z_OK)) throw Error("zlib failed to compress the image");
+  s.crc = crc32(crc32(0, kIdat, 4), s.data.data(), uInt(s.data.size()));
+  return s;
 }
 
 }  // namespace
@@ -70,37 +89,39 @@ std::vector<unsigned char> deflateSegment(std::vector<unsigned char>& data, bool
 std::vector<unsigned char> encodePng(const unsigned char* rgb, int width, int height, int threads) {
   const size_t stride = size_t(width) * 3;
   const int rowsPerSegment = int(std::max<size_t>(1, kSegmentBytes / (stride + 1)));
-  const int segments = (height + rowsPerSegment - 1) / rowsPerSegment;
-  const size_t count = size_t(segments);
-  std::vector<std::vector<unsigned char>> compressed(count);
-  std::vector<uLong> adlers(count);
-  std::vector<size_t> sizes(count);
-  parallelFor(segments, threads, [&](int s) {
+  const int count = (height + rowsPerSegment - 1) / rowsPerSegment;
+  std::vector<Segment> segments(static_cast<size_t>(count));
+  parallelFor(count, threads, [&](int s) {
     const int first = s * rowsPerSegment, last = std::min(height, first + rowsPerSegment);
-    std::vector<unsigned char> filtered = filterRows(rgb, stride, first, last);
-    adlers[size_t(s)] = adler32(1, filtered.data(), uInt(filtered.size()));
-    sizes[size_t(s)] = filtered.size();
-    compressed[size_t(s)] = deflateSegment(filtered, s == segments - 1);
+    segments[size_t(s)] = compress(rgb, stride, first, last, s == count - 1);
   });
 
-  // The zlib stream (RFC 1950): header for deflate with a 32 KiB window at the fastest level, the segments,
-  // and the Adler-32 of all filtered bytes.
-  std::vector<unsigned char> stream{0x78, 0x01};
-  uLong adler = adlers[0];
-  for (int s = 0; s < segments; ++s) {
-    stream.insert(stream.end(), compressed[size_t(s)].begin(), compressed[size_t(s)].end());
-    if (s > 0) adler = adler32_combine(adler, adlers[size_t(s)], z_off_t(sizes[size_t(s)]));
-  }
-  putU32(stream, uint32_t(adler));
-
   std::vector<unsigned char> png{0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  size_t size = png.size() + 25 + 12 + 4;  // IHDR and IEND chunks, the stream's trailer
+  for (const Segment& s : segments) size += s.data.size() + 12;
+  png.reserve(size);
   std::vector<unsigned char> header;
   putU32(header, uint32_t(width));
   putU32(header, uint32_t(height));
   header.insert(header.end(), {8, 2, 0, 0, 0});  // 8 bits per channel, RGB, deflate, adaptive filters, no interlace
   putChunk(png, "IHDR", header.data(), header.size());
-  for (size_t at = 0; at < stream.size(); at += kMaxChunk) {
-    putChunk(png, "IDAT", stream.data() + at, std::min(kMaxChunk, stream.size() - at));
+  // The stream's trailer, in the last chunk, is the Adler-32 of all filtered bytes.
+  uLong adler = segments[0].adler;
+  for (size_t s = 1; s < segments.size(); ++s) {
+    adler = adler32_combine(adler, segments[s].adler, z_off_t(segments[s].filteredSize));
+  }
+  for (size_t s = 0; s < segments.size(); ++s) {
+    const bool final = s + 1 == segments.size();
+    const std::vector<unsigned char>& data = segments[s].data;
+    putU32(png, uint32_t(data.size() + (final ? 4 : 0)));
+    png.insert(png.end(), kIdat, kIdat + 4);
+    png.insert(png.end(), data.begin(), data.end());
+    uLong crc = segments[s].crc;
+    if (final) {
+      putU32(png, uint32_t(adler));
+      crc = crc32(crc, png.data() + png.size() - 4, 4);
+    }
+    putU32(png, uint32_t(crc));
   }
   putChunk(png, "IEND", nullptr, 0);
   return png;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include "raytrace/parallel.hpp"
 #include "raytrace/progress.hpp"
 #include "raytrace/tracer.hpp"
@@ -14,11 +16,11 @@ namespace {
 // enough that handing them out costs nothing.
 constexpr int kTile = 32;
 
-}  // namespace
-
-Image render(const SceneDesc& desc, int width, int height, const RenderOptions& options) {
+// Renders the scene tile by tile on the threads and hands each finished row of a tile to
+// store(x0, y, x1, colours): the colours of pixels x0 … x1 − 1 of row y.
+template <class Store>
+void renderRows(const SceneDesc& desc, int width, int height, const RenderOptions& options, const Store& store) {
   const Arithmetic arithmetic = chooseArithmetic(desc, options.arithmetic);
-  Image image(width, height);
   withPrecision(arithmetic.precision, [&](auto tag) {
     using T = decltype(tag);
     const Scene<T> scene(desc, arithmetic, options.hierarchy, options.threads);
@@ -33,9 +35,27 @@ Image render(const SceneDesc& desc, int width, int height, const RenderOptions& 
       const int x0 = tile % tilesX * kTile, y0 = tile / tilesX * kTile;
       const int x1 = std::min(width, x0 + kTile), y1 = std::min(height, y0 + kTile);
       Tracer<T> tileTracer = tracer;
-      for (int y = y0; y < y1; ++y) tileTracer.block(camera, x0, y, x1, y + 1, image);
+      for (int y = y0; y < y1; ++y) store(x0, y, x1, tileTracer.block(camera, x0, y, x1, y + 1).data());
       progress.add(int64_t(x1 - x0) * (y1 - y0));
     });
+  });
+}
+
+}  // namespace
+
+Image render(const SceneDesc& desc, int width, int height, const RenderOptions& options) {
+  Image image(width, height);
+  renderRows(desc, width, height, options, [&](int x0, int y, int x1, const Color* colors) {
+    std::copy(colors, colors + (x1 - x0), &image.at(x0, y));
+  });
+  return image;
+}
+
+Rgb8Image renderRgb8(const SceneDesc& desc, int width, int height, const RenderOptions& options) {
+  Rgb8Image image(width, height);
+  const Conventions::ToByte mode = desc.conventions.toByte;
+  renderRows(desc, width, height, options, [&](int x0, int y, int x1, const Color* colors) {
+    toBytes(glm::value_ptr(*colors), size_t(x1 - x0) * 3, image.at(x0, y), mode);
   });
   return image;
 }

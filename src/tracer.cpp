@@ -79,7 +79,8 @@ Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRec
   return sum / float(n * n);
 }
 
-template <class T> void Tracer<T>::block(const Camera<T>& camera, int x0, int y0, int x1, int y1, Image& image) {
+template <class T>
+const std::vector<Color>& Tracer<T>::block(const Camera<T>& camera, int x0, int y0, int x1, int y1) {
   const int n = options_.samples;
   std::vector<Ray<T>>& rays = rays_;  // in pixel() order: pixel by pixel, row by row, then sample by sample
   rays.resize(size_t(x1 - x0) * size_t(y1 - y0) * size_t(n * n));
@@ -133,14 +134,15 @@ template <class T> void Tracer<T>::block(const Camera<T>& camera, int x0, int y0
               .color;
     }
   }
-  size_t next = 0;
-  for (int y = y0; y < y1; ++y) {
-    for (int x = x0; x < x1; ++x) {
-      Color sum(0);
-      for (int s = 0; s < n * n; ++s) sum += colors[next++];
-      image.at(x, y) = sum / float(n * n);
-    }
+  // Each pixel's average in place: pixel p's samples start at p·n² ≥ p.
+  const size_t pixels = colors.size() / size_t(n * n);
+  for (size_t p = 0, next = 0; p < pixels; ++p) {
+    Color sum(0);
+    for (int s = 0; s < n * n; ++s) sum += colors[next++];
+    colors[p] = sum / float(n * n);
   }
+  colors.resize(pixels);
+  return colors;
 }
 
 template <class T>

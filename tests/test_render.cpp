@@ -261,6 +261,29 @@ TEST_CASE("A rendered pixel is the colour pixel() reports for it: packets change
   }
 }
 
+TEST_CASE("renderRgb8 holds the bytes of render()'s colours, on any number of threads", "[render]") {
+  // The .cli scene truncates where the course rounds: each keeps its own convention.
+  for (const char* file : {"/scenes/glass_mirror.pov", "/scenes/pillars.cli"}) {
+    const SceneDesc scene = loadScene(sourceDir() + file);
+    RenderOptions options;
+    options.samples = 2;
+    options.threads = 1;
+    const Image colours = render(scene, 45, 37, options);  // sizes that do not divide into tiles
+    for (const int threads : {1, 3}) {
+      CAPTURE(file, threads);
+      options.threads = threads;
+      Rgb8Image bytes = renderRgb8(scene, 45, 37, options);
+      for (int y = 0; y < 37; ++y) {
+        for (int x = 0; x < 45; ++x) {
+          for (int c = 0; c < 3; ++c) {
+            REQUIRE(bytes.at(x, y)[c] == toByte(colours.at(x, y)[c], scene.conventions.toByte));
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST_CASE("Bad shading flags are reported with the accepted values", "[render]") {
   const auto error = [](std::vector<std::string> args) -> std::string {
     std::ostringstream out, err;

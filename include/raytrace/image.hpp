@@ -1,4 +1,4 @@
-// An image in linear float colour and its safe conversion to an 8-bit PNG file.
+// Images in linear float colour and in the 8 bits a PNG file holds, and their safe writing as PNG files.
 #pragma once
 
 #include <cstdlib>
@@ -32,12 +32,35 @@ class Image {
   std::unique_ptr<Color[], Free> pixels_;
 };
 
+// 8-bit RGB pixels, three bytes each, top row first: what a PNG file holds. `render` writes its tiles straight
+// into one, so that no float image is kept: at 1280×960 that would be 14.7 MB more to fault in (3600 pages)
+// and a pass of its own to convert.
+class Rgb8Image {
+ public:
+  // Throws Error, before taking any memory, when the machine lacks the memory for the image (limits.hpp).
+  Rgb8Image(int width, int height);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // The first of the three bytes of pixel (x, y), y growing upward as in Image.
+  unsigned char* at(int x, int y) { return bytes_.get() + (size_t(height_ - 1 - y) * width_ + x) * 3; }
+  const unsigned char* data() const { return bytes_.get(); }
+
+ private:
+  int width_, height_;
+  std::unique_ptr<unsigned char[]> bytes_;  // left unset: whoever makes the image writes every byte
+};
+
 // One colour channel to a byte: clamp to [0,1], then round (course §a.0) or truncate (.cli §A.4).
 unsigned char toByte(float c, Conventions::ToByte mode);
+// toByte() of `count` channels in a row, into `out`.
+void toBytes(const float* in, size_t count, unsigned char* out, Conventions::ToByte mode);
 
 // Writes the image as PNG at `path` without ever leaving a partial file there: it is written beside the
 // target under a temporary name and renamed over it only once complete. `threads` compress in parallel; the
 // file is the same for any number. Throws Error on failure.
+void writePng(const Rgb8Image& image, const std::string& path, int threads = 1);
+// The same for a float image, each channel converted by toByte().
 void writePng(const Image& image, const std::string& path, Conventions::ToByte mode, int threads = 1);
 
 }  // namespace rt

@@ -30,5 +30,7 @@ struct RenderOptions {
 
 // Renders the scene at width × height.
 Image render(const SceneDesc& scene, int width, int height, const RenderOptions& options);
+// The same straight to the 8 bits a PNG holds, each channel converted by toByte() with the scene's convention.
+Rgb8Image renderRgb8(const SceneDesc& scene, int width, int height, const RenderOptions& options);
 
 }  // namespace rt

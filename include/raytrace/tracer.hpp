@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "raytrace/camera.hpp"
-#include "raytrace/image.hpp"
+#include "raytrace/math.hpp"
 #include "raytrace/ray_tree.hpp"
 #include "raytrace/render.hpp"
 #include "raytrace/scene.hpp"
@@ -22,9 +22,10 @@ template <class T> class Tracer {
   // The colour of pixel (x, y): the float average of options.samples² stratified eye rays. With `trees`, the
   // ray tree of each eye ray is appended to it.
   Color pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees = nullptr);
-  // The pixels of [x0, x1) × [y0, y1) into `image`, each the colour pixel() gives it: the eye rays and their
-  // shadow rays go through the scene in packets (Scene::closestHits), the rest one ray at a time.
-  void block(const Camera<T>& camera, int x0, int y0, int x1, int y1, Image& image);
+  // The colours of the pixels of [x0, x1) × [y0, y1), row by row from y0, each the colour pixel() gives it: the
+  // eye rays and their shadow rays go through the scene in packets (Scene::closestHits), the rest one ray at a
+  // time. The vector is the tracer's own, valid until its next call.
+  const std::vector<Color>& block(const Camera<T>& camera, int x0, int y0, int x1, int y1);
 
  private:
   struct Traced {
