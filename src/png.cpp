@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "raytrace/error.hpp"
@@ -32,55 +33,54 @@ void putChunk(std::vector<unsigned char>& out, const char* type, const unsigned 
   putU32(out, uint32_t(crc32(0, out.data() + start, uInt(size + 4))));
 }
 
-// Rows [first, last) with filter type 2, "Up" (§9.2): each byte minus the byte above it, so smooth vertical
-// gradients become small numbers that deflate well. It is cheap and needs no per-row choice.
-std::vector<unsigned char> filterRows(const unsigned char* rgb, size_t stride, int first, int last) {
-  std::vector<unsigned char> out((stride + 1) * size_t(last - first));
-  unsigned char* to = out.data();
-  for (int y = first; y < last; ++y) {
-    const unsigned char* row = rgb + size_t(y) * stride;
-    *to++ = 2;
-    if (y == 0) {
-      std::copy(row, row + stride, to);
-    } else {
-      for (size_t i = 0; i < stride; ++i) to[i] = static_cast<unsigned char>(row[i] - row[i - stride]);
-    }
-    to += stride;
-  }
-  return out;
-}
-
 // A segment of the zlib stream (RFC 1950), the data of an IDAT chunk of its own.
 struct Segment {
-  std::vector<unsigned char> data;  // the first also holds the stream's header
-  uLong crc;                        // CRC-32 of "IDAT" and `data`: the chunk's, but the last one's trailer
-  uLong adler;                      // Adler-32 of the segment's filtered bytes
-  size_t filteredSize;
+  std::unique_ptr<unsigned char[]> data;  // the first also holds the stream's header
+  size_t size = 0;
+  uLong crc = 0;        // CRC-32 of "IDAT" and the data: the chunk's, but for the last one's trailer
+  uLong adler = 1;      // Adler-32 of the segment's filtered rows
+  size_t filtered = 0;  // their size
 };
 
 // Rows [first, last) filtered and deflated, with everything their chunk needs computed on this thread. Every
 // segment but the last ends with a sync flush, which byte-aligns it without marking the final block, so the
 // segments concatenate into one valid deflate stream (RFC 1951 §3.2.3; the technique of pigz).
 Segment compress(const unsigned char* rgb, size_t stride, int first, int last, bool final) {
-  std::vector<unsigned char> filtered = filterRows(rgb, stride, first, last);
-  Segment s;
-  s.adler = adler32(1, filtered.data(), uInt(filtered.size()));
-  s.filteredSize = filtered.size();
   z_stream z{};
   if (deflateInit2(&z, 1, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK) throw Error("cannot start zlib");
+  Segment s;
+  s.filtered = (stride + 1) * size_t(last - first);
   // The zlib header: deflate with a 32 KiB window, at the fastest level (RFC 1950 §2.2).
   const size_t header = first == 0 ? 2 : 0;
-  s.data.resize(header + deflateBound(&z, uLong(filtered.size())) + 16);
-  s.data[0] = 0x78, s.data[1] = 0x01;
-  z.next_in = filtered.data();
-  z.avail_in = uInt(filtered.size());
-  z.next_out = s.data.data() + header;
-  z.avail_out = uInt(s.data.size() - header);
-  const int status = deflate(&z, final ? Z_FINISH : Z_SYNC_FLUSH);
-  s.data.resize(header + z.total_out);
+  // Left unset: only the pages deflate writes are ever touched, a few KiB of a smooth image's 128.
+  const size_t capacity = header + deflateBound(&z, uLong(s.filtered)) + 16;
+  s.data.reset(new unsigned char[capacity]);
+  if (header) s.data[0] = 0x78, s.data[1] = 0x01;
+  z.next_out = s.data.get() + header;
+  z.avail_out = uInt(capacity - header);
+  // Each row with filter type 2, "Up" (§9.2): each byte minus the byte above it, so smooth vertical gradients
+  // become small numbers that deflate well. It is cheap and needs no per-row choice. Rows go to zlib one at a
+  // time, as it copies them into its window anyway.
+  std::vector<unsigned char> row(stride + 1);
+  row[0] = 2;
+  int status = Z_OK;
+  for (int y = first; y < last && status == Z_OK; ++y) {
+    const unsigned char* pixels = rgb + size_t(y) * stride;
+    unsigned char* to = row.data() + 1;
+    if (y == 0) {
+      std::copy(pixels, pixels + stride, to);
+    } else {
+      for (size_t i = 0; i < stride; ++i) to[i] = static_cast<unsigned char>(pixels[i] - pixels[i - stride]);
+    }
+    s.adler = adler32(s.adler, row.data(), uInt(row.size()));
+    z.next_in = row.data();
+    z.avail_in = uInt(row.size());
+    status = deflate(&z, y + 1 < last ? Z_NO_FLUSH : final ? Z_FINISH : Z_SYNC_FLUSH);
+  }
+  s.size = header + z.total_out;
   deflateEnd(&z);
   if (status != (final ? Z_STREAM_END : Z_OK)) throw Error("zlib failed to compress the image");
-  s.crc = crc32(crc32(0, kIdat, 4), s.data.data(), uInt(s.data.size()));
+  s.crc = crc32(crc32(0, kIdat, 4), s.data.get(), uInt(s.size));
   return s;
 }
 
@@ -98,7 +98,7 @@ std::vector<unsigned char> encodePng(const unsigned char* rgb, int width, int he
 
   std::vector<unsigned char> png{0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   size_t size = png.size() + 25 + 12 + 4;  // IHDR and IEND chunks, the stream's trailer
-  for (const Segment& s : segments) size += s.data.size() + 12;
+  for (const Segment& s : segments) size += s.size + 12;
   png.reserve(size);
   std::vector<unsigned char> header;
   putU32(header, uint32_t(width));
@@ -108,15 +108,15 @@ std::vector<unsigned char> encodePng(const unsigned char* rgb, int width, int he
   // The stream's trailer, in the last chunk, is the Adler-32 of all filtered bytes.
   uLong adler = segments[0].adler;
   for (size_t s = 1; s < segments.size(); ++s) {
-    adler = adler32_combine(adler, segments[s].adler, z_off_t(segments[s].filteredSize));
+    adler = adler32_combine(adler, segments[s].adler, z_off_t(segments[s].filtered));
   }
   for (size_t s = 0; s < segments.size(); ++s) {
     const bool final = s + 1 == segments.size();
-    const std::vector<unsigned char>& data = segments[s].data;
-    putU32(png, uint32_t(data.size() + (final ? 4 : 0)));
+    const Segment& segment = segments[s];
+    putU32(png, uint32_t(segment.size + (final ? 4 : 0)));
     png.insert(png.end(), kIdat, kIdat + 4);
-    png.insert(png.end(), data.begin(), data.end());
-    uLong crc = segments[s].crc;
+    png.insert(png.end(), segment.data.get(), segment.data.get() + segment.size);
+    uLong crc = segment.crc;
     if (final) {
       putU32(png, uint32_t(adler));
       crc = crc32(crc, png.data() + png.size() - 4, 4);
