@@ -328,7 +328,6 @@ class PovParser {
         throw ParseError(t.loc, "unknown " + std::string(keyword.text) + " property " + t.quoted());
       }
     }
-    obj.worldFromObject = composeTransforms<double>(obj.transforms);
     Material& m = obj.material;
     m.finish = finish;
     m.ambient = float(finish.ambient) * m.pigment;

@@ -92,10 +92,11 @@ SceneScale sceneScale(const SceneDesc& scene) {
   glm::dvec3 lo = scene.camera.location, hi = scene.camera.location;
   double smallest = std::numeric_limits<double>::infinity();
   for (const ObjectDesc& o : scene.objects) {
-    const Stretch s = stretch(o.worldFromObject);
+    const glm::dmat4 worldFromObject = o.worldFromObject();
+    const Stretch s = stretch(worldFromObject);
     const Ball local = boundingBall(o.shape);
     smallest = std::min(smallest, s.least * smallestFeature(o.shape));
-    const glm::dvec3 center(o.worldFromObject * glm::dvec4(local.center, 1));
+    const glm::dvec3 center(worldFromObject * glm::dvec4(local.center, 1));
     const double radius = s.most * local.radius;
     largest = std::max(largest, maxAbs(center) + radius);
     lo = glm::min(lo, center - radius);

@@ -46,7 +46,8 @@ std::unique_ptr<Object<T>> makeObject(const ObjectDesc& desc, const Arithmetic& 
 ObjectDesc foldSimilarityIntoSphere(const ObjectDesc& desc) {
   const auto* sphere = std::get_if<SphereDesc>(&desc.shape);
   if (!sphere) return desc;
-  const glm::dmat3 linear(desc.worldFromObject);
+  const glm::dmat4 worldFromObject = desc.worldFromObject();
+  const glm::dmat3 linear(worldFromObject);
   const glm::dmat3 gram = glm::transpose(linear) * linear;
   const double s2 = gram[0][0];
   for (int i = 0; i < 3; ++i) {
@@ -55,9 +56,8 @@ ObjectDesc foldSimilarityIntoSphere(const ObjectDesc& desc) {
     }
   }
   ObjectDesc folded = desc;
-  folded.shape = SphereDesc{glm::dvec3(desc.worldFromObject * glm::dvec4(sphere->center, 1.0)),
+  folded.shape = SphereDesc{glm::dvec3(worldFromObject * glm::dvec4(sphere->center, 1.0)),
                             std::sqrt(s2) * sphere->radius};
-  folded.worldFromObject = glm::dmat4(1.0);
   folded.transforms.clear();
   return folded;
 }
@@ -69,15 +69,13 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
     : desc_(desc), arithmetic_(arithmetic) {
   for (const LightDesc& l : desc.lights) lights_.push_back(Light<T>{Vec3<T>(l.position), l.color});
   // The course tier does what its reference does: every transformed object is intersected on the transformed
-  // ray, with the matrix composed in T from the file's steps (worldFromObject stands in for a scene built in
-  // code).
+  // ray, with the matrix composed in T from the file's steps.
   const bool course = arithmetic.precision == Precision::Course;
   int id = 1;
   for (const ObjectDesc& given : desc.objects) {
     const ObjectDesc o = course ? given : foldSimilarityIntoSphere(given);
     auto object = makeObject<T>(o, arithmetic, id);
-    const Mat4<T> m =
-        course && !o.transforms.empty() ? composeTransforms<T>(o.transforms) : Mat4<T>(o.worldFromObject);
+    const Mat4<T> m = course ? composeTransforms<T>(o.transforms) : Mat4<T>(o.worldFromObject());
     // An identity transform (`translate <0,0,0>`) costs nothing: the shape is used as it is.
     if (m != Mat4<T>(T(1))) {
       object = std::make_unique<Transformed<T>>(std::move(object), m, o.material, id, course);

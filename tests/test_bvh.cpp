@@ -32,8 +32,8 @@ rt::SceneDesc randomScene(std::mt19937& rng, int count) {
     rt::ObjectDesc o = sphereDesc({pos(rng), pos(rng), pos(rng)}, radius(rng));
     if (unit(rng) < 0.2) {
       o.shape = rt::SphereDesc{{0, 0, 0}, 1};
-      o.worldFromObject = glm::scale(glm::translate(glm::dmat4(1), {pos(rng), pos(rng), pos(rng)}),
-                                     {radius(rng), radius(rng), radius(rng)});
+      const glm::dvec3 scale(radius(rng), radius(rng), radius(rng)), offset(pos(rng), pos(rng), pos(rng));
+      o.transforms = {{rt::TransformStep::Kind::Scale, scale}, {rt::TransformStep::Kind::Translate, offset}};
     }
     desc.objects.push_back(o);
   }
@@ -93,7 +93,7 @@ TEMPLATE_TEST_CASE("the hierarchy finds exactly the hit a scan in file order fin
         const glm::dvec3 toCenter = s ? s->center - glm::dvec3(ray.origin) : glm::dvec3(0);
         const double miss = s ? s->radius * (1 + (unit(rng) - 0.5) * 1e-6) : 0;
         const double d = glm::length(toCenter);
-        if (s && object.worldFromObject == glm::dmat4(1) && d > 2 * miss) {
+        if (s && object.transforms.empty() && d > 2 * miss) {
           const glm::dvec3 side = glm::normalize(glm::cross(toCenter, glm::dvec3(1, 2, 3)));
           const glm::dvec3 target = s->center + side * (miss * d / std::sqrt(d * d - miss * miss));
           ray.dir = rt::Vec3<T>(glm::normalize(target - glm::dvec3(ray.origin)));

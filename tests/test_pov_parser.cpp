@@ -65,7 +65,7 @@ TEST_CASE("pov: the course's simple.pov-like scene, every field") {
   CHECK(s.objects[0].material.pigment == rt::Color(1, 0, 1));
   CHECK(s.objects[0].material.finish.ambient == 0.2);
   CHECK(s.objects[0].material.finish.diffuse == 0.4);
-  CHECK(s.objects[0].worldFromObject == glm::dmat4(1.0));
+  CHECK(s.objects[0].worldFromObject() == glm::dmat4(1.0));
   const auto& plane = std::get<rt::PlaneDesc>(s.objects[1].shape);
   CHECK(plane.normal == glm::dvec3(0, 1, 0));
   CHECK(plane.distance == -4.0);
@@ -187,22 +187,22 @@ TEST_CASE("pov: transforms compose in file order, repeated, before and after pig
       " scale <1,2,3> }\n"
       "sphere { <0,0,0>, 1 rotate <90,90,0> }\n"
       "plane { <0,1,0>, 0 translate <0,-1,0> rotate <0,0,180> }\n");
-  CHECK(apply(s.objects[0].worldFromObject, {1, 0, 0}) == glm::dvec3(3, 0, 0));  // scale, then translate
-  CHECK(apply(s.objects[1].worldFromObject, {1, 0, 0}) == glm::dvec3(4, 0, 0));  // translate, then scale
+  CHECK(apply(s.objects[0].worldFromObject(), {1, 0, 0}) == glm::dvec3(3, 0, 0));  // scale, then translate
+  CHECK(apply(s.objects[1].worldFromObject(), {1, 0, 0}) == glm::dvec3(4, 0, 0));  // translate, then scale
   // rotate z 90: x → y; translate z; then scale <1,2,3>.
-  const glm::dvec3 p = apply(s.objects[2].worldFromObject, {1, 0, 0});
+  const glm::dvec3 p = apply(s.objects[2].worldFromObject(), {1, 0, 0});
   CHECK(p.x == Approx(0).margin(1e-12));
   CHECK(p.y == Approx(2));
   CHECK(p.z == Approx(3));
   CHECK(s.objects[2].material.pigment == rt::Color(1, 0, 0));
   CHECK(s.objects[2].material.finish.ambient == 1.0);
   // The course's R = Rx·Ry·Rz turns about z, then y, then x (§c.10): x →(y 90)→ −z →(x 90)→ y.
-  const glm::dvec3 q = apply(s.objects[3].worldFromObject, {1, 0, 0});
+  const glm::dvec3 q = apply(s.objects[3].worldFromObject(), {1, 0, 0});
   CHECK(q.x == Approx(0).margin(1e-12));
   CHECK(q.y == Approx(1));
   CHECK(q.z == Approx(0).margin(1e-12));
   // Transforms apply to planes too.
-  const glm::dvec3 r = apply(s.objects[4].worldFromObject, {0, 0, 0});
+  const glm::dvec3 r = apply(s.objects[4].worldFromObject(), {0, 0, 0});
   CHECK(r.x == Approx(0).margin(1e-12));
   CHECK(r.y == Approx(1));
 }
@@ -227,7 +227,7 @@ TEST_CASE("pov: the number forms of the course files") {
   const SceneDesc s = parse("sphere { <.94, -.001, 1.>, 1e-05 scale +2 }\nplane { <0,1,0>, -0 }");
   CHECK(std::get<rt::SphereDesc>(s.objects[0].shape).center == glm::dvec3(0.94, -0.001, 1.0));
   CHECK(std::get<rt::SphereDesc>(s.objects[0].shape).radius == 1e-05);
-  CHECK(apply(s.objects[0].worldFromObject, {1, 1, 1}) == glm::dvec3(2, 2, 2));
+  CHECK(apply(s.objects[0].worldFromObject(), {1, 1, 1}) == glm::dvec3(2, 2, 2));
   CHECK(std::signbit(std::get<rt::PlaneDesc>(s.objects[1].shape).distance));
 }
 
@@ -404,7 +404,7 @@ std::string everything(const SceneDesc& s) {
         },
         o.shape);
     v(o.material.pigment), v(o.material.specular);
-    v(glm::dvec3(o.worldFromObject[3]));
+    v(glm::dvec3(o.worldFromObject()[3]));
     put(double(o.transforms.size()));
   }
   for (const std::string& w : s.warnings) out += "\n" + w;

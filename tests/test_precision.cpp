@@ -27,10 +27,10 @@ rt::SceneDesc asCli(rt::SceneDesc s) {
   return s;
 }
 
-void add(rt::SceneDesc& s, rt::ShapeDesc shape, glm::dmat4 m = glm::dmat4(1.0)) {
+void add(rt::SceneDesc& s, rt::ShapeDesc shape, std::vector<rt::TransformStep> transforms = {}) {
   rt::ObjectDesc o;
   o.shape = shape;
-  o.worldFromObject = m;
+  o.transforms = std::move(transforms);
   s.objects.push_back(o);
 }
 
@@ -83,10 +83,10 @@ TEST_CASE("precision: every shape's extent and smallest feature") {
 
 TEST_CASE("precision: transforms scale both the extent and the features") {
   rt::SceneDesc s = withCamera({0, 0, 1});
-  add(s, rt::SphereDesc{{0, 0, 0}, 1}, glm::scale(glm::dmat4(1.0), glm::dvec3(0.1, 1, 1)));
+  add(s, rt::SphereDesc{{0, 0, 0}, 1}, {{rt::TransformStep::Kind::Scale, {0.1, 1, 1}}});
   CHECK(rt::precisionBudget(s) == Approx(2 * std::sqrt(3.0) / 0.1));  // box ±1 holds the camera; thinnest 0.1
   rt::SceneDesc t = withCamera({0, 0, 1});
-  add(t, rt::SphereDesc{{0, 0, 0}, 1}, glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, 99)));
+  add(t, rt::SphereDesc{{0, 0, 0}, 1}, {{rt::TransformStep::Kind::Translate, {0, 0, 99}}});
   CHECK(rt::precisionBudget(t) == Approx(100.0));  // the coordinate 100 exceeds the diagonal √(8 + 99²)
 }
 

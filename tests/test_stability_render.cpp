@@ -51,7 +51,7 @@ SceneDesc translated(SceneDesc scene, const glm::dvec3& shift) {
   scene.camera.lookAt += shift;
   for (LightDesc& l : scene.lights) l.position += shift;
   for (ObjectDesc& o : scene.objects) {
-    REQUIRE(o.worldFromObject == glm::dmat4(1.0));
+    REQUIRE(o.transforms.empty());
     std::visit(
         [&](auto& s) {
           using S = std::decay_t<decltype(s)>;
@@ -109,7 +109,7 @@ TEST_CASE("a unit sphere 5000 units away renders as its analytic disk", "[stabil
   const glm::dvec3 centre = scene.camera.location + glm::dvec3(1e-4, 2e-5, -5000);
   Material white;
   white.pigment = white.ambient = Color(1);
-  scene.objects.push_back(ObjectDesc{SphereDesc{centre, 1.0}, white, glm::dmat4(1.0), SourceLoc{}});
+  scene.objects.push_back(ObjectDesc{SphereDesc{centre, 1.0}, white});
 
   const Camera<double> camera(scene.camera, 160, 120);
   const auto analytic = [&](int x, int y) {  // impact parameter of the eye ray, in units of r
@@ -161,8 +161,8 @@ TEST_CASE("recursion between facing mirrors matches the geometric series", "[sta
   mirror.pigment = Color(1);
   mirror.ambient = Color(e);
   mirror.reflection = k;
-  scene.objects.push_back(ObjectDesc{PlaneDesc{{0, 0, 1}, -3}, mirror, glm::dmat4(1.0), SourceLoc{}});
-  scene.objects.push_back(ObjectDesc{PlaneDesc{{0, 0, -1}, -3}, mirror, glm::dmat4(1.0), SourceLoc{}});
+  scene.objects.push_back(ObjectDesc{PlaneDesc{{0, 0, 1}, -3}, mirror});
+  scene.objects.push_back(ObjectDesc{PlaneDesc{{0, 0, -1}, -3}, mirror});
   RenderOptions options;
   options.depth = depth;
   const float expected = e * (1 - std::pow(k, float(depth + 1))) / (1 - k);

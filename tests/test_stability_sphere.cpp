@@ -83,7 +83,7 @@ SphereErrors budgetErrors(const glm::dvec3& eye, const glm::dvec3& c, double r, 
   desc.language = SceneLanguage::Cli;
   desc.camera.location = eye;
   desc.camera.lookAt = c;
-  desc.objects.push_back(ObjectDesc{SphereDesc{c, r}, Material{}, glm::dmat4(1.0), SourceLoc{}});
+  desc.objects.push_back(ObjectDesc{SphereDesc{c, r}, Material{}});
   chosen = chooseArithmetic(desc);
   return withPrecision(chosen.precision, [&](auto tag) {
     using T = decltype(tag);

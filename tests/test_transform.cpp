@@ -43,9 +43,10 @@ TEST_CASE("transform: the parser keeps the steps in file order", "[transform]") 
 }
 
 TEST_CASE("transform: worldFromObject is the steps composed in double", "[transform]") {
-  const ObjectDesc o = parsed(kChain);
-  CHECK(o.worldFromObject == composeTransforms<double>(o.transforms));
-  CHECK(parsed("").worldFromObject == glm::dmat4(1.0));
+  // translate, then scale: M = S·T takes the origin to 2·(1, 0, 0).
+  CHECK(parsed("translate <1, 0, 0> scale 2").worldFromObject() ==
+        glm::scale(glm::dmat4(1.0), glm::dvec3(2)) * glm::translate(glm::dmat4(1.0), glm::dvec3(1, 0, 0)));
+  CHECK(parsed("").worldFromObject() == glm::dmat4(1.0));
 }
 
 // The course tier needs the reference's float matrix to the last bit: each step multiplied on the left in

@@ -19,7 +19,7 @@ const char* kCamera = "camera { location <0, 0, 12> up <0, 1, 0> right <1.33333,
 // The matrix the parser builds for one unit sphere carrying `modifiers`.
 glm::dmat4 worldFromObject(const std::string& modifiers) {
   const SceneDesc desc = parsePov(std::string(kCamera) + "sphere { <0, 0, 0>, 1 " + modifiers + " }", "t.pov");
-  return desc.objects.at(0).worldFromObject;
+  return desc.objects.at(0).worldFromObject();
 }
 
 glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); }
@@ -60,7 +60,7 @@ TEMPLATE_TEST_CASE("the course's transformed-ray check", "[transformed]", float,
                                       "sphere { <0, 0, 0>, 2 scale <1, 2, 1> rotate <0, 0, -25> "
                                       "translate <1.2, 0, 0> }",
                                   "valentine.pov");
-  const glm::dmat4 m = desc.objects.at(0).worldFromObject;
+  const glm::dmat4 m = desc.objects.at(0).worldFromObject();
   const Ray<T> ray = Camera<T>(desc.camera, 640, 480).pixelRay(399, 280);
   checkNear(ray.dir, Vec3<T>(T(0.1628), T(0.0830), T(-0.9832)), 1e-4);
   const glm::dmat4 objectFromWorld = glm::inverse(m);
@@ -187,12 +187,12 @@ TEST_CASE("the course tier intersects the transformed ray and takes the normal a
   CHECK(hit->normal == glm::normalize(glm::transpose(glm::mat3(objectFromWorld)) * objectNormal));
 }
 
-// A scene built in code sets worldFromObject alone: the course tier uses it as the matrix.
-TEST_CASE("the course tier falls back to worldFromObject when no steps are recorded", "[transformed][scene]") {
+// A scene built in code gives its transforms as steps, as the parser does.
+TEST_CASE("the course tier moves an object of a scene built in code by its steps", "[transformed][scene]") {
   SceneDesc desc;
   ObjectDesc o;
   o.shape = SphereDesc{{0, 0, 0}, 1};
-  o.worldFromObject = glm::translate(glm::dmat4(1.0), glm::dvec3(0, 0, -5));
+  o.transforms = {{TransformStep::Kind::Translate, {0, 0, -5}}};
   desc.objects.push_back(o);
   const Scene<float> scene(desc, Arithmetic{Precision::Course, SphereMethod::Textbook, OffsetPolicy::Course});
   const auto hit = scene.closestHit(Ray<float>{{0, 0, 0}, {0, 0, -1}}, Interval<float>{});

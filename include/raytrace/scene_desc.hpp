@@ -44,11 +44,13 @@ using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, Con
 struct ObjectDesc {
   ShapeDesc shape;
   Material material;
-  glm::dmat4 worldFromObject{1.0};  // translate/rotate/scale composed in file order (§c.10)
-  SourceLoc loc;                     // where the object starts, for messages
-  // The POV transforms as written, whose composeTransforms<double> is worldFromObject; empty when a scene
-  // built in code sets worldFromObject alone, which then stands in for them (Scene's course tier).
+  SourceLoc loc;  // where the object starts, for messages
+  // The POV transforms as written (§c.10), in file order; a scene built in code gives its own the same way.
   std::vector<TransformStep> transforms;
+
+  // The transforms composed in double. Made when asked, not stored: most objects have none, and the matrix
+  // would be a third of every object's description, to fill, copy and page in.
+  glm::dmat4 worldFromObject() const { return composeTransforms<double>(transforms); }
 };
 
 // How a scene language wants its pictures made: the conventions that reproduce each course's reference
