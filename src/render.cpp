@@ -28,11 +28,14 @@ void renderRows(const SceneDesc& desc, int width, int height, const RenderOption
     const Tracer<T> tracer(scene, options);
     // Every pixel is computed on its own from constant state (the tracers' shadow caches change the order of
     // tests, never an answer), so the image is the same for any thread count. One tracer per tile: a tile's
-    // shadow rays are coherent, and its cache is its own.
+    // shadow rays are coherent, and its cache is its own. Tiles go column by column, so that threads work on
+    // tiles one above another, whose rows lie on pages of their own: side by side, they would take the same
+    // fresh pages of the image at once, and the kernel fault each twice (at 1280×960 on two threads, 1350-1860
+    // page faults in all instead of 1240).
     const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
     ProgressMeter progress(options.progress, int64_t(width) * height, options.samples * options.samples);
     parallelFor(tilesX * tilesY, options.threads, [&](int tile) {
-      const int x0 = tile % tilesX * kTile, y0 = tile / tilesX * kTile;
+      const int x0 = tile / tilesY * kTile, y0 = tile % tilesY * kTile;
       const int x1 = std::min(width, x0 + kTile), y1 = std::min(height, y0 + kTile);
       Tracer<T> tileTracer = tracer;
       for (int y = y0; y < y1; ++y) store(x0, y, x1, tileTracer.block(camera, x0, y, x1, y + 1).data());
