@@ -159,14 +159,52 @@ template <class T> class BinaryBuilder {
   std::vector<uint32_t>& order_;
 };
 
-// Subtrees built apart on the threads: a fixed number, so that the tree is the same for any thread count.
+// Subtrees built apart on the threads: at least this many, so that the tree is the same for any thread count.
 constexpr size_t kSubtrees = 16;
 // Below this many objects one thread builds the tree faster than several can start.
 constexpr size_t kMinParallelBuild = 4096;
 
-// The binary tree and, in `order`, the object indices in leaf order. The top levels are split breadth first
-// until there are kSubtrees nodes to split, and the subtrees under them are built on the threads, each into
-// its own array, then appended. Every node is split as a one-thread build would split it.
+// The nodes of `roots` split on the threads, each into an array of its own whose node 0 is a copy of its root,
+// then appended to `nodes` in order. With `whole`, each root's whole subtree is built, and nothing is returned;
+// otherwise each root is split once, and the tasks of the children are returned, to be split in turn.
+template <class T>
+std::vector<typename BinaryBuilder<T>::Task> splitApart(const BinaryBuilder<T>& builder,
+                                                         std::vector<BinaryNode<T>>& nodes,
+                                                         const std::vector<typename BinaryBuilder<T>::Task>& roots,
+                                                         bool whole, int threads) {
+  using Task = typename BinaryBuilder<T>::Task;
+  std::vector<std::vector<BinaryNode<T>>> subtrees(roots.size());
+  parallelFor(int(roots.size()), threads, [&](int k) {
+    std::vector<BinaryNode<T>>& sub = subtrees[size_t(k)];
+    sub.push_back(nodes[roots[size_t(k)].node]);
+    const Task root{0, roots[size_t(k)].depth};
+    if (whole) {
+      builder.finish(sub, {root});
+    } else {
+      std::vector<Task> children;  // sub[1] and sub[2], if any, known from sub's size below
+      builder.split(sub, root, children);
+    }
+  });
+  std::vector<Task> next;
+  for (size_t k = 0; k < roots.size(); ++k) {
+    // Local node i ≥ 1 lands at base + i − 1; an inner node's `first` is its children's local index.
+    const uint32_t base = uint32_t(nodes.size());
+    for (BinaryNode<T>& node : subtrees[k]) {
+      if (!node.count) node.first += base - 1;
+    }
+    nodes[roots[k].node] = subtrees[k][0];
+    nodes.insert(nodes.end(), subtrees[k].begin() + 1, subtrees[k].end());
+    if (!whole && subtrees[k].size() > 1) {
+      next.push_back({base, roots[k].depth + 1});
+      next.push_back({base + 1, roots[k].depth + 1});
+    }
+  }
+  return next;
+}
+
+// The binary tree and, in `order`, the object indices in leaf order. The top levels are split breadth first,
+// the nodes of each level on the threads, until there are kSubtrees nodes to split; the subtrees under them
+// are built on the threads. Every node is split as a one-thread build would split it.
 template <class T>
 std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& objects, std::vector<uint32_t>& order,
                                        int threads) {
@@ -188,30 +226,13 @@ std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& obje
   std::vector<BinaryNode<T>> nodes;
   nodes.reserve(2 * n - 1);
   nodes.push_back({{}, 0, uint32_t(n)});
-  std::vector<Task> tasks{{0, 0}};
+  std::vector<Task> level{{0, 0}};
   if (threads <= 1 || n < kMinParallelBuild) {
-    builder.finish(nodes, tasks);
+    builder.finish(nodes, level);
     return nodes;
   }
-  size_t next = 0;
-  for (; next < tasks.size() && tasks.size() - next < kSubtrees; ++next) builder.split(nodes, tasks[next], tasks);
-  // The tasks not yet split are the roots of the subtrees; each subtree's node 0 is a copy of its root.
-  const std::vector<Task> roots(tasks.begin() + std::ptrdiff_t(next), tasks.end());
-  std::vector<std::vector<BinaryNode<T>>> subtrees(roots.size());
-  parallelFor(int(roots.size()), threads, [&](int k) {
-    std::vector<BinaryNode<T>>& sub = subtrees[size_t(k)];
-    sub.push_back(nodes[roots[size_t(k)].node]);
-    builder.finish(sub, {{0, roots[size_t(k)].depth}});
-  });
-  for (size_t k = 0; k < roots.size(); ++k) {
-    // Local node i ≥ 1 lands at base + i − 1; an inner node's `first` is its children's local index.
-    const uint32_t base = uint32_t(nodes.size());
-    for (BinaryNode<T>& node : subtrees[k]) {
-      if (!node.count) node.first += base - 1;
-    }
-    nodes[roots[k].node] = subtrees[k][0];
-    nodes.insert(nodes.end(), subtrees[k].begin() + 1, subtrees[k].end());
-  }
+  while (!level.empty() && level.size() < kSubtrees) level = splitApart(builder, nodes, level, false, threads);
+  splitApart(builder, nodes, level, true, threads);
   return nodes;
 }
 
