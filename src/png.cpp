@@ -46,23 +46,25 @@ struct Segment {
 // segment but the last ends with a sync flush, which byte-aligns it without marking the final block, so the
 // segments concatenate into one valid deflate stream (RFC 1951 §3.2.3; the technique of pigz).
 Segment compress(const unsigned char* rgb, size_t stride, int first, int last, bool final) {
-  z_stream z{};
-  if (deflateInit2(&z, 1, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK) throw Error("cannot start zlib");
   Segment s;
   s.filtered = (stride + 1) * size_t(last - first);
   // The zlib header: deflate with a 32 KiB window, at the fastest level (RFC 1950 §2.2).
   const size_t header = first == 0 ? 2 : 0;
-  // Left unset: only the pages deflate writes are ever touched, a few KiB of a smooth image's 128.
-  const size_t capacity = header + deflateBound(&z, uLong(s.filtered)) + 16;
+  // compressBound holds for zlib's default window and memory level, used here too; 16 bytes more cover the
+  // sync flush's empty stored block. Left unset: only the pages deflate writes are ever touched, a few KiB of
+  // a smooth image's 128.
+  const size_t capacity = header + compressBound(uLong(s.filtered)) + 16;
   s.data.reset(new unsigned char[capacity]);
   if (header) s.data[0] = 0x78, s.data[1] = 0x01;
-  z.next_out = s.data.get() + header;
-  z.avail_out = uInt(capacity - header);
   // Each row with filter type 2, "Up" (§9.2): each byte minus the byte above it, so smooth vertical gradients
   // become small numbers that deflate well. It is cheap and needs no per-row choice. Rows go to zlib one at a
   // time, as it copies them into its window anyway.
   std::vector<unsigned char> row(stride + 1);
   row[0] = 2;
+  z_stream z{};
+  if (deflateInit2(&z, 1, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK) throw Error("cannot start zlib");
+  z.next_out = s.data.get() + header;
+  z.avail_out = uInt(capacity - header);
   int status = Z_OK;
   for (int y = first; y < last && status == Z_OK; ++y) {
     const unsigned char* pixels = rgb + size_t(y) * stride;

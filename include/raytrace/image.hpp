@@ -32,7 +32,7 @@ class Image {
   std::unique_ptr<Color[], Free> pixels_;
 };
 
-// 8-bit RGB pixels, three bytes each, top row first: what a PNG file holds. `render` writes its tiles straight
+// 8-bit RGB pixels, three bytes each, top row first: what a PNG file holds. renderRgb8 writes its tiles straight
 // into one, so that no float image is kept: at 1280×960 that would be 14.7 MB more to fault in (3600 pages)
 // and a pass of its own to convert.
 class Rgb8Image {
