@@ -81,7 +81,8 @@ Segment compress(const unsigned char* rgb, size_t stride, int first, int last, b
   }
   s.size = header + z.total_out;
   deflateEnd(&z);
-  if (status != (final ? Z_STREAM_END : Z_OK)) throw Error("zlib failed to compress the image");
+  // A flush that filled the buffer to the last byte may not be complete (zlib.h, deflate()).
+  if (status != (final ? Z_STREAM_END : Z_OK) || z.avail_out == 0) throw Error("zlib failed to compress the image");
   s.crc = crc32(crc32(0, kIdat, 4), s.data.get(), uInt(s.size));
   return s;
 }
