@@ -251,6 +251,9 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects, int
     uint32_t binary, node;
   };
   std::vector<Task> tasks{{0, 0}};
+  // Each node but the root takes the place of at least one inner binary node: room for all at once, so that
+  // the array never moves (only the pages it fills are touched).
+  nodes_.reserve(binary.size() / 2 + 1);
   nodes_.emplace_back();
   while (!tasks.empty()) {
     const Task task = tasks.back();
