@@ -38,7 +38,7 @@ void renderRows(const SceneDesc& desc, int width, int height, const RenderOption
       const int x0 = tile / tilesY * kTile, y0 = tile % tilesY * kTile;
       const int x1 = std::min(width, x0 + kTile), y1 = std::min(height, y0 + kTile);
       Tracer<T> tileTracer = tracer;
-      for (int y = y0; y < y1; ++y) store(x0, y, x1, tileTracer.block(camera, x0, y, x1, y + 1).data());
+      for (int y = y0; y < y1; ++y) store(x0, y, x1, tileTracer.block(camera, x0, y, x1, y + 1));
       progress.add(int64_t(x1 - x0) * (y1 - y0));
     });
   });

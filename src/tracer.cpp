@@ -79,8 +79,7 @@ Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRec
   return sum / float(n * n);
 }
 
-template <class T>
-const std::vector<Color>& Tracer<T>::block(const Camera<T>& camera, int x0, int y0, int x1, int y1) {
+template <class T> const Color* Tracer<T>::block(const Camera<T>& camera, int x0, int y0, int x1, int y1) {
   const int n = options_.samples;
   std::vector<Ray<T>>& rays = rays_;  // in pixel() order: pixel by pixel, row by row, then sample by sample
   rays.resize(size_t(x1 - x0) * size_t(y1 - y0) * size_t(n * n));
@@ -141,8 +140,7 @@ const std::vector<Color>& Tracer<T>::block(const Camera<T>& camera, int x0, int 
     for (int s = 0; s < n * n; ++s) sum += colors[next++];
     colors[p] = sum / float(n * n);
   }
-  colors.resize(pixels);
-  return colors;
+  return colors.data();
 }
 
 template <class T>

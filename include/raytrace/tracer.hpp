@@ -24,8 +24,8 @@ template <class T> class Tracer {
   Color pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees = nullptr);
   // The colours of the pixels of [x0, x1) × [y0, y1), row by row from y0, each the colour pixel() gives it: the
   // eye rays and their shadow rays go through the scene in packets (Scene::closestHits), the rest one ray at a
-  // time. The vector is the tracer's own, valid until its next call.
-  const std::vector<Color>& block(const Camera<T>& camera, int x0, int y0, int x1, int y1);
+  // time. They are the tracer's own memory, valid until its next call.
+  const Color* block(const Camera<T>& camera, int x0, int y0, int x1, int y1);
 
  private:
   struct Traced {
