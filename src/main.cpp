@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   // phase faults fresh pages in again: about 2 µs each on this machine, and one at a time however many threads
   // ask. Blocks up to 32 MiB (glibc's largest threshold), and as much free memory at the top of the heap, are
   // kept and reused instead: spheres20k takes 4070 page faults instead of 4870 on one thread and 5080 instead
-  // of 6400 on two. Larger blocks still go back, so the peak of a million spheres stays at 603 MB.
+  // of 6400 on two. Larger blocks still go back, so the peak of a million spheres stays at 0.62 GB.
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 32 << 20);
   try {
