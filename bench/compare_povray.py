@@ -36,6 +36,14 @@ def wall(cmd, cwd):
     return seconds
 
 
+def generate_scenes(work):
+    """Writes the shared benchmark scenes into `work` with their gen.py, which writes next to itself and so
+    runs from a copy there."""
+    os.makedirs(work, exist_ok=True)
+    shutil.copy(GEN, os.path.join(work, "gen.py"))
+    subprocess.run([sys.executable, "gen.py"], cwd=work, check=True, stdout=subprocess.DEVNULL)
+
+
 def paired_ratio(times):
     """Median of POV-Ray / ours over the runs made one right after the other. The load of a shared machine
     drifts over a benchmark; a pair sees nearly the same load, so this ratio is steadier than the ratio of the
@@ -55,11 +63,7 @@ def main():
     width, height = args.size.split("x")
     binary = os.path.abspath(args.bin)
     work = os.path.abspath(args.work)
-    os.makedirs(work, exist_ok=True)
-
-    # gen.py writes next to itself, so it runs from a copy in the work directory.
-    shutil.copy(GEN, os.path.join(work, "gen.py"))
-    subprocess.run([sys.executable, "gen.py"], cwd=work, check=True, stdout=subprocess.DEVNULL)
+    generate_scenes(work)
 
     variants = (("none", [], ["-A"]), ("3x3", ["-ss=3"], ["+A0.0", "+AM1", "+R3"]))
     rows = []
