@@ -36,12 +36,26 @@ def wall(cmd, cwd):
     return seconds
 
 
-def generate_scenes(work):
-    """Writes the shared benchmark scenes into `work` with their gen.py, which writes next to itself and so
-    runs from a copy there."""
+def arguments(doc, runs, runs_help):
+    """The options of the benchmark scripts on the shared scenes."""
+    ap = argparse.ArgumentParser(description=doc.split("\n")[0])
+    ap.add_argument("--bin", default="build/raytrace", help="our executable")
+    ap.add_argument("--runs", type=int, default=runs, help=runs_help)
+    ap.add_argument("--size", default="1280x960")
+    ap.add_argument("--work", default="build/bench-povray", help="directory for scenes and images")
+    ap.add_argument("--scenes", nargs="*", default=list(SCENES))
+    return ap
+
+
+def prepare(args):
+    """Writes the shared benchmark scenes into the work directory with their gen.py (which writes next to
+    itself, so it runs from a copy there); returns width, height, our executable and the work directory."""
+    work = os.path.abspath(args.work)
     os.makedirs(work, exist_ok=True)
     shutil.copy(GEN, os.path.join(work, "gen.py"))
     subprocess.run([sys.executable, "gen.py"], cwd=work, check=True, stdout=subprocess.DEVNULL)
+    width, height = args.size.split("x")
+    return width, height, os.path.abspath(args.bin), work
 
 
 def paired_ratio(times):
@@ -52,18 +66,10 @@ def paired_ratio(times):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--bin", default="build/raytrace", help="our executable")
-    ap.add_argument("--runs", type=int, default=3, help="runs of each command (median reported)")
+    ap = arguments(__doc__, 3, "runs of each command (median reported)")
     ap.add_argument("--threads", type=int, default=2)
-    ap.add_argument("--size", default="1280x960")
-    ap.add_argument("--work", default="build/bench-povray", help="directory for scenes and images")
-    ap.add_argument("--scenes", nargs="*", default=list(SCENES))
     args = ap.parse_args()
-    width, height = args.size.split("x")
-    binary = os.path.abspath(args.bin)
-    work = os.path.abspath(args.work)
-    generate_scenes(work)
+    width, height, binary, work = prepare(args)
 
     variants = (("none", [], ["-A"]), ("3x3", ["-ss=3"], ["+A0.0", "+AM1", "+R3"]))
     rows = []

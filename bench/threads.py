@@ -10,25 +10,14 @@ least), of the medians, and the median of the ratios of the pairs run back to ba
 drifts).
 """
 
-import argparse
-import os
 import statistics
 
-from compare_povray import SCENES, generate_scenes, wall
+from compare_povray import arguments, prepare, wall
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--bin", default="build/raytrace", help="our executable")
-    ap.add_argument("--runs", type=int, default=15, help="rounds of one run on each thread count")
-    ap.add_argument("--size", default="1280x960")
-    ap.add_argument("--work", default="build/bench-povray", help="directory for scenes and images")
-    ap.add_argument("--scenes", nargs="*", default=list(SCENES))
-    args = ap.parse_args()
-    width, height = args.size.split("x")
-    binary = os.path.abspath(args.bin)
-    work = os.path.abspath(args.work)
-    generate_scenes(work)
+    args = arguments(__doc__, 15, "rounds of one run on each thread count").parse_args()
+    width, height, binary, work = prepare(args)
 
     print("| scene | AA | 1 thread s | 2 threads s | ratio of fastest | of medians | per pair |")
     print("|---|---|---|---|---|---|---|")
