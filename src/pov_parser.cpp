@@ -451,9 +451,11 @@ std::optional<SceneDesc> parseParts(std::string_view text, const std::string& fi
   parallelFor(int(n), threads, [&](int k) {
     const size_t begin = starts[size_t(k)], end = size_t(k) + 1 < n ? starts[size_t(k) + 1] : text.size();
     try {
-      // The room of every part together is within the memory parsePov() found for the whole text.
-      parts[size_t(k)] =
-          PovParser(text.substr(begin, end - begin), file, objectRoom(end - begin), firstLines[size_t(k)], n).part();
+      // The first part's list becomes the scene's, with room for the objects of the whole text, so that only
+      // the other parts' objects are copied into it. The room of every part together is within the memory
+      // parsePov() found for the whole text.
+      const size_t room = objectRoom(k == 0 ? text.size() : end - begin);
+      parts[size_t(k)] = PovParser(text.substr(begin, end - begin), file, room, firstLines[size_t(k)], n).part();
     } catch (const ParseError&) {  // reported by the reading of the whole file
     } catch (const std::bad_alloc&) {  // so is a lack of memory, where the file's own checks see it
     }
@@ -491,7 +493,8 @@ SceneDesc parsePov(const std::string& text, const std::string& file, int threads
   const std::uint64_t mostObjects = text.size() / kMinObjectBytes;
   if (text.size() >= 2 * kMinPartBytes && threads > 1 &&
       memoryShortage("", mostObjects * kBytesPerObject, available).empty()) {
-    const int count = int(std::min<size_t>(size_t(threads) * 2, text.size() / kMinPartBytes));
+    // One part per thread: the fewer the parts, the fewer objects are copied into the first one's list.
+    const int count = int(std::min<size_t>(size_t(threads), text.size() / kMinPartBytes));
     if (auto scene = parseParts(text, file, partStarts(text, count), threads)) return std::move(*scene);
   }
   // Room only where memory allows, as parseObject()'s checks would.
