@@ -1,6 +1,7 @@
 #include "raytrace/scene.hpp"
 
 #include <cmath>
+#include <optional>
 #include <type_traits>
 
 #include "raytrace/box.hpp"
@@ -43,16 +44,17 @@ std::unique_ptr<Object<T>> makeObject(const ObjectDesc& desc, const Arithmetic& 
 // translations, as on the thousands of spheres of balls2 and gnarly) is still a sphere, centred at M·c with
 // radius s·r. Folding the matrix into it saves the two matrix products per test and keeps its bounds tight.
 // The similarity test is LᵀL = s²·I for the linear part L, up to the rounding of the rotation matrices.
-ObjectDesc foldSimilarityIntoSphere(const ObjectDesc& desc) {
+// Nothing when there is nothing to fold: not a sphere, or not moved, or not by a similarity.
+std::optional<ObjectDesc> foldSimilarityIntoSphere(const ObjectDesc& desc) {
   const auto* sphere = std::get_if<SphereDesc>(&desc.shape);
-  if (!sphere) return desc;
+  if (!sphere || desc.transforms.empty()) return std::nullopt;
   const glm::dmat4 worldFromObject = desc.worldFromObject();
   const glm::dmat3 linear(worldFromObject);
   const glm::dmat3 gram = glm::transpose(linear) * linear;
   const double s2 = gram[0][0];
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
-      if (std::abs(gram[i][j] - (i == j ? s2 : 0.0)) > 1e-12 * s2) return desc;
+      if (std::abs(gram[i][j] - (i == j ? s2 : 0.0)) > 1e-12 * s2) return std::nullopt;
     }
   }
   ObjectDesc folded = desc;
@@ -73,7 +75,8 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
   const bool course = arithmetic.precision == Precision::Course;
   int id = 1;
   for (const ObjectDesc& given : desc.objects) {
-    const ObjectDesc o = course ? given : foldSimilarityIntoSphere(given);
+    const std::optional<ObjectDesc> folded = course ? std::nullopt : foldSimilarityIntoSphere(given);
+    const ObjectDesc& o = folded ? *folded : given;
     auto object = makeObject<T>(o, arithmetic, id);
     const Mat4<T> m = course ? composeTransforms<T>(o.transforms) : Mat4<T>(o.worldFromObject());
     // An identity transform (`translate <0,0,0>`) costs nothing: the shape is used as it is.
