@@ -258,34 +258,35 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects, int
   while (!tasks.empty()) {
     const Task task = tasks.back();
     tasks.pop_back();
-    std::vector<uint32_t> children;
+    uint32_t children[kWidth];
+    int size;
     if (binary[task.binary].count) {
-      children.push_back(task.binary);  // a root that is a leaf: one child
+      children[0] = task.binary, size = 1;  // a root that is a leaf: one child
     } else {
-      children = {binary[task.binary].first, binary[task.binary].first + 1};
+      children[0] = binary[task.binary].first, children[1] = children[0] + 1, size = 2;
     }
-    while (children.size() < size_t(kWidth)) {
+    while (size < kWidth) {
       int widest = -1;
-      for (size_t c = 0; c < children.size(); ++c) {
+      for (int c = 0; c < size; ++c) {
         const BinaryNode<T>& b = binary[children[c]];
-        if (!b.count && (widest < 0 || area(b.box) > area(binary[children[size_t(widest)]].box))) widest = int(c);
+        if (!b.count && (widest < 0 || area(b.box) > area(binary[children[widest]].box))) widest = c;
       }
       if (widest < 0) break;
-      const uint32_t split = binary[children[size_t(widest)]].first;
-      children[size_t(widest)] = split;
-      children.push_back(split + 1);
+      const uint32_t split = binary[children[widest]].first;
+      children[widest] = split;
+      children[size++] = split + 1;
     }
     Node node{};
-    node.size = int(children.size());
+    node.size = size;
     for (int k = 0; k < node.size; ++k) {
-      const BinaryNode<T>& b = binary[children[size_t(k)]];
+      const BinaryNode<T>& b = binary[children[k]];
       for (int a = 0; a < 3; ++a) node.lo[a][k] = b.box.min[a], node.hi[a][k] = b.box.max[a];
       node.count[k] = b.count;
       node.first[k] = b.first;
       if (!b.count) {
         node.first[k] = uint32_t(nodes_.size());
         nodes_.emplace_back();
-        tasks.push_back({children[size_t(k)], node.first[k]});
+        tasks.push_back({children[k], node.first[k]});
       }
     }
     nodes_[task.node] = node;
