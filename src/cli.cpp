@@ -1,6 +1,7 @@
 #include "raytrace/cli.hpp"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <initializer_list>
@@ -35,6 +36,8 @@ struct Invocation {
   SceneDesc scene;
   int width = 0, height = 0, x = 0, y = 0;
   Options options;
+  std::ostream* stats = nullptr;  // --stats: where render reports how long each step took
+  double loadSeconds = 0;         // the reading of the scene file
 };
 
 struct Command {
@@ -203,11 +206,29 @@ int printbvh(const Invocation& inv, std::ostream& out) {
 // The Whitted render of Programs 2-4, written to output.png; a file that names its own images (.cli `write`)
 // gets each of them instead, in file order, each showing the scene as it stood at its command.
 int renderImage(const Invocation& inv, std::ostream&) {
-  if (inv.scene.writes.empty()) {
-    writePng(renderRgb8(inv.scene, inv.width, inv.height, inv.options), "output.png", inv.options.threads);
-  }
-  for (const WriteDesc& w : inv.scene.writes) {
-    writePng(renderRgb8(w.scene, inv.width, inv.height, inv.options), w.path, inv.options.threads);
+  RenderTimes times;
+  Options options = inv.options;
+  options.times = &times;
+  double png = 0;
+  const auto renderTo = [&](const SceneDesc& scene, const std::string& path) {
+    const Rgb8Image image = renderRgb8(scene, inv.width, inv.height, options);
+    Stopwatch watch;
+    writePng(image, path, options.threads);
+    png += watch.lap();
+  };
+  if (inv.scene.writes.empty()) renderTo(inv.scene, "output.png");
+  for (const WriteDesc& w : inv.scene.writes) renderTo(w.scene, w.path);
+  if (inv.stats) {
+    const auto ms = [](double seconds) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.1f ms", seconds * 1000);
+      return std::string(text);
+    };
+    *inv.stats << "raytrace: load " << ms(inv.loadSeconds) << ", build " << ms(times.build) << ", trace "
+               << ms(times.trace) << ", png " << ms(png) << ", total "
+               << ms(inv.loadSeconds + times.build + times.trace + png) << " (" << inv.width << "x" << inv.height
+               << ", " << options.samples * options.samples << (options.samples == 1 ? " eye ray" : " eye rays")
+               << " per pixel, " << options.threads << (options.threads == 1 ? " thread)\n" : " threads)\n");
   }
   return 0;
 }
@@ -293,6 +314,8 @@ std::string usage() {
       "  --threads N                     load, build and render on N threads (default: every core); same\n"
       "                                  scene and image for any N\n"
       "  --quiet                         no progress line (shown only while rendering to a terminal)\n"
+      "  --stats                         after render, how long loading, building, tracing and writing the\n"
+      "                                  PNG took (stderr)\n"
       "  -sds                            accepted for the course; a hierarchy is used whenever it pays\n"
       "  --hierarchy=auto|always|never   force the bounding volume hierarchy on or off (same image)\n";
   return text;
@@ -313,9 +336,14 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   // Flags start with '-' and a letter; anything else (a negative number too) is positional.
   std::vector<std::string> positional;
   Options options;
+  bool stats = false;
   if (isatty(STDERR_FILENO)) options.progress = &err;  // only render() shows it, and only to a person
   for (size_t i = 1; i < args.size(); ++i) {
     std::string a = args[i];
+    if (a == "--stats") {  // not a render option: the command line reports it
+      stats = true;
+      continue;
+    }
     if (a == "--threads") {  // also written --threads=N
       if (i + 1 == args.size()) throw Error("--threads needs a number of threads");
       a += "=" + args[++i];
@@ -332,8 +360,10 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
                 std::to_string(1 + command->numbers) + " arguments, found " + std::to_string(positional.size()) +
                 "\nusage: " + commandUsage(*command));
   }
+  if (stats && std::string(command->name) != "render") throw Error("--stats is for the render command only");
   Invocation inv;
   inv.options = options;
+  if (stats) inv.stats = &err;
   if (defaultSize) {
     inv.width = inv.height = kDefaultSide;
   } else if (command->numbers >= 2) {
@@ -344,7 +374,9 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     inv.x = parseInt(positional[3], "pixel x", 0, inv.width - 1);
     inv.y = parseInt(positional[4], "pixel y", 0, inv.height - 1);
   }
+  Stopwatch watch;
   inv.scene = loadScene(positional[0], options.threads);
+  inv.loadSeconds = watch.lap();
   for (const std::string& w : inv.scene.warnings) err << w << "\n";
   return command->run(inv, out);
 }

@@ -23,9 +23,11 @@ void renderRows(const SceneDesc& desc, int width, int height, const RenderOption
   const Arithmetic arithmetic = chooseArithmetic(desc, options.arithmetic);
   withPrecision(arithmetic.precision, [&](auto tag) {
     using T = decltype(tag);
+    Stopwatch watch;
     const Scene<T> scene(desc, arithmetic, options.hierarchy, options.threads);
     const Camera<T> camera(desc.camera, width, height);
     const Tracer<T> tracer(scene, options);
+    const double build = watch.lap();
     // Every pixel is computed on its own from constant state (the tracers' shadow caches change the order of
     // tests, never an answer), so the image is the same for any thread count. One tracer per tile: a tile's
     // shadow rays are coherent, and its cache is its own. Tiles go column by column, so that threads work on
@@ -41,6 +43,7 @@ void renderRows(const SceneDesc& desc, int width, int height, const RenderOption
       for (int y = y0; y < y1; ++y) store(x0, y, x1, tileTracer.block(camera, x0, y, x1, y + 1));
       progress.add(int64_t(x1 - x0) * (y1 - y0));
     });
+    if (options.times) options.times->build += build, options.times->trace += watch.lap();
   });
 }
 

@@ -137,3 +137,22 @@ TEST_CASE("cli: pixelray and firsthit give the course's p1 answers, whatever the
   CHECK(run({"firsthit", scene, "640", "480", "400", "240", flag}).out ==
         "Pixel: [400, 240] Ray: {0.0000 0.0000 14.0000} -> {0.1654 0.0010 -0.9862}\nNo Hit\n");
 }
+
+TEST_CASE("cli: --stats reports render's steps on the error stream, and only for render") {
+  const rt::test::TempDir dir;
+  // A .cli file names its images, so nothing is written outside the test's directory.
+  const std::string scene = dir.write("s.cli", "fov 60\nwrite " + dir.file("a.png") + "\n"
+                                      "surface 1 1 1  0 0 0  0 0 0  1 0\nsphere 0 0 -3 1\n"
+                                      "write " + dir.file("b.png") + "\n");
+  const Run r = run({"render", scene, "8", "6", "-ss=2", "--threads", "1", "--stats"});
+  CHECK(r.status == 0);
+  CHECK(r.out.empty());
+  // The times vary; the line's shape does not: one line for the file, however many images it writes.
+  const std::string ms = "[0-9]+\\.[0-9] ms";
+  CHECK_THAT(r.err, Catch::Matches("raytrace: load " + ms + ", build " + ms + ", trace " + ms + ", png " + ms +
+                                   ", total " + ms + " \\(8x6, 4 eye rays per pixel, 1 thread\\)\n"));
+  CHECK(dir.names() == std::vector<std::string>{"a.png", "b.png", "s.cli"});
+  CHECK(run({"render", scene, "8", "6", "--threads", "1"}).err.empty());
+  CHECK(errorOf({"sceneinfo", scene, "--stats"}) == "--stats is for the render command only");
+  CHECK(errorOf({"pixelcolor", scene, "8", "6", "1", "1", "--stats"}) == "--stats is for the render command only");
+}

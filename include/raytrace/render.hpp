@@ -1,6 +1,7 @@
 // Whole-image rendering: what `render` (and a .cli `write`) produces.
 #pragma once
 
+#include <chrono>
 #include <optional>
 #include <ostream>
 
@@ -14,6 +15,27 @@
 
 namespace rt {
 
+// How long a render's steps took, in seconds (--stats); a file that writes several images adds them up.
+struct RenderTimes {
+  double build = 0;  // the scene's objects and their hierarchy
+  double trace = 0;  // the pixels
+};
+
+// Wall time in seconds since the stopwatch was made or last read.
+class Stopwatch {
+ public:
+  double lap() {
+    const Clock::time_point now = Clock::now();
+    const double seconds = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return seconds;
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point last_ = Clock::now();
+};
+
 // Everything the command line can change about how a picture is made.
 struct RenderOptions {
   Arithmetic arithmetic;                         // --precision, --sphere, --offset
@@ -26,6 +48,7 @@ struct RenderOptions {
   Hierarchy hierarchy = Hierarchy::Auto;         // --hierarchy: force the BVH on or off, for comparisons
   int threads = defaultThreads();                // --threads N
   std::ostream* progress = nullptr;              // where render() shows its progress line, if anywhere
+  RenderTimes* times = nullptr;                  // where render() adds how long it took, if anywhere
 };
 
 // Renders the scene at width × height.

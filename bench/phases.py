@@ -1,0 +1,62 @@
+#!/usr/bin/python3
+"""Where the time of a render goes, on one thread and on two: the steps `raytrace render --stats` reports.
+
+    bench/phases.py [--bin build/raytrace] [--runs 11] [--size 1280x960] [--scenes spheres20k] [--ss 1]
+
+The scenes of ../shared/bench are regenerated as compare_povray.py does. For each scene, runs on one thread
+and on two alternate, the order swapped every round. Printed for each step (loading the file, building the
+scene and its hierarchy, tracing, encoding and writing the PNG, their sum, and the whole process from start
+to exit as the shell sees it): the median and, in brackets, the fastest run on each thread count, and the
+ratio of the medians.
+"""
+
+import re
+import statistics
+import subprocess
+import sys
+import time
+
+from compare_povray import arguments, prepare
+
+STEPS = ("load", "build", "trace", "png", "total")
+LINE = re.compile(r"raytrace: " + ", ".join(r"%s ([0-9.]+) ms" % s for s in STEPS))
+
+
+def steps(command, cwd):
+    """The milliseconds of each step and of the whole process; exits if the command fails."""
+    start = time.perf_counter()
+    done = subprocess.run(command, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    process = (time.perf_counter() - start) * 1000
+    match = LINE.search(done.stderr)
+    if done.returncode != 0 or not match:
+        sys.exit("failed: %s\n%s" % (" ".join(command), done.stderr))
+    return [float(v) for v in match.groups()] + [process]
+
+
+def main():
+    ap = arguments(__doc__, 11, "rounds of one run on each thread count")
+    ap.set_defaults(scenes=["spheres20k"])
+    ap.add_argument("--ss", type=int, default=1, help="N for -ss=N")
+    args = ap.parse_args()
+    width, height, binary, work = prepare(args)
+
+    for scene in args.scenes:
+        times = {1: [], 2: []}
+        for r in range(args.runs):
+            for threads in (1, 2) if r % 2 == 0 else (2, 1):
+                command = [binary, "render", scene + ".pov", width, height, "-ss=%d" % args.ss, "--threads",
+                           str(threads), "--quiet", "--stats"]
+                times[threads].append(steps(command, work))
+        print("\n%s, -ss=%d: milliseconds, median (fastest) of %d runs\n" % (scene, args.ss, args.runs))
+        print("| step | 1 thread | 2 threads | ratio of medians |")
+        print("|---|---|---|---|")
+        for i, name in enumerate(STEPS + ("process",)):
+            one = [t[i] for t in times[1]]
+            two = [t[i] for t in times[2]]
+            ratio = "%.2f×" % (statistics.median(one) / statistics.median(two)) if statistics.median(two) else "–"
+            print("| %s | %.1f (%.1f) | %.1f (%.1f) | %s |" % (
+                name, statistics.median(one), min(one), statistics.median(two), min(two), ratio), flush=True)
+
+
+if __name__ == "__main__":
+    main()
