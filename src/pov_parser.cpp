@@ -307,7 +307,7 @@ class PovParser {
 
   // pigment, finish and transforms, in any order and repeated, up to the object's closing brace.
   void parseModifiers(ObjectDesc& obj, const Token& keyword) {
-    Finish finish;
+    Finish& finish = obj.finish;
     for (;;) {
       const Token& t = next();
       if (isPunct(t, '}')) break;
@@ -329,7 +329,6 @@ class PovParser {
       }
     }
     Material& m = obj.material;
-    m.finish = finish;
     m.ambient = float(finish.ambient) * m.pigment;
     m.diffuse = float(finish.diffuse) * m.pigment;
     m.specular = float(finish.specular) * m.pigment;

@@ -48,15 +48,16 @@ void printShape(std::ostream& out, const ShapeDesc& shape) {
 
 // The material in the file's own terms: POV's pigment and finish scalars (§a.1); a .cli `surface`'s colours,
 // which no scalar can stand for, with its power and reflection coefficient.
-void printMaterial(std::ostream& out, const Material& m, SceneLanguage language) {
+void printMaterial(std::ostream& out, const ObjectDesc& o, SceneLanguage language) {
+  const Material& m = o.material;
   if (language == SceneLanguage::Cli) {
     out << "- Material:\n  - Ambient: " << braces(m.ambient) << "\n  - Diffuse: " << braces(m.diffuse)
         << "\n  - Specular: " << braces(m.specular) << "\n  - Power: " << fixed4(m.exponent)
         << "\n  - Reflection: " << fixed4(m.reflection) << "\n";
     return;
   }
-  out << "- Color: " << braces(m.pigment) << "\n- Material:\n  - Ambient: " << fixed4(m.finish.ambient)
-      << "\n  - Diffuse: " << fixed4(m.finish.diffuse) << "\n";
+  out << "- Color: " << braces(m.pigment) << "\n- Material:\n  - Ambient: " << fixed4(o.finish.ambient)
+      << "\n  - Diffuse: " << fixed4(o.finish.diffuse) << "\n";
 }
 
 }  // namespace
@@ -75,7 +76,7 @@ void printSceneInfo(std::ostream& out, const SceneDesc& scene) {
     const ObjectDesc& o = scene.objects[i];
     out << "\nObject[" << i << "]:\n- Type: " << shapeName(o.shape) << "\n";
     printShape(out, o.shape);
-    printMaterial(out, o.material, scene.language);
+    printMaterial(out, o, scene.language);
   }
 }
 

@@ -5,7 +5,8 @@
 
 namespace rt {
 
-// A POV-Ray `finish` block as written (csc473-course.md §b); kept for `sceneinfo`.
+// A POV-Ray `finish` block as written (csc473-course.md §b): what `sceneinfo` prints, and what the POV parser
+// makes a Material of.
 struct Finish {
   double ambient = 0, diffuse = 0, specular = 0;
   double roughness = 1;  // course default; Blinn-Phong exponent 2/roughness² − 2 (§c.1)
@@ -14,6 +15,8 @@ struct Finish {
   double ior = 1;
 };
 
+// What shading reads of a surface, in either scene language. Every object carries one, so it holds nothing
+// else: the finish as written stays in the scene's description (ObjectDesc).
 struct Material {
   Color pigment{0};   // C
   float filter = 0;   // f, the fraction of light transmitted (rgbf's fourth component)
@@ -24,7 +27,6 @@ struct Material {
   float roughness = 1;   // Cook-Torrance α = roughness² (§c.2)
   float reflection = 0;  // POV `reflection`, .cli Krefl
   float ior = 1;
-  Finish finish;         // the POV values as written
 };
 
 }  // namespace rt

@@ -44,6 +44,7 @@ using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, Con
 struct ObjectDesc {
   ShapeDesc shape;
   Material material;
+  Finish finish;  // POV: as written, for sceneinfo
   SourceLoc loc;  // where the object starts, for messages
   // The POV transforms as written (§c.10), in file order; a scene built in code gives its own the same way.
   std::vector<TransformStep> transforms;
