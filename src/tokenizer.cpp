@@ -24,9 +24,20 @@ Token Tokenizer::next() {
   const size_t start = i_;
   const char c = s_[i_];
   if (startsNumber()) {
+    // from_chars reads the longest number written as strtod reads one: after a sign, digits with at most one
+    // point and an exponent only if digits follow, so `1e` stays a number and a word. That is POV-Ray's form,
+    // save the '+', which it does not take. It is correctly rounded like strtod and several times faster (a
+    // big scene is mostly numbers), but calls an underflow out of range: those few go to strtod.
     t.kind = Token::Kind::Number;
-    lexNumber();
-  } else if (isWordStart(c)) {
+    const char* first = s_.data() + i_ + (c == '+');
+    const auto [end, error] = std::from_chars(first, s_.data() + s_.size(), t.number);
+    i_ = size_t(end - s_.data());
+    t.text = s_.substr(start, i_ - start);
+    if (error != std::errc()) t.number = std::strtod(std::string(t.text).c_str(), nullptr);
+    if (!std::isfinite(t.number)) throw ParseError(t.loc, "number " + t.quoted() + " is out of range");
+    return t;
+  }
+  if (isWordStart(c)) {
     t.kind = Token::Kind::Word;
     while (i_ < s_.size() && isWordChar(s_[i_])) ++i_;
   } else if (std::isprint(static_cast<unsigned char>(c))) {
@@ -37,45 +48,41 @@ Token Tokenizer::next() {
     std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned char>(c));
     throw ParseError(t.loc, std::string("unexpected byte ") + hex + " (is this a text scene file?)");
   }
-  // No token holds a line end, so its characters all stand on the line it starts.
-  col_ += int(i_ - start);
   t.text = s_.substr(start, i_ - start);
-  if (t.kind == Token::Kind::Number) {
-    // from_chars is correctly rounded like strtod and several times faster (a big scene is mostly numbers); it
-    // takes no '+' and calls an underflow out of range, so those few go to strtod.
-    const char* first = t.text.data() + (t.text[0] == '+');
-    const char* last = t.text.data() + t.text.size();
-    const auto [end, error] = std::from_chars(first, last, t.number);
-    if (error != std::errc() || end != last) t.number = std::strtod(std::string(t.text).c_str(), nullptr);
-    if (!std::isfinite(t.number)) throw ParseError(t.loc, "number " + t.quoted() + " is out of range");
-  }
   return t;
 }
 
-// Only ever called inside the text.
-void Tokenizer::advance() {
-  if (endsLine()) {
-    ++line_;
-    col_ = 1;
-  } else {
-    ++col_;
+void Tokenizer::lineBreak() {
+  if (s_[i_] == '\r' && peek(1) == '\n') {
+    ++i_;  // the LF after it ends the line
+    return;
   }
   ++i_;
+  ++line_;
+  lineStart_ = i_;
 }
 
 void Tokenizer::skipSpaceAndComments() {
+  const auto isBreak = [](char c) { return c == '\n' || c == '\r'; };
   while (i_ < s_.size()) {
     const char c = s_[i_];
-    if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
-      advance();
+    if (c == ' ' || c == '\t' || c == '\f' || c == '\v') {
+      ++i_;
+    } else if (isBreak(c)) {
+      lineBreak();
     } else if (c == '/' && peek(1) == '/') {
-      while (i_ < s_.size() && !endsLine()) advance();
+      while (i_ < s_.size() && !isBreak(s_[i_])) ++i_;
     } else if (c == '/' && peek(1) == '*') {
       const SourceLoc start = here();
-      advance(), advance();
-      while (i_ < s_.size() && !(s_[i_] == '*' && peek(1) == '/')) advance();
+      for (i_ += 2; i_ < s_.size() && !(s_[i_] == '*' && peek(1) == '/');) {
+        if (isBreak(s_[i_])) {
+          lineBreak();
+        } else {
+          ++i_;
+        }
+      }
       if (i_ >= s_.size()) throw ParseError(start, "comment '/*' is never closed");
-      advance(), advance();
+      i_ += 2;
     } else {
       return;
     }
@@ -87,19 +94,6 @@ bool Tokenizer::startsNumber() const {
   size_t k = 0;
   if (peek() == '-' || peek() == '+') k = 1;
   return isDigit(peek(k)) || (peek(k) == '.' && isDigit(peek(k + 1)));
-}
-
-void Tokenizer::lexNumber() {
-  if (peek() == '-' || peek() == '+') ++i_;
-  while (isDigit(peek())) ++i_;
-  if (peek() == '.') ++i_;
-  while (isDigit(peek())) ++i_;
-  // An exponent only if digits follow, so that `1e` stays a number and a word.
-  if ((peek() == 'e' || peek() == 'E') &&
-      (isDigit(peek(1)) || ((peek(1) == '-' || peek(1) == '+') && isDigit(peek(2))))) {
-    i_ += 2;
-    while (isDigit(peek())) ++i_;
-  }
 }
 
 }  // namespace rt

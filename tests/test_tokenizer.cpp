@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -143,5 +145,33 @@ TEST_CASE("tokenizer: after the text, End again as often as asked, at the same p
     const Token end = tokenizer.next();
     CHECK(end.kind == Kind::End);
     CHECK(end.loc.str() == "t.pov:2:1");
+  }
+}
+
+TEST_CASE("tokenizer: a seeded sweep of number-like text reads each number as strtod does, to where it stops") {
+  // strtod is an independent reader of the same form: an optional sign, then digits with at most one point and
+  // an exponent only if digits follow. On these characters it converts exactly where a number token starts.
+  const std::string alphabet = "0123456789.eE+-";
+  std::mt19937 rng(473);
+  for (int k = 0; k < 20000; ++k) {
+    std::string text(size_t(1 + rng() % 12), ' ');
+    for (char& c : text) c = alphabet[rng() % alphabet.size()];
+    CAPTURE(text);
+    char* end = nullptr;
+    const double expected = std::strtod(text.c_str(), &end);
+    const size_t length = size_t(end - text.c_str());
+    rt::Tokenizer tokenizer(text, "t.pov");
+    if (length == 0) {
+      CHECK(tokenizer.next().kind != Kind::Number);
+    } else if (!std::isfinite(expected)) {
+      CHECK_THROWS_WITH(tokenizer.next(),
+                        "t.pov:1:1: error: number '" + text.substr(0, length) + "' is out of range");
+    } else {
+      const Token t = tokenizer.next();
+      CHECK(t.kind == Kind::Number);
+      CHECK(t.text == text.substr(0, length));
+      CHECK(t.number == expected);
+      CHECK(std::signbit(t.number) == std::signbit(expected));
+    }
   }
 }

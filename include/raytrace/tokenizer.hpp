@@ -36,19 +36,20 @@ class Tokenizer {
   Token next();
 
  private:
-  SourceLoc here() const { return SourceLoc{file_, line_, col_}; }
+  // No token holds a line end, so a column is the distance from the start of the line: it is worked out when
+  // a location is made, not counted character by character.
+  SourceLoc here() const { return SourceLoc{file_, line_, int(i_ - lineStart_) + 1}; }
   char peek(size_t k = 0) const { return i_ + k < s_.size() ? s_[i_ + k] : '\0'; }
-  // A line ends at LF, CRLF or a lone CR (old Mac files, which POV-Ray reads too).
-  bool endsLine() const { return s_[i_] == '\n' || (s_[i_] == '\r' && peek(1) != '\n'); }
-  void advance();
+  // Steps over the CR or LF at i_. A line ends at LF, CRLF or a lone CR (old Mac files, which POV-Ray reads too).
+  void lineBreak();
   void skipSpaceAndComments();
   bool startsNumber() const;
-  void lexNumber();
 
   std::string_view s_;
   FileName file_;  // shared by the location of every token
   size_t i_ = 0;
-  int line_, col_ = 1;
+  size_t lineStart_ = 0;  // where the current line starts in s_
+  int line_;
 };
 
 }  // namespace rt
