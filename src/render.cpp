@@ -43,7 +43,10 @@ void renderRows(const SceneDesc& desc, int width, int height, const RenderOption
       for (int y = y0; y < y1; ++y) store(x0, y, x1, tileTracer.block(camera, x0, y, x1, y + 1));
       progress.add(int64_t(x1 - x0) * (y1 - y0));
     });
-    if (options.times) options.times->build += build, options.times->trace += watch.lap();
+    if (options.times) {
+      options.times->build += build;
+      options.times->trace += watch.lap();
+    }
   });
 }
 
