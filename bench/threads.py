@@ -7,32 +7,37 @@ The scenes of ../shared/bench are regenerated as compare_povray.py does. For eac
 3x3 supersampling, runs on one thread and on two alternate, the order swapped every round. Printed for each:
 the ratio of the fastest runs (outside load on a shared machine only ever adds time, so it disturbs these
 least), of the medians, and the median of the ratios of the pairs run back to back (which follows a load that
-drifts).
+drifts); and, from `--stats`, the ratio of the fastest tracing steps alone.
 """
 
 import statistics
 
-from compare_povray import arguments, prepare, wall
+from compare_povray import arguments, prepare
+from phases import STEPS, steps
+
+TRACE = STEPS.index("trace")  # in what steps() returns; the whole process comes last
 
 
 def main():
     args = arguments(__doc__, 15, "rounds of one run on each thread count").parse_args()
     width, height, binary, work = prepare(args)
 
-    print("| scene | AA | 1 thread s | 2 threads s | ratio of fastest | of medians | per pair |")
-    print("|---|---|---|---|---|---|---|")
+    print("| scene | AA | 1 thread s | 2 threads s | ratio of fastest | of medians | per pair | tracing alone, fastest |")
+    print("|---|---|---|---|---|---|---|---|")
     for scene in args.scenes:
         for name, aa in (("none", []), ("3x3", ["-ss=3"])):
-            times = {1: [], 2: []}
+            runs = {1: [], 2: []}
             for r in range(args.runs):
                 for threads in (1, 2) if r % 2 == 0 else (2, 1):
-                    command = [binary, "render", scene + ".pov", width, height, "--threads", str(threads), "--quiet"]
-                    times[threads].append(wall(command + aa, work))
-            one, two = times[1], times[2]
+                    command = [binary, "render", scene + ".pov", width, height, "--threads", str(threads), "--quiet",
+                               "--stats"]
+                    runs[threads].append(steps(command + aa, work))
+            one, two = [t[-1] / 1000 for t in runs[1]], [t[-1] / 1000 for t in runs[2]]
             pairs = statistics.median(a / b for a, b in zip(one, two))
-            print("| %s | %s | %.3f | %.3f | %.2f× | %.2f× | %.2f× |" % (
+            trace = min(t[TRACE] for t in runs[1]) / min(t[TRACE] for t in runs[2])
+            print("| %s | %s | %.3f | %.3f | %.2f× | %.2f× | %.2f× | %.2f× |" % (
                 scene, name, statistics.median(one), statistics.median(two), min(one) / min(two),
-                statistics.median(one) / statistics.median(two), pairs), flush=True)
+                statistics.median(one) / statistics.median(two), pairs, trace), flush=True)
     print("\n%s×%s, medians of %d interleaved runs on each thread count." % (width, height, args.runs))
 
 
