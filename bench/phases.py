@@ -53,9 +53,9 @@ def main():
         for i, name in enumerate(STEPS + ("process",)):
             one = [t[i] for t in times[1]]
             two = [t[i] for t in times[2]]
-            ratio = "%.2f×" % (statistics.median(one) / statistics.median(two)) if statistics.median(two) else "–"
-            print("| %s | %.1f (%.1f) | %.1f (%.1f) | %s |" % (
-                name, statistics.median(one), min(one), statistics.median(two), min(two), ratio), flush=True)
+            a, b = statistics.median(one), statistics.median(two)
+            ratio = "%.2f×" % (a / b) if a and b else "–"  # a step under 0.05 ms shows as 0.0
+            print("| %s | %.1f (%.1f) | %.1f (%.1f) | %s |" % (name, a, min(one), b, min(two), ratio), flush=True)
 
 
 if __name__ == "__main__":
