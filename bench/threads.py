@@ -22,7 +22,8 @@ def main():
     args = arguments(__doc__, 15, "rounds of one run on each thread count").parse_args()
     width, height, binary, work = prepare(args)
 
-    print("| scene | AA | 1 thread s | 2 threads s | ratio of fastest | of medians | per pair | tracing alone, fastest |")
+    print("| scene | AA | 1 thread s | 2 threads s | ratio of fastest | of medians | per pair "
+          "| tracing alone, fastest |")
     print("|---|---|---|---|---|---|---|---|")
     for scene in args.scenes:
         for name, aa in (("none", []), ("3x3", ["-ss=3"])):
