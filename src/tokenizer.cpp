@@ -25,9 +25,9 @@ Token Tokenizer::next() {
   const char c = s_[i_];
   if (startsNumber()) {
     // from_chars reads the longest number written as strtod reads one: after a sign, digits with at most one
-    // point and an exponent only if digits follow, so `1e` stays a number and a word. That is POV-Ray's form,
-    // save the '+', which it does not take. It is correctly rounded like strtod and several times faster (a
-    // big scene is mostly numbers), but calls an underflow out of range: those few go to strtod.
+    // point and an exponent only if digits follow, so `1e` stays a number and a word. That is POV-Ray's form;
+    // from_chars takes no leading '+', so one is stepped over. It is correctly rounded like strtod and several
+    // times faster (a big scene is mostly numbers), but calls an underflow out of range: those few go to strtod.
     t.kind = Token::Kind::Number;
     const char* first = s_.data() + i_ + (c == '+');
     const auto [end, error] = std::from_chars(first, s_.data() + s_.size(), t.number);
