@@ -124,17 +124,8 @@ bool Scene<T>::occluded(const Ray<T>& ray, Interval<T> range, const Object<T>** 
 
 template <class T>
 void Scene<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* hits) const {
-  for (int i = 0; i < n; ++i) {
-    hits[i].reset();
-    Interval<T> narrowed = range;
-    for (const Object<T>* object : scanned_) {
-      // Narrowing to the strict interval keeps the earlier object on an exact tie.
-      if (auto hit = object->intersect(rays[i], narrowed)) {
-        narrowed.max = hit->t;
-        hits[i] = hit;
-      }
-    }
-  }
+  for (int i = 0; i < n; ++i) hits[i].reset();
+  for (const Object<T>* object : scanned_) object->closerHits(rays, n, range, hits);
   if (hierarchy_) hierarchy_->closestHits(rays, n, range, hits);
   for (int i = 0; i < n; ++i) {
     if (hits[i]) hits[i]->point = hitPoint(rays[i], *hits[i]);
@@ -149,19 +140,20 @@ template <class T>
 void Scene<T>::occluded(const Ray<T>* rays, const Interval<T>* ranges, int n, bool* blocked,
                         const Object<T>** lastBlocker) const {
   const Object<T>* blockers[Bvh<T>::kPacket] = {};
-  uint32_t open = 0;  // the rays that neither the cached blocker nor an unbounded object blocks
+  uint32_t open = 0;  // the rays that nothing blocks so far
   for (int i = 0; i < n; ++i) {
     if (*lastBlocker && (*lastBlocker)->intersect(rays[i], ranges[i])) {
       blockers[i] = *lastBlocker;
-      continue;
+    } else {
+      open |= 1u << i;
     }
-    for (const Object<T>* object : scanned_) {
-      if (object->intersect(rays[i], ranges[i])) {
-        blockers[i] = object;
-        break;
-      }
-    }
-    if (!blockers[i]) open |= 1u << i;
+  }
+  // The unbounded objects in file order, then the hierarchy: each ray's blocker is the first that meets it.
+  for (const Object<T>* object : scanned_) {
+    if (!open) break;
+    const uint32_t met = object->blocking(rays, ranges, open);
+    for (uint32_t mask = met; mask; mask &= mask - 1) blockers[__builtin_ctz(mask)] = object;
+    open &= ~met;
   }
   if (open && hierarchy_) hierarchy_->blockers(rays, ranges, open, blockers);
   for (int i = 0; i < n; ++i) {

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <random>
 
 #include "raytrace/plane.hpp"
 
@@ -80,4 +81,42 @@ TEMPLATE_TEST_CASE("plane: the hit point is re-projected onto the plane", "", fl
   const auto hit = plane.intersect({{-3000, -1, 7}, dir}, {});
   REQUIRE(hit);
   CHECK(hit->point.y == T(-4));
+}
+
+TEMPLATE_TEST_CASE("plane: a packet's tests answer as its rays' own tests do", "", float, double) {
+  using T = TestType;
+  constexpr int kRays = 32;
+  const rt::Vec3<T> n = glm::normalize(rt::Vec3<T>(1, 3, -2));
+  const rt::Plane<T> plane(n, T(0.5), rt::Material{}, 2);
+  const rt::Plane<T> earlier(rt::Vec3<T>(0, 1, 0), T(-1), rt::Material{}, 1);  // gives some rays a hit first
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> pos(-3, 3), unit(0, 1);
+  std::normal_distribution<double> normal;
+  for (int round = 0; round < 200; ++round) {
+    CAPTURE(round);
+    rt::Ray<T> rays[kRays];
+    rt::Interval<T> ranges[kRays];
+    std::optional<rt::Hit<T>> mine[kRays], theirs[kRays];
+    for (int i = 0; i < kRays; ++i) {
+      rt::Vec3<T> dir(glm::normalize(glm::dvec3(normal(rng), normal(rng), normal(rng))));
+      // A quarter of the rays run parallel to the plane, half of those in it.
+      if (i % 4 == 0) dir = glm::normalize(glm::cross(dir, n));
+      const rt::Vec3<T> origin = i % 8 == 0 ? T(0.5) * n : rt::Vec3<T>(pos(rng), pos(rng), pos(rng));
+      rays[i] = {origin, dir};
+      ranges[i] = {T(0), unit(rng) < 0.5 ? T(unit(rng) * 4) : std::numeric_limits<T>::infinity()};
+      if (unit(rng) < 0.5) mine[i] = theirs[i] = earlier.intersect(rays[i], {});
+    }
+    plane.closerHits(rays, kRays, {}, mine);
+    plane.rt::Object<T>::closerHits(rays, kRays, {}, theirs);  // intersect() ray by ray
+    for (int i = 0; i < kRays; ++i) {
+      CAPTURE(i);
+      REQUIRE(bool(mine[i]) == bool(theirs[i]));
+      if (!mine[i]) continue;
+      CHECK(mine[i]->t == theirs[i]->t);
+      CHECK(mine[i]->object == theirs[i]->object);
+      CHECK(mine[i]->point == theirs[i]->point);
+    }
+    const uint32_t open = uint32_t(rng());
+    CHECK(plane.blocking(rays, ranges, open) == plane.rt::Object<T>::blocking(rays, ranges, open));
+  }
 }

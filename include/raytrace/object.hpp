@@ -1,6 +1,7 @@
 // The abstract scene object: every shape answers one query, the closest intersection inside an open interval.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 
 #include "raytrace/aabb.hpp"
@@ -19,6 +20,25 @@ template <class T> class Object {
   // The closest intersection whose t lies strictly inside `range`, or nothing. On a hit, `point` lies on the
   // surface (re-projected, not just ray.at(t)) and `normal` is the unit outward normal at it.
   virtual std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const = 0;
+
+  // The tests of a packet of n rays that are scanned object by object rather than through a hierarchy
+  // (Scene): one call per object and packet, which a shape whose test is a few operations (the plane) answers
+  // in a loop the processor pipelines. closerHits: best[i] becomes this object's hit on rays[i] when one lies
+  // strictly inside `range` and strictly before best[i]; an equal t keeps the earlier object. blocking: the
+  // rays among `open` that this object meets strictly inside ranges[i], as a bit mask.
+  virtual void closerHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const {
+    for (int i = 0; i < n; ++i) {
+      if (auto hit = intersect(rays[i], {range.min, best[i] ? best[i]->t : range.max})) best[i] = hit;
+    }
+  }
+  virtual uint32_t blocking(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const {
+    uint32_t blocked = 0;
+    for (uint32_t mask = open; mask; mask &= mask - 1) {
+      const int i = __builtin_ctz(mask);
+      if (intersect(rays[i], ranges[i])) blocked |= 1u << i;
+    }
+    return blocked;
+  }
 
   // The outward normal at `point`, a point on the surface at or next to `hit`: the course tier takes a
   // transformed object's normal where its world hit point maps back to (Transformed). A sphere computes it
