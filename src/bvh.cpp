@@ -211,9 +211,8 @@ std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& obje
   const size_t n = objects.size();
   std::vector<Aabb<T>> boxes(n);
   std::vector<Vec3<T>> centroids(n);
-  constexpr size_t kBlock = 4096;  // objects whose bounds one task takes
-  parallelFor(int((n + kBlock - 1) / kBlock), threads, [&](int block) {
-    for (size_t i = size_t(block) * kBlock; i < std::min(n, size_t(block + 1) * kBlock); ++i) {
+  parallelForBlocks(n, kObjectBlock, threads, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
       boxes[i] = paddedBounds(*objects[i]);
       centroids[i] = centroid(boxes[i]);
     }

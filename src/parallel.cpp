@@ -34,4 +34,9 @@ void parallelFor(int count, int threads, const std::function<void(int)>& task) {
   if (error) std::rethrow_exception(error);
 }
 
+void parallelForBlocks(size_t count, size_t block, int threads, const std::function<void(size_t, size_t)>& task) {
+  parallelFor(int((count + block - 1) / block), threads,
+              [&](int b) { task(size_t(b) * block, std::min(count, size_t(b + 1) * block)); });
+}
+
 }  // namespace rt

@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "raytrace/box.hpp"
+#include "raytrace/parallel.hpp"
 #include "raytrace/cone.hpp"
 #include "raytrace/cylinder.hpp"
 #include "raytrace/plane.hpp"
@@ -73,29 +74,30 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
   // The course tier does what its reference does: every transformed object is intersected on the transformed
   // ray, with the matrix composed in T from the file's steps.
   const bool course = arithmetic.precision == Precision::Course;
-  int id = 1;
-  for (const ObjectDesc& given : desc.objects) {
-    const std::optional<ObjectDesc> folded = course ? std::nullopt : foldSimilarityIntoSphere(given);
-    const ObjectDesc& o = folded ? *folded : given;
-    auto object = makeObject<T>(o, arithmetic, id);
-    const Mat4<T> m = course ? composeTransforms<T>(o.transforms) : Mat4<T>(o.worldFromObject());
-    // An identity transform (`translate <0,0,0>`) costs nothing: the shape is used as it is.
-    if (m != Mat4<T>(T(1))) {
-      object = std::make_unique<Transformed<T>>(std::move(object), m, o.material, id, course);
+  const size_t n = desc.objects.size();
+  objects_.resize(n);
+  // Unbounded objects (planes, or boxes overflowing T) have no box to put in a hierarchy; they are always
+  // tested in turn.
+  std::vector<char> finite(n);
+  parallelForBlocks(n, kObjectBlock, threads, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      const int id = int(i) + 1;
+      const std::optional<ObjectDesc> folded = course ? std::nullopt : foldSimilarityIntoSphere(desc.objects[i]);
+      const ObjectDesc& o = folded ? *folded : desc.objects[i];
+      auto object = makeObject<T>(o, arithmetic, id);
+      const Mat4<T> m = course ? composeTransforms<T>(o.transforms) : Mat4<T>(o.worldFromObject());
+      // An identity transform (`translate <0,0,0>`) costs nothing: the shape is used as it is.
+      if (m != Mat4<T>(T(1))) {
+        object = std::make_unique<Transformed<T>>(std::move(object), m, o.material, id, course);
+      }
+      const auto box = object->bounds();
+      const auto finite3 = [](const Vec3<T>& v) { return !glm::any(glm::isinf(v)) && !glm::any(glm::isnan(v)); };
+      finite[i] = box && finite3(box->min) && finite3(box->max);
+      objects_[i] = std::move(object);
     }
-    objects_.push_back(std::move(object));
-    ++id;
-  }
-  // Unbounded objects (planes, or boxes overflowing T) have no box to put in a hierarchy; they are always tested in turn.
+  });
   std::vector<const Object<T>*> bounded;
-  for (const auto& o : objects_) {
-    const auto box = o->bounds();
-    const auto finite3 = [](const Vec3<T>& v) {
-      return !glm::any(glm::isinf(v)) && !glm::any(glm::isnan(v));
-    };
-    const bool finite = box && finite3(box->min) && finite3(box->max);
-    (finite ? bounded : scanned_).push_back(o.get());
-  }
+  for (size_t i = 0; i < n; ++i) (finite[i] ? bounded : scanned_).push_back(objects_[i].get());
   const bool build = hierarchy == Hierarchy::Always ||
                      (hierarchy == Hierarchy::Auto && bounded.size() >= kHierarchyMinObjects);
   if (build) {

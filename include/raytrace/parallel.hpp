@@ -1,6 +1,7 @@
 // Work spread over threads: the renderer's tiles and the PNG encoder's segments.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 
 namespace rt {
@@ -12,5 +13,13 @@ int defaultThreads();
 // increasing order as threads become free. What a task computes must not depend on which thread runs it. If a
 // task throws, no new index is started and the first exception is rethrown once all threads have stopped.
 void parallelFor(int count, int threads, const std::function<void(int)>& task);
+
+// Objects per task where a scene's objects are made or bounded on several threads: enough work to pay for
+// handing it out, and blocks enough to share out.
+constexpr size_t kObjectBlock = 4096;
+
+// parallelFor over the items [0, count) in blocks of `block` items: task(begin, end) for each block. For work
+// per item too small to hand out one by one, as building a scene's objects.
+void parallelForBlocks(size_t count, size_t block, int threads, const std::function<void(size_t, size_t)>& task);
 
 }  // namespace rt
