@@ -26,8 +26,8 @@ bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' ||
 // files. Control bytes are refused: a binary file should fail on its first line, not its hundredth.
 class LineSplitter {
  public:
-  // `text` must outlive the splitter, so a temporary is refused at compile time.
-  LineSplitter(const std::string& text, const std::string& file) : text_(text), file_(file) {}
+  // `text` must outlive the splitter, so a temporary string is refused at compile time.
+  LineSplitter(std::string_view text, const std::string& file) : text_(text), file_(file) {}
   LineSplitter(std::string&& text, const std::string& file) = delete;
 
   // The words of the next line (none for a blank or comment line); false once every line has been given.
@@ -67,7 +67,7 @@ class LineSplitter {
   SourceLoc here() const { return SourceLoc{file_, line_, col_}; }
 
  private:
-  const std::string& text_;
+  std::string_view text_;
   std::string file_;
   size_t i_ = 0;
   int line_ = 1, col_ = 1;
@@ -89,7 +89,7 @@ constexpr const char* kCommands[] = {"fov", "background", "light", "surface", "s
 
 class CliParser {
  public:
-  CliParser(const std::string& text, const std::string& file) : lines_(text, file) {
+  CliParser(std::string_view text, const std::string& file) : lines_(text, file) {
     scene_.file = file;
     scene_.language = SceneLanguage::Cli;
     // The conventions that reproduce the course's reference images (cs3451-course.md §A.4).
@@ -260,20 +260,20 @@ class CliParser {
 
 }  // namespace
 
-SceneDesc parseCli(const std::string& text, const std::string& file) { return CliParser(text, file).parse(); }
+SceneDesc parseCli(std::string_view text, const std::string& file) { return CliParser(text, file).parse(); }
 
-bool looksLikeCli(const std::string& text) {
+bool looksLikeCli(std::string_view text) {
   size_t lineStart = 0;
   while (lineStart < text.size()) {
     const size_t newline = text.find('\n', lineStart);
-    const size_t lineEnd = newline == std::string::npos ? text.size() : newline;
-    const std::string line = text.substr(lineStart, lineEnd - lineStart);
+    const size_t lineEnd = newline == std::string_view::npos ? text.size() : newline;
+    const std::string_view line = text.substr(lineStart, lineEnd - lineStart);
     lineStart = lineEnd + 1;
     const size_t first = line.find_first_not_of(" \t\r\f\v");
-    if (first == std::string::npos || line[first] == '#') continue;
-    const std::string word = line.substr(first, line.find_first_of(" \t\r\f\v", first) - first);
+    if (first == std::string_view::npos || line[first] == '#') continue;
+    const std::string_view word = line.substr(first, line.find_first_of(" \t\r\f\v", first) - first);
     for (const char* command : kCommands) {
-      if (word == command) return line.find('{') == std::string::npos;
+      if (word == command) return line.find('{') == std::string_view::npos;
     }
     return false;
   }

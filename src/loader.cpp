@@ -27,7 +27,7 @@ struct FileDescriptor {
 
 // POSIX calls rather than a stream, so that every failure has its errno and a FIFO or a device is refused
 // instead of read forever (O_NONBLOCK keeps the open of a FIFO without a writer from hanging).
-std::string readFile(const std::string& path) {
+FileText readFile(const std::string& path) {
   const FileDescriptor file{open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
   if (file.fd < 0) throw Error("cannot open '" + path + "': " + std::strerror(errno));
   struct stat st;
@@ -38,10 +38,11 @@ std::string readFile(const std::string& path) {
     throw Error("cannot read '" + path + "': it is larger than " + std::to_string(kMaxSceneFileBytes >> 20) +
                 " MiB, the most a scene file may have");
   }
-  std::string text(size_t(st.st_size), '\0');
+  const size_t size = size_t(st.st_size);
+  FileText text(size);
   size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = read(file.fd, &text[done], text.size() - done);
+  while (done < size) {
+    const ssize_t n = read(file.fd, text.data() + done, size - done);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) throw Error("cannot read '" + path + "': " + std::strerror(errno));
     if (n == 0) break;  // the file shrank since fstat: parse what is there
@@ -59,7 +60,7 @@ std::string extension(const std::string& path) {
   return ext;
 }
 
-SceneLanguage sceneLanguage(const std::string& path, const std::string& text) {
+SceneLanguage sceneLanguage(const std::string& path, std::string_view text) {
   const std::string ext = extension(path);
   if (ext == "pov") return SceneLanguage::Pov;
   if (ext == "cli") return SceneLanguage::Cli;
@@ -67,7 +68,8 @@ SceneLanguage sceneLanguage(const std::string& path, const std::string& text) {
 }
 
 SceneDesc loadScene(const std::string& path, int threads) {
-  const std::string text = readFile(path);
+  const FileText file = readFile(path);
+  const std::string_view text = file.view();
   return sceneLanguage(path, text) == SceneLanguage::Cli ? parseCli(text, path) : parsePov(text, path, threads);
 }
 

@@ -482,7 +482,7 @@ std::optional<SceneDesc> parseParts(std::string_view text, const std::string& fi
 
 }  // namespace
 
-SceneDesc parsePov(const std::string& text, const std::string& file, int threads) {
+SceneDesc parsePov(std::string_view text, const std::string& file, int threads) {
   const size_t room = objectRoom(text.size());
   if (room == 0) return PovParser(text, file, 0).parse();  // a small text: nothing to reserve or to share out
   // In parts only with memory to spare for as many objects as the text could hold: where memory is short, the

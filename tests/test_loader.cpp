@@ -86,7 +86,7 @@ std::string errorOf(const std::string& path) {
 TEST_CASE("loader: readFile returns the bytes exactly, NUL bytes included") {
   const test::TempDir dir;
   const std::string bytes("a\0b\r\n\xFF", 6);
-  CHECK(readFile(dir.write("x.pov", bytes)) == bytes);
+  CHECK(readFile(dir.write("x.pov", bytes)).view() == bytes);
 }
 
 TEST_CASE("loader: files that are not scenes are refused with one reason") {

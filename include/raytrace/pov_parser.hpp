@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "raytrace/scene_desc.hpp"
 
@@ -9,6 +10,6 @@ namespace rt {
 
 // Parses a whole .pov text. Throws ParseError ("file:line:col: error: …") at the first problem. A large text
 // is read in parts on up to `threads` threads; the result is the same for any number.
-SceneDesc parsePov(const std::string& text, const std::string& file, int threads = 1);
+SceneDesc parsePov(std::string_view text, const std::string& file, int threads = 1);
 
 }  // namespace rt
