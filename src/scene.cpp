@@ -5,9 +5,9 @@
 #include <type_traits>
 
 #include "raytrace/box.hpp"
-#include "raytrace/parallel.hpp"
 #include "raytrace/cone.hpp"
 #include "raytrace/cylinder.hpp"
+#include "raytrace/parallel.hpp"
 #include "raytrace/plane.hpp"
 #include "raytrace/sphere.hpp"
 #include "raytrace/transformed.hpp"

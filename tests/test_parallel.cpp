@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <vector>
 
@@ -15,6 +16,20 @@ TEST_CASE("parallelFor runs every index exactly once, whatever the thread count"
     for (const auto& r : runs) REQUIRE(r == 1);
   }
   rt::parallelFor(0, 4, [](int) { FAIL("no index to run"); });
+}
+
+TEST_CASE("parallelForBlocks hands out whole blocks and a short last one", "[parallel]") {
+  for (int threads : {1, 2, 3}) {
+    CAPTURE(threads);
+    std::vector<std::atomic<int>> blocks(3);
+    rt::parallelForBlocks(10, 4, threads, [&](size_t begin, size_t end) {
+      REQUIRE(begin % 4 == 0);
+      REQUIRE(end == std::min<size_t>(begin + 4, 10));
+      ++blocks[begin / 4];
+    });
+    for (const auto& b : blocks) REQUIRE(b == 1);
+  }
+  rt::parallelForBlocks(0, 4, 2, [](size_t, size_t) { FAIL("no item to run"); });
 }
 
 TEST_CASE("parallelFor rethrows the first failure once all threads have stopped", "[parallel]") {

@@ -1,4 +1,4 @@
-// Work spread over threads: the renderer's tiles and the PNG encoder's segments.
+// Work spread over threads: the renderer's tiles, the PNG encoder's segments, a large scene's objects.
 #pragma once
 
 #include <cstddef>
