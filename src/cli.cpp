@@ -14,6 +14,7 @@
 #include "raytrace/error.hpp"
 #include "raytrace/image.hpp"
 #include "raytrace/loader.hpp"
+#include "raytrace/parallel.hpp"
 #include "raytrace/precision.hpp"
 #include "raytrace/ray_tree.hpp"
 #include "raytrace/render.hpp"
@@ -374,6 +375,8 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     inv.x = parseInt(positional[3], "pixel x", 0, inv.width - 1);
     inv.y = parseInt(positional[4], "pixel y", 0, inv.height - 1);
   }
+  // The image commands render on every thread: the helper threads start while the file is read.
+  if (command->numbers == 2) startHelpers(options.threads);
   Stopwatch watch;
   inv.scene = loadScene(positional[0], options.threads);
   inv.loadSeconds = watch.lap();

@@ -492,7 +492,9 @@ SceneDesc parsePov(std::string_view text, const std::string& file, int threads) 
   const std::uint64_t mostObjects = text.size() / kMinObjectBytes;
   if (text.size() >= 2 * kMinPartBytes && threads > 1 &&
       memoryShortage("", mostObjects * kBytesPerObject, available).empty()) {
-    // One part per thread: the fewer the parts, the fewer objects are copied into the first one's list.
+    // One part per thread: the fewer the parts, the fewer objects are copied into the first one's list. The
+    // helper threads start while the cuts are found.
+    startHelpers(threads);
     const int count = int(std::min<size_t>(size_t(threads), text.size() / kMinPartBytes));
     if (auto scene = parseParts(text, file, partStarts(text, count), threads)) return std::move(*scene);
   }

@@ -1,11 +1,14 @@
 # An image command must write exactly IMAGE, a PNG of the requested size, into its working directory: raycast
 # and render write output.png, render of a .cli scene the file its `write` names.
 #   -DBIN=<raytrace> -DCOMMAND=<raycast|render> -DSCENE=<scene> -DWIDTH=… -DHEIGHT=… -DIMAGE=<name.png>
-#   -DDIR=<empty working directory to use>
+#   -DDIR=<empty working directory to use> [-DFLAGS=<more arguments>] [-DULIMIT=<ulimit arguments>]
 file(REMOVE_RECURSE "${DIR}")
 file(MAKE_DIRECTORY "${DIR}")
-execute_process(COMMAND "${BIN}" ${COMMAND} "${SCENE}" ${WIDTH} ${HEIGHT} WORKING_DIRECTORY "${DIR}"
-                RESULT_VARIABLE status ERROR_VARIABLE err)
+set(command "${BIN}" ${COMMAND} "${SCENE}" ${WIDTH} ${HEIGHT} ${FLAGS})
+if(ULIMIT)
+  set(command sh -c "ulimit ${ULIMIT} && exec \"$0\" \"$@\"" ${command})
+endif()
+execute_process(COMMAND ${command} WORKING_DIRECTORY "${DIR}" RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "${COMMAND} failed (${status}):\n${err}")
 endif()

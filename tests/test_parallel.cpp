@@ -18,6 +18,13 @@ TEST_CASE("parallelFor runs every index exactly once, whatever the thread count"
   rt::parallelFor(0, 4, [](int) { FAIL("no index to run"); });
 }
 
+TEST_CASE("a parallelFor inside a task runs every index of its own exactly once", "[parallel]") {
+  rt::startHelpers(3);
+  std::vector<std::atomic<int>> runs(40 * 25);
+  rt::parallelFor(40, 3, [&](int i) { rt::parallelFor(25, 3, [&](int j) { ++runs[size_t(i * 25 + j)]; }); });
+  for (const auto& r : runs) REQUIRE(r == 1);
+}
+
 TEST_CASE("parallelForBlocks hands out whole blocks and a short last one", "[parallel]") {
   for (int threads : {1, 2, 3}) {
     CAPTURE(threads);

@@ -16,6 +16,11 @@ constexpr std::uint64_t kMaxSceneFileBytes = std::uint64_t(1) << 30;
 // structure. Measured: a million spheres peak at 0.89 GB including the 155 MB file text, so 1 KiB has room.
 constexpr std::uint64_t kBytesPerObject = 1024;
 
+// Address space a thread besides the main one may take: its stack (8 MiB, the usual default) and the 64 MiB
+// that glibc reserves for the malloc arena of each thread that allocates. A thread is started only where this
+// much is available, so that under a tight ulimit -v the work runs on fewer threads instead of failing.
+constexpr std::uint64_t kBytesPerThread = std::uint64_t(72) << 20;
+
 // Bytes this process can still take without pushing the machine into swap or the OOM killer: the kernel's
 // MemAvailable, or less if an address-space limit (ulimit -v) leaves less.
 std::uint64_t availableMemory();
