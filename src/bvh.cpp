@@ -499,14 +499,10 @@ void Bvh<T>::blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t ac
         continue;
       }
       for (uint32_t o = node.first[k]; o < node.first[k] + node.count[k]; ++o) {
-        for (uint32_t mask = childRays[k] & active; mask; mask &= mask - 1) {
-          const int i = __builtin_ctz(mask);
-          if (objects_[o]->intersect(rays[i], ranges[i])) {
-            blockers[i] = objects_[o];
-            active &= ~(1u << i);
-            if (!active) return;
-          }
-        }
+        const uint32_t met = objects_[o]->blocking(rays, ranges, childRays[k] & active);
+        for (uint32_t mask = met; mask; mask &= mask - 1) blockers[__builtin_ctz(mask)] = objects_[o];
+        active &= ~met;
+        if (!active) return;
       }
     }
   }

@@ -21,12 +21,15 @@ template <class T> bool textbookRoots(const Vec3<T>& f, const Vec3<T>& d, T radi
   return true;
 }
 
+template <class T> bool Sphere<T>::roots(const Ray<T>& ray, T& t0, T& t1) const {
+  const Vec3<T> f = ray.origin - center_;
+  return robust_ ? robustRoots(f, ray.dir, radius_, t0, t1) : textbookRoots(f, ray.dir, radius_, t0, t1);
+}
+
 template <class T>
 std::optional<Hit<T>> Sphere<T>::intersect(const Ray<T>& ray, Interval<T> range) const {
-  const Vec3<T> f = ray.origin - center_;
   T t0, t1;
-  const bool roots = robust_ ? robustRoots(f, ray.dir, radius_, t0, t1) : textbookRoots(f, ray.dir, radius_, t0, t1);
-  if (!roots) return std::nullopt;
+  if (!roots(ray, t0, t1)) return std::nullopt;
   T t = t0;
   if (!range.surrounds(t)) {
     t = t1;
@@ -38,6 +41,18 @@ std::optional<Hit<T>> Sphere<T>::intersect(const Ray<T>& ray, Interval<T> range)
   hit.point = center_ + radius_ * hit.normal;  // re-projected onto the surface (stability.md F4)
   hit.object = this;
   return hit;
+}
+
+// A shadow ray needs no hit record: only whether a root lies inside its segment.
+template <class T>
+uint32_t Sphere<T>::blocking(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const {
+  uint32_t blocked = 0;
+  for (uint32_t mask = open; mask; mask &= mask - 1) {
+    const int i = __builtin_ctz(mask);
+    T t0, t1;
+    if (roots(rays[i], t0, t1) && (ranges[i].surrounds(t0) || ranges[i].surrounds(t1))) blocked |= 1u << i;
+  }
+  return blocked;
 }
 
 template <class T> Vec3<T> Sphere<T>::normalAt(const Vec3<T>& point, const Hit<T>&) const {

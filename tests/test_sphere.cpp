@@ -167,3 +167,29 @@ TEST_CASE("sphere: far from a small sphere, the robust test stays exact in float
   const auto textbook = sphere<float>({0, 0, 0}, 1, SphereMethod::Textbook).intersect(ray, {});
   CHECK((!textbook || std::abs(textbook->t - 9999.0f) > 0.5f));
 }
+
+TEMPLATE_TEST_CASE("sphere: the shadow test of a packet blocks exactly the rays intersect() hits", "", float, double) {
+  BOTH_FORMULAS;
+  constexpr int kRays = 32;
+  const auto s = sphere<T>({1, -2, 0.5}, T(1.5), method);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> pos(-4, 4), unit(0, 1);
+  int blocked = 0;
+  for (int round = 0; round < 300; ++round) {
+    CAPTURE(round);
+    rt::Ray<T> rays[kRays];
+    rt::Interval<T> ranges[kRays];
+    for (int i = 0; i < kRays; ++i) {
+      // Aimed near the sphere, from inside it or outside, with segments that end before, inside or past it.
+      const glm::dvec3 o(pos(rng), pos(rng), pos(rng));
+      const glm::dvec3 target = glm::dvec3(1, -2, 0.5) + 0.6 * glm::dvec3(pos(rng), pos(rng), pos(rng));
+      rays[i] = {rt::Vec3<T>(o), rt::Vec3<T>(glm::normalize(target - o))};
+      ranges[i] = {T(unit(rng) < 0.2 ? unit(rng) : 0), T(unit(rng) < 0.7 ? 8 * unit(rng) : 1e30)};
+    }
+    const uint32_t open = uint32_t(rng());
+    const uint32_t mine = s.blocking(rays, ranges, open);
+    CHECK(mine == s.rt::Object<T>::blocking(rays, ranges, open));  // intersect() ray by ray
+    blocked += __builtin_popcount(mine);
+  }
+  CHECK(blocked > 1000);  // the sweep really has rays of both kinds
+}

@@ -21,11 +21,13 @@ template <class T> class Object {
   // surface (re-projected, not just ray.at(t)) and `normal` is the unit outward normal at it.
   virtual std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const = 0;
 
-  // The tests of a packet of n rays that are scanned object by object rather than through a hierarchy
-  // (Scene): one call per object and packet, which a shape whose test is a few operations (the plane) answers
-  // in a loop the processor pipelines. closerHits: best[i] becomes this object's hit on rays[i] when one lies
-  // strictly inside `range` and strictly before best[i]; an equal t keeps the earlier object. blocking: the
-  // rays among `open` that this object meets strictly inside ranges[i], as a bit mask.
+  // The tests of a packet of rays, one call per object and packet: a shape whose test is a few operations
+  // answers them in a loop the processor pipelines, without a call per ray. closerHits, for the objects
+  // scanned in file order rather than through a hierarchy (Scene): best[i] becomes this object's hit on
+  // rays[i] when one lies strictly inside `range` and strictly before best[i]; an equal t keeps the earlier
+  // object. blocking, for shadow rays, in the scan and in the hierarchy's leaves: the rays among `open` that
+  // this object meets strictly inside ranges[i], as a bit mask (a sphere skips the hit record they would not
+  // use).
   virtual void closerHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const {
     for (int i = 0; i < n; ++i) {
       if (auto hit = intersect(rays[i], {range.min, best[i] ? best[i]->t : range.max})) best[i] = hit;
