@@ -375,7 +375,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     inv.x = parseInt(positional[3], "pixel x", 0, inv.width - 1);
     inv.y = parseInt(positional[4], "pixel y", 0, inv.height - 1);
   }
-  // The image commands render on every thread: the helper threads start while the file is read.
+  // The image commands render on all their threads: the helpers start while the file is read.
   if (command->numbers == 2) startHelpers(options.threads);
   Stopwatch watch;
   inv.scene = loadScene(positional[0], options.threads);

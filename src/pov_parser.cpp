@@ -494,8 +494,8 @@ SceneDesc parsePov(std::string_view text, const std::string& file, int threads) 
       memoryShortage("", mostObjects * kBytesPerObject, available).empty()) {
     // One part per thread: the fewer the parts, the fewer objects are copied into the first one's list. The
     // helper threads start while the cuts are found.
-    startHelpers(threads);
     const int count = int(std::min<size_t>(size_t(threads), text.size() / kMinPartBytes));
+    startHelpers(count);
     if (auto scene = parseParts(text, file, partStarts(text, count), threads)) return std::move(*scene);
   }
   // Room only where memory allows, as parseObject()'s checks would.
