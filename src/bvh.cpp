@@ -92,8 +92,11 @@ template <class T> class BinaryBuilder {
     const Vec3<T> extent = centres.max - centres.min;
     const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     const T binScale = T(kBins) / extent[axis];
+    // Near the top of T's range a centroid or the extent overflows to ∞, and the bin's position becomes ∞·0,
+    // a NaN: it is clamped into the bins before it is made an int, which a NaN or ∞ would make undefined.
     const auto binOf = [&](uint32_t object) {
-      return std::min(kBins - 1, int((centroids_[object][axis] - centres.min[axis]) * binScale));
+      const T x = (centroids_[object][axis] - centres.min[axis]) * binScale;
+      return x > T(0) ? int(std::min(x, T(kBins - 1))) : 0;
     };
     double bestCost = std::numeric_limits<double>::infinity();
     int bestSplit = 0;
