@@ -78,7 +78,7 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
   objects_.resize(n);
   // Unbounded objects (planes, or boxes overflowing T) have no box to put in a hierarchy; they are always
   // tested in turn.
-  std::vector<char> finite(n);
+  std::vector<char> finite(n);  // not vector<bool>, whose neighbouring entries share words the threads write
   parallelForBlocks(n, kObjectBlock, threads, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       const int id = int(i) + 1;
