@@ -14,6 +14,7 @@ of medians, their ratio POV-Ray / ours, and the median of the ratios of the inte
 
 import argparse
 import os
+import re
 import shutil
 import statistics
 import subprocess
@@ -34,6 +35,18 @@ def wall(cmd, cwd):
     if done.returncode != 0:
         sys.exit("failed: %s\n%s" % (" ".join(cmd), done.stderr.decode(errors="replace")))
     return seconds
+
+
+def stolen_ms():
+    """Milliseconds the hypervisor has so far kept this virtual machine's CPUs from running while they had work
+    (the "steal" column of /proc/stat, summed over CPUs, in clock ticks of 10 ms as a rule); 0 where the
+    kernel does not count it. Time stolen during a run is time the run waited for no fault of its own."""
+    try:
+        with open("/proc/stat") as f:
+            ticks = sum(int(line.split()[8]) for line in f if re.match(r"cpu\d", line))
+    except (OSError, IndexError, ValueError):
+        return 0.0
+    return ticks * 1000.0 / os.sysconf("SC_CLK_TCK")
 
 
 def arguments(doc, runs, runs_help):

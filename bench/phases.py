@@ -7,7 +7,7 @@ The scenes of ../shared/bench are regenerated as compare_povray.py does. For eac
 and on two alternate, the order swapped every round. Printed for each step (loading the file, building the
 scene and its hierarchy, tracing, encoding and writing the PNG, their sum, and the whole process from start
 to exit as the shell sees it): the median and, in brackets, the fastest run on each thread count, and the
-ratio of the medians.
+ratio of the medians. Last, the median time the hypervisor stole from the machine's CPUs during a run.
 """
 
 import re
@@ -16,21 +16,25 @@ import subprocess
 import sys
 import time
 
-from compare_povray import arguments, prepare
+from compare_povray import arguments, prepare, stolen_ms
 
 STEPS = ("load", "build", "trace", "png", "total")
+STOLEN = len(STEPS) + 1  # in what steps() returns, after the whole process
 LINE = re.compile(r"raytrace: " + ", ".join(r"%s ([0-9.]+) ms" % s for s in STEPS))
 
 
 def steps(command, cwd):
-    """The milliseconds of each step and of the whole process; exits if the command fails."""
+    """The milliseconds of each step, of the whole process, and stolen from the machine meanwhile
+    (stolen_ms); exits if the command fails."""
+    steal = stolen_ms()
     start = time.perf_counter()
     done = subprocess.run(command, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     process = (time.perf_counter() - start) * 1000
+    steal = stolen_ms() - steal
     match = LINE.search(done.stderr)
     if done.returncode != 0 or not match:
         sys.exit("failed: %s\n%s" % (" ".join(command), done.stderr))
-    return [float(v) for v in match.groups()] + [process]
+    return [float(v) for v in match.groups()] + [process, steal]
 
 
 def main():
@@ -56,7 +60,8 @@ def main():
             a, b = statistics.median(one), statistics.median(two)
             ratio = "%.2f×" % (a / b) if a and b else "–"  # a step under 0.05 ms shows as 0.0
             print("| %s | %.1f (%.1f) | %.1f (%.1f) | %s |" % (name, a, min(one), b, min(two), ratio), flush=True)
-
+        print("| stolen by the host | %.0f | %.0f | |" % tuple(statistics.median(t[STOLEN] for t in times[n])
+                                                          for n in (1, 2)))
 
 if __name__ == "__main__":
     main()

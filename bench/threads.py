@@ -7,15 +7,28 @@ The scenes of ../shared/bench are regenerated as compare_povray.py does. For eac
 3x3 supersampling, runs on one thread and on two alternate, the order swapped every round. Printed for each:
 the ratio of the fastest runs (outside load on a shared machine only ever adds time, so it disturbs these
 least), of the medians, and the median of the ratios of the pairs run back to back (which follows a load that
-drifts); and, from `--stats`, the ratio of the fastest tracing steps alone.
+drifts); from `--stats`, the ratio of the fastest tracing steps alone; the median time the hypervisor stole
+from the machine's CPUs during a run on each thread count (a 2-core virtual machine here loses from none to
+over half of it), and the ratio of the medians over the runs it stole nothing from.
 """
 
 import statistics
 
 from compare_povray import arguments, prepare
-from phases import STEPS, steps
+from phases import STEPS, STOLEN, steps
 
-TRACE = STEPS.index("trace")  # in what steps() returns; the whole process comes last
+TRACE = STEPS.index("trace")  # in what steps() returns
+PROCESS = len(STEPS)
+
+
+def unstolen(runs):
+    """The ratio of the medians over the runs from which the host stole nothing, and how many there were of
+    each; a dash below 3 of either."""
+    quiet = {n: [t[PROCESS] for t in runs[n] if t[STOLEN] == 0] for n in (1, 2)}
+    if min(len(quiet[1]), len(quiet[2])) < 3:
+        return "– (%d, %d runs)" % (len(quiet[1]), len(quiet[2]))
+    return "%.2f× (%d, %d runs)" % (statistics.median(quiet[1]) / statistics.median(quiet[2]), len(quiet[1]),
+                                    len(quiet[2]))
 
 
 def main():
@@ -23,8 +36,8 @@ def main():
     width, height, binary, work = prepare(args)
 
     print("| scene | AA | 1 thread s | 2 threads s | ratio of fastest | of medians | per pair "
-          "| tracing alone, fastest |")
-    print("|---|---|---|---|---|---|---|---|")
+          "| tracing alone, fastest | stolen, ms | of medians, nothing stolen |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for scene in args.scenes:
         for name, aa in (("none", []), ("3x3", ["-ss=3"])):
             runs = {1: [], 2: []}
@@ -33,12 +46,13 @@ def main():
                     command = [binary, "render", scene + ".pov", width, height, "--threads", str(threads), "--quiet",
                                "--stats"]
                     runs[threads].append(steps(command + aa, work))
-            one, two = [t[-1] / 1000 for t in runs[1]], [t[-1] / 1000 for t in runs[2]]
+            one, two = [t[PROCESS] / 1000 for t in runs[1]], [t[PROCESS] / 1000 for t in runs[2]]
             pairs = statistics.median(a / b for a, b in zip(one, two))
             trace = min(t[TRACE] for t in runs[1]) / min(t[TRACE] for t in runs[2])
-            print("| %s | %s | %.3f | %.3f | %.2f× | %.2f× | %.2f× | %.2f× |" % (
+            stolen = "%.0f / %.0f" % tuple(statistics.median(t[STOLEN] for t in runs[n]) for n in (1, 2))
+            print("| %s | %s | %.3f | %.3f | %.2f× | %.2f× | %.2f× | %.2f× | %s | %s |" % (
                 scene, name, statistics.median(one), statistics.median(two), min(one) / min(two),
-                statistics.median(one) / statistics.median(two), pairs, trace), flush=True)
+                statistics.median(one) / statistics.median(two), pairs, trace, stolen, unstolen(runs)), flush=True)
     print("\n%s×%s, medians of %d interleaved runs on each thread count." % (width, height, args.runs))
 
 
