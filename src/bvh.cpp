@@ -108,24 +108,31 @@ template <class T> class BinaryBuilder {
         binBox[b].expand(boxes_[order_[i]]);
         ++binCount[b];
       }
-      // rightCost[s] is A·N of bins s..end, the right side of a split before bin s.
-      std::array<double, kBins> rightCost{};
+      // The sweeps look only at the bins that got objects. Most nodes are small and fill a few bins, and a
+      // boundary between empty bins splits the objects as the first boundary after the last full bin before
+      // it does, at the same cost: the split chosen is the one a sweep over all bins would choose.
+      std::array<int, kBins> full;
+      int size = 0;
+      for (int b = 0; b < kBins; ++b) {
+        if (binCount[b]) full[size++] = b;
+      }
+      // rightCost[j] is A·N of full bins j..size − 1, the right side of a split before full bin j.
+      std::array<double, kBins> rightCost;
       Aabb<T> right;
       uint32_t rightCount = 0;
-      for (int s = kBins - 1; s > 0; --s) {
-        right.expand(binBox[s]);
-        rightCount += binCount[s];
-        rightCost[s] = rightCount ? area(right) * rightCount : 0.0;
+      for (int j = size - 1; j > 0; --j) {
+        right.expand(binBox[full[j]]);
+        rightCount += binCount[full[j]];
+        rightCost[j] = area(right) * rightCount;
       }
       Aabb<T> left;
       uint32_t leftCount = 0;
       const double nodeArea = area(box);
-      for (int s = 1; s < kBins; ++s) {
-        left.expand(binBox[s - 1]);
-        leftCount += binCount[s - 1];
-        if (leftCount == 0 || leftCount == count) continue;
-        const double cost = kTraversalCost + (area(left) * leftCount + rightCost[s]) / nodeArea;
-        if (cost < bestCost) bestCost = cost, bestSplit = s;
+      for (int j = 1; j < size; ++j) {
+        left.expand(binBox[full[j - 1]]);
+        leftCount += binCount[full[j - 1]];
+        const double cost = kTraversalCost + (area(left) * leftCount + rightCost[j]) / nodeArea;
+        if (cost < bestCost) bestCost = cost, bestSplit = full[j - 1] + 1;
       }
     }
     if (count <= kMaxLeaf && !(bestCost < double(count))) return;

@@ -324,3 +324,25 @@ TEST_CASE("printbvh shows each node's box and the object ids in the leaves", "[b
         "  Leaf: {-1.0020 -1.0020 -1.0020} - {1.0020 1.0020 1.0020} objects 1\n"
         "  Leaf: {8.9980 -1.0020 -1.0020} - {11.0020 1.0020 1.0020} objects 2\n");
 }
+
+// Clusters with gaps of many empty bins between them. The build sweeps only the bins that got objects; the
+// tree must be the one a sweep over every bin boundary gives (checked against that build, which this printout
+// comes from): each gap is split where the surface area heuristic is lowest, and no cluster is cut.
+TEST_CASE("splits fall in the gaps between clusters, as a sweep over every bin boundary puts them", "[bvh]") {
+  rt::SceneDesc desc;
+  for (const double x : {0, 3, 4, 10, 30, 31, 33, 60, 61}) desc.objects.push_back(sphereDesc({x, 0, 0}, 1));
+  const rt::Scene<double> scene(desc, {rt::Precision::Double, rt::SphereMethod::Robust}, Hierarchy::Always);
+  std::ostringstream out;
+  scene.hierarchy()->print(out);
+  CHECK(out.str() ==
+        "BVH: 9 objects, 3 nodes of up to 4 children, 6 leaves, largest leaf 2\n"
+        "Node 0: {-1.0020 -1.0020 -1.0020} - {62.0020 1.0020 1.0020}\n"
+        "  Leaf: {58.9980 -1.0020 -1.0020} - {62.0020 1.0020 1.0020} objects 8 9\n"
+        "  Leaf: {8.9980 -1.0020 -1.0020} - {11.0020 1.0020 1.0020} objects 4\n"
+        "  Node 1: {-1.0020 -1.0020 -1.0020} - {5.0020 1.0020 1.0020}\n"
+        "    Leaf: {-1.0020 -1.0020 -1.0020} - {1.0020 1.0020 1.0020} objects 1\n"
+        "    Leaf: {1.9980 -1.0020 -1.0020} - {5.0020 1.0020 1.0020} objects 2 3\n"
+        "  Node 2: {28.9980 -1.0020 -1.0020} - {34.0020 1.0020 1.0020}\n"
+        "    Leaf: {28.9980 -1.0020 -1.0020} - {32.0020 1.0020 1.0020} objects 5 6\n"
+        "    Leaf: {31.9980 -1.0020 -1.0020} - {34.0020 1.0020 1.0020} objects 7\n");
+}
