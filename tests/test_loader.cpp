@@ -1,3 +1,4 @@
+#include <random>
 #include <sstream>
 #include <string>
 
@@ -87,6 +88,16 @@ TEST_CASE("loader: readFile returns the bytes exactly, NUL bytes included") {
   const test::TempDir dir;
   const std::string bytes("a\0b\r\n\xFF", 6);
   CHECK(readFile(dir.write("x.pov", bytes)).view() == bytes);
+}
+
+// Blocks of 1 MiB read on several threads land where they belong: every byte differs from its neighbours'.
+TEST_CASE("loader: a file read on several threads is the same as read on one") {
+  const test::TempDir dir;
+  std::mt19937 rng(3);
+  std::string bytes(3 * (size_t(1) << 20) + 12345, '\0');
+  for (char& c : bytes) c = char(rng());
+  const std::string path = dir.write("big.pov", bytes);
+  for (const int threads : {1, 2, 3}) CHECK(readFile(path, threads).view() == bytes);
 }
 
 TEST_CASE("loader: files that are not scenes are refused with one reason") {

@@ -26,8 +26,9 @@ class FileText {
 };
 
 // The whole file. Throws Error with a one-line reason for a missing, unreadable or non-regular file (a
-// directory, a FIFO, a device) and for one larger than kMaxSceneFileBytes (limits.hpp).
-FileText readFile(const std::string& path);
+// directory, a FIFO, a device) and for one larger than kMaxSceneFileBytes (limits.hpp). A large file is read on
+// `threads` threads at once.
+FileText readFile(const std::string& path, int threads = 1);
 
 // A file name's extension in lower case without the dot: "png" for "a/b.PNG", "" for "a.d/b" or ".png" (a
 // hidden file's name is no extension).
