@@ -4,6 +4,7 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -64,6 +65,14 @@ template <class T> void requireSame(const std::optional<rt::Hit<T>>& a, const st
 // a scan finds.
 template <class T> rt::Arithmetic robustArithmetic() {
   return {std::is_same_v<T, float> ? rt::Precision::Float : rt::Precision::Double, rt::SphereMethod::Robust};
+}
+
+// What printbvh shows of the hierarchy of `desc` in double.
+std::string printedTree(const rt::SceneDesc& desc) {
+  const rt::Scene<double> scene(desc, robustArithmetic<double>(), Hierarchy::Always);
+  std::ostringstream out;
+  scene.hierarchy()->print(out);
+  return out.str();
 }
 
 }  // namespace
@@ -315,10 +324,7 @@ TEST_CASE("printbvh shows each node's box and the object ids in the leaves", "[b
   rt::SceneDesc desc;
   desc.objects.push_back(sphereDesc({0, 0, 0}, 1));
   desc.objects.push_back(sphereDesc({10, 0, 0}, 1));
-  const rt::Scene<double> scene(desc, {rt::Precision::Double, rt::SphereMethod::Robust}, Hierarchy::Always);
-  std::ostringstream out;
-  scene.hierarchy()->print(out);
-  CHECK(out.str() ==
+  CHECK(printedTree(desc) ==
         "BVH: 2 objects, 1 nodes of up to 4 children, 2 leaves, largest leaf 1\n"
         "Node 0: {-1.0020 -1.0020 -1.0020} - {11.0020 1.0020 1.0020}\n"
         "  Leaf: {-1.0020 -1.0020 -1.0020} - {1.0020 1.0020 1.0020} objects 1\n"
@@ -331,10 +337,7 @@ TEST_CASE("printbvh shows each node's box and the object ids in the leaves", "[b
 TEST_CASE("splits fall in the gaps between clusters, as a sweep over every bin boundary puts them", "[bvh]") {
   rt::SceneDesc desc;
   for (const double x : {0, 3, 4, 10, 30, 31, 33, 60, 61}) desc.objects.push_back(sphereDesc({x, 0, 0}, 1));
-  const rt::Scene<double> scene(desc, {rt::Precision::Double, rt::SphereMethod::Robust}, Hierarchy::Always);
-  std::ostringstream out;
-  scene.hierarchy()->print(out);
-  CHECK(out.str() ==
+  CHECK(printedTree(desc) ==
         "BVH: 9 objects, 3 nodes of up to 4 children, 6 leaves, largest leaf 2\n"
         "Node 0: {-1.0020 -1.0020 -1.0020} - {62.0020 1.0020 1.0020}\n"
         "  Leaf: {58.9980 -1.0020 -1.0020} - {62.0020 1.0020 1.0020} objects 8 9\n"
