@@ -63,5 +63,6 @@ def main():
         print("| stolen by the host | %.0f | %.0f | |" % tuple(statistics.median(t[STOLEN] for t in times[n])
                                                           for n in (1, 2)))
 
+
 if __name__ == "__main__":
     main()

@@ -90,7 +90,8 @@ TEST_CASE("loader: readFile returns the bytes exactly, NUL bytes included") {
   CHECK(readFile(dir.write("x.pov", bytes)).view() == bytes);
 }
 
-// Blocks of 1 MiB read on several threads land where they belong: every byte differs from its neighbours'.
+// Blocks of 1 MiB read on several threads land where they belong: of random bytes, a block out of place or
+// a short one would not match.
 TEST_CASE("loader: a file read on several threads is the same as read on one") {
   const test::TempDir dir;
   std::mt19937 rng(3);
