@@ -509,9 +509,7 @@ void Bvh<T>::blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t ac
         continue;
       }
       for (uint32_t o = node.first[k]; o < node.first[k] + node.count[k]; ++o) {
-        const uint32_t met = objects_[o]->blocking(rays, ranges, childRays[k] & active);
-        for (uint32_t mask = met; mask; mask &= mask - 1) blockers[__builtin_ctz(mask)] = objects_[o];
-        active &= ~met;
+        active &= ~objects_[o]->block(rays, ranges, childRays[k] & active, blockers);
         if (!active) return;
       }
     }

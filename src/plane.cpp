@@ -15,7 +15,7 @@ template <class T>
 void Plane<T>::closerHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const {
   for (int i = 0; i < n; ++i) {
     const T t = distanceAlong(rays[i]);
-    if (range.min < t && t < (best[i] ? best[i]->t : range.max)) best[i] = hitAt(rays[i], t);
+    if (Interval<T>{range.min, best[i] ? best[i]->t : range.max}.surrounds(t)) best[i] = hitAt(rays[i], t);
   }
 }
 

@@ -145,15 +145,10 @@ void Scene<T>::occluded(const Ray<T>* rays, const Interval<T>* ranges, int n, bo
   uint32_t open = (uint32_t(1) << n) - 1;  // the rays that nothing blocks so far
   // The cached blocker first, then the unbounded objects in file order, then the hierarchy: each ray's
   // blocker is the first that meets it.
-  const auto test = [&](const Object<T>* object) {
-    const uint32_t met = object->blocking(rays, ranges, open);
-    for (uint32_t mask = met; mask; mask &= mask - 1) blockers[__builtin_ctz(mask)] = object;
-    open &= ~met;
-  };
-  if (*lastBlocker) test(*lastBlocker);
+  if (*lastBlocker) open &= ~(*lastBlocker)->block(rays, ranges, open, blockers);
   for (const Object<T>* object : scanned_) {
     if (!open) break;
-    test(object);
+    open &= ~object->block(rays, ranges, open, blockers);
   }
   if (open && hierarchy_) hierarchy_->blockers(rays, ranges, open, blockers);
   for (int i = 0; i < n; ++i) {

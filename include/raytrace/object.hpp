@@ -41,6 +41,12 @@ template <class T> class Object {
     }
     return blocked;
   }
+  // blocking(), with this object made the blocker of each ray it meets; returns those rays.
+  uint32_t block(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open, const Object** blockers) const {
+    const uint32_t met = blocking(rays, ranges, open);
+    for (uint32_t mask = met; mask; mask &= mask - 1) blockers[__builtin_ctz(mask)] = this;
+    return met;
+  }
 
   // The outward normal at `point`, a point on the surface at or next to `hit`: the course tier takes a
   // transformed object's normal where its world hit point maps back to (Transformed). A sphere computes it
