@@ -43,7 +43,7 @@ def side_by_side(command, cwd):
     start = time.perf_counter()
     copies = [subprocess.Popen(command, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
               for _ in range(2)]
-    if any([copy.wait() for copy in copies]):
+    if any([copy.wait() for copy in copies]):  # a list, so that both are waited for
         sys.exit("failed: %s" % " ".join(command))
     return time.perf_counter() - start
 

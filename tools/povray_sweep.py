@@ -32,7 +32,7 @@ POVREF = os.path.join(ROOT, "..", "shared", "tools", "povref")
 # Our flags for `render`, and povref's for the same model; seed s uses entry s mod 3. Not `-fresnel`: povref's
 # emulation of it lets POV-Ray add an unweighted mirror ray wherever a ray reflects totally inside glass (its
 # README: 1.3 % of the official checkerbox image off by more than 8/255).
-VARIANTS = [("plain", [], []), ("beers", ["-beers"], ["--beers"]), ("ss3", ["-ss=3"], ["--aa", "3"])]
+VARIANTS = [([], []), (["-beers"], ["--beers"]), (["-ss=3"], ["--aa", "3"])]
 
 
 def vector(values):
@@ -55,7 +55,8 @@ def shape(kind, rng):
         return "sphere { %s, %.3f" % (vector(centre), radius), math.dist(centre, [0, 0, 0]) + radius
     if kind == "box":
         low, high = [rng.uniform(-1.5, -0.3) for _ in range(3)], [rng.uniform(0.3, 1.5) for _ in range(3)]
-        return "box { %s, %s" % (vector(low), vector(high)), math.dist([max(-a, b) for a, b in zip(low, high)], [0] * 3)
+        corner = [max(-a, b) for a, b in zip(low, high)]
+        return "box { %s, %s" % (vector(low), vector(high)), math.dist(corner, [0] * 3)
     if kind in ("cone", "cylinder"):
         half = rng.uniform(0.5, 1.5)
         axis = [half * x for x in unit([rng.uniform(-1, 1) for _ in range(3)])]
@@ -63,11 +64,10 @@ def shape(kind, rng):
         if kind == "cylinder":
             radius = rng.uniform(0.3, 1.0)
             return "cylinder { %s, %s, %.3f" % (vector(base), vector(axis), radius), math.hypot(half, radius)
-        wide, narrow = rng.uniform(0.5, 1.5), rng.choice([0.0, rng.uniform(0.1, 0.8)])
-        if rng.random() < 0.5:
-            wide, narrow = narrow, wide
-        return ("cone { %s, %.3f, %s, %.3f" % (vector(base), wide, vector(axis), narrow),
-                math.hypot(half, max(wide, narrow)))
+        radii = [rng.uniform(0.5, 1.5), rng.choice([0.0, rng.uniform(0.1, 0.8)])]  # a point at either end, or none
+        rng.shuffle(radii)
+        opening = "cone { %s, %.3f, %s, %.3f" % (vector(base), radii[0], vector(axis), radii[1])
+        return opening, math.hypot(half, max(radii))
     corners = [[rng.uniform(-2, 2), rng.uniform(-2, 2), rng.uniform(-1, 1)] for _ in range(3)]
     return "triangle { %s, %s, %s" % tuple(vector(c) for c in corners), max(math.dist(c, [0] * 3) for c in corners)
 
@@ -87,7 +87,7 @@ def material(kind, rng):
 
 
 def transforms(rng):
-    """1-4 random steps and the factor by which they can grow a shape's radius, and how far they move it."""
+    """1-4 random steps, the most they can grow a shape's radius by, and the farthest they can move it."""
     steps, grow, moved = [], 1.0, 0.0
     for _ in range(rng.randint(1, 4)):
         kind = rng.choice(["scale", "rotate", "rotate", "translate"])
@@ -109,7 +109,8 @@ def transforms(rng):
 
 def scene(seed):
     rng = random.Random(seed)
-    distance, azimuth, elevation = rng.uniform(12, 18), math.radians(rng.uniform(-40, 40)), math.radians(rng.uniform(-5, 30))
+    distance = rng.uniform(12, 18)
+    azimuth, elevation = math.radians(rng.uniform(-40, 40)), math.radians(rng.uniform(-5, 30))
     location = [distance * math.cos(elevation) * math.sin(azimuth), distance * math.sin(elevation),
                 distance * math.cos(elevation) * math.cos(azimuth)]
     look_at = [rng.uniform(-1, 1) for _ in range(3)]
@@ -191,7 +192,7 @@ def main():
         os.makedirs(folder, exist_ok=True)
         with open(os.path.join(folder, "scene.pov"), "w") as f:
             f.write(scene(seed))
-        _, ours, theirs = VARIANTS[seed % len(VARIANTS)]
+        ours, theirs = VARIANTS[seed % len(VARIANTS)]
         run([binary, "raycast", "scene.pov", width, height], folder)
         shutil.move(os.path.join(folder, "output.png"), os.path.join(folder, "ours_flat.png"))
         run(povref + ["scene.pov", width, height, "povray_flat.png", "--model", "course", "--mode", "flat"], folder)
