@@ -59,6 +59,7 @@ def main():
         for name, aa in (("none", []), ("3x3", ["-ss=3"])):
             runs, both = {1: [], 2: []}, []
             for r in range(args.runs):
+                # 1 and 2 threads, and 0 for two one-thread runs at once (the machine's ceiling).
                 for threads in (1, 2, 0) if r % 2 == 0 else (0, 2, 1):
                     command = [binary, "render", scene + ".pov", width, height, "--threads", str(threads or 1),
                                "--quiet", "--stats"] + aa
