@@ -5,11 +5,11 @@
 #include <random>
 #include <vector>
 
-#include "raytrace/bvh.hpp"
-#include "raytrace/camera.hpp"
-#include "raytrace/scene.hpp"
-#include "raytrace/spawn.hpp"
-#include "raytrace/sphere.hpp"
+#include "raytrace/accel/bvh.hpp"
+#include "raytrace/render/camera.hpp"
+#include "raytrace/accel/scene.hpp"
+#include "raytrace/geometry/spawn.hpp"
+#include "raytrace/shapes/sphere.hpp"
 
 namespace {
 

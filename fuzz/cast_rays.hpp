@@ -3,9 +3,9 @@
 // sanitizers too. Scene construction may still refuse the scene with a ParseError.
 #pragma once
 
-#include "raytrace/camera.hpp"
-#include "raytrace/precision.hpp"
-#include "raytrace/scene.hpp"
+#include "raytrace/render/camera.hpp"
+#include "raytrace/scene/arithmetic.hpp"
+#include "raytrace/accel/scene.hpp"
 
 namespace rt::fuzz {
 

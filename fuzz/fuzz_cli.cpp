@@ -5,8 +5,8 @@
 #include <string>
 
 #include "cast_rays.hpp"
-#include "raytrace/cli_parser.hpp"
-#include "raytrace/error.hpp"
+#include "raytrace/parse/cs3451_parser.hpp"
+#include "raytrace/util/error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {

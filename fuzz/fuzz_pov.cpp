@@ -5,8 +5,8 @@
 #include <string>
 
 #include "cast_rays.hpp"
-#include "raytrace/error.hpp"
-#include "raytrace/pov_parser.hpp"
+#include "raytrace/util/error.hpp"
+#include "raytrace/parse/pov_parser.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {

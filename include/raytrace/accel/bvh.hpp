@@ -1,0 +1,99 @@
+// Bounding volume hierarchy over the bounded objects of a scene (csc473-course.md §c.13; the build is the
+// binned SAH of Wald, "On fast Construction of SAH-based Bounding Volume Hierarchies", 2007).
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <algorithm>
+#include <ostream>
+#include <vector>
+
+#include "raytrace/shapes/object.hpp"
+
+namespace rt {
+
+// Whether a scene puts its bounded objects into a hierarchy (--hierarchy). Auto builds one from
+// kHierarchyMinObjects bounded objects on, where it starts to pay (measured with raytrace_bench).
+enum class Hierarchy { Auto, Always, Never };
+constexpr size_t kHierarchyMinObjects = 8;
+
+// The far distance is scaled up by 1 + 2γ₃ so that rounding never rejects a box the exact ray enters before
+// tMax (Ize, "Robust BVH Ray Traversal", JCGT 2013). Scaling by a positive constant commutes with min, so it is
+// applied once, to the smallest far distance.
+template <class T> constexpr T kFarScale = T(1) + T(2) * (T(3) * std::numeric_limits<T>::epsilon()) /
+                                                      (T(1) - T(3) * std::numeric_limits<T>::epsilon());
+
+template <class T> class Bvh {
+ public:
+  static constexpr int kWidth = 4;  // children per node, tested together in the lanes of a SIMD register
+  // Rays per packet: a packet's rays go down the tree together (Wald et al., "Interactive Rendering with
+  // Coherent Ray Tracing", 2001), each tested against the nodes it enters. The tests of a packet's rays are
+  // independent: they share wide registers and overlap in the core.
+  static constexpr int kPacket = 16;
+
+  // A node of the flattened 4-wide tree (Wald et al., "Getting Rid of Packets", 2008; Dammertz et al.,
+  // "Shallow Bounding Volume Hierarchies", 2008). Child k < size is a leaf holding
+  // objects_[first[k], first[k] + count[k]) when count[k] > 0, else the node nodes_[first[k]].
+  struct Node {
+    T lo[3][kWidth], hi[3][kWidth];  // [axis][child]
+    uint32_t first[kWidth], count[kWidth];
+    int size = 0;  // children in use
+
+    Aabb<T> box(int k) const {
+      return {{lo[0][k], lo[1][k], lo[2][k]}, {hi[0][k], hi[1][k], hi[2][k]}};
+    }
+  };
+
+  // A packet laid out for the node test (bvh.cpp): each of ray i's values repeated kWidth times, once per
+  // child, so that a SIMD register holds the values of one or more whole rays. tMax[i] is where ray i stops,
+  // invDir[a][i] is 1/d.
+  struct Packet {
+    alignas(64) T origin[3][kPacket][kWidth];
+    alignas(64) T invDir[3][kPacket][kWidth];
+    alignas(64) T tMax[kPacket][kWidth];
+
+    void set(int i, const Ray<T>& ray, T max) {
+      for (int a = 0; a < 3; ++a) std::fill_n(origin[a][i], kWidth, ray.origin[a]);
+      for (int a = 0; a < 3; ++a) std::fill_n(invDir[a][i], kWidth, T(1) / ray.dir[a]);
+      std::fill_n(tMax[i], kWidth, max);
+    }
+  };
+
+  // Which children of `node` the rays whose bits are set in `rays` enter within [tMin, tMax[i]]: bit i of
+  // childRays[k] is set when ray i enters child k, and childEntry[k] is the nearest of their entry distances
+  // (+∞ when none enters). The slab test (Kay & Kajiya 1986), for all children at once and for as many rays
+  // at once as the widest SIMD registers of the processor hold. A NaN from 0·∞ (origin on a slab plane, ray
+  // parallel to it) either leaves the bounds unchanged or rejects a ray lying in a face plane of the box,
+  // which cannot reach the objects: they lie strictly inside their padded boxes (paddedBounds in bvh.cpp).
+  static void entries(const Node& node, const Packet& packet, T tMin, uint32_t rays, uint32_t (&childRays)[kWidth],
+                      T (&childEntry)[kWidth]);
+  // The implementations of entries() this processor can run, widest SIMD first; entries() uses the first.
+  using Kernel = void (*)(const Node&, const Packet&, T, uint32_t, uint32_t (&)[kWidth], T (&)[kWidth]);
+  static const std::vector<Kernel>& kernels();
+
+  // Builds over `objects`, all of which must have bounds(), in O(n log n): a binary tree by the binned
+  // surface area heuristic, then collapsed to 4 children per node. The tree is the same for any number of
+  // `threads`.
+  explicit Bvh(const std::vector<const Object<T>*>& objects, int threads = 1);
+
+  // The two queries, for a packet of n ≤ kPacket rays (one ray is a packet of one); each ray gets the answer
+  // it would get alone. best[i] becomes the closest hit of rays[i] strictly inside `range`, or stays when
+  // nothing is closer; equal t resolve to the lower object id, so the answer is the one a scan in file order
+  // gives (Scene::closestHits). blockers[i] becomes an object with a hit strictly inside ranges[i] (the
+  // any-hit query), for the rays whose bit is set in `active`; the others are left as they are.
+  void closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const;
+  void blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active, const Object<T>** blockers) const;
+
+  const std::vector<Node>& nodes() const { return nodes_; }
+  const std::vector<const Object<T>*>& objects() const { return objects_; }
+
+  // The tree, one child per line, indented by depth: boxes, and object ids in the leaves.
+  void print(std::ostream& out) const;
+
+ private:
+  std::vector<Node> nodes_;               // nodes_[0] is the root; empty when there are no objects
+  std::vector<const Object<T>*> objects_;  // in leaf order
+};
+
+}  // namespace rt

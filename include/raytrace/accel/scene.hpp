@@ -1,0 +1,62 @@
+// The renderable scene at one precision: objects, lights and the two ray queries every ray kind uses.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "raytrace/accel/bvh.hpp"
+#include "raytrace/shapes/object.hpp"
+#include "raytrace/scene/arithmetic.hpp"
+#include "raytrace/scene/description.hpp"
+
+namespace rt {
+
+template <class T> struct Light {
+  Vec3<T> position;
+  Color color;
+};
+
+template <class T> class Scene {
+ public:
+  // `arithmetic` must be resolved (no Auto) and match T; see chooseArithmetic(). `threads` build the hierarchy;
+  // the scene is the same for any number.
+  Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy hierarchy = Hierarchy::Auto, int threads = 1);
+
+  // The closest hit strictly inside `range` over all objects. Equal t resolve to the object that comes first
+  // in the file, so results never depend on traversal order (stability.md F13).
+  std::optional<Hit<T>> closestHit(const Ray<T>& ray, Interval<T> range) const;
+  // Whether anything at all lies strictly inside `range`: the any-hit query of shadow rays. `lastBlocker`, when
+  // given, is the object that blocked the previous shadow ray toward the same light, tested first (neighbouring
+  // shadow rays are mostly blocked by the same object: the shadow cache of Haines & Greenberg, "The Light
+  // Buffer", 1986), and receives the blocker of this one. The answer is the same with or without it.
+  bool occluded(const Ray<T>& ray, Interval<T> range, const Object<T>** lastBlocker = nullptr) const;
+
+  // The same two queries for a packet of n ≤ Bvh<T>::kPacket coherent rays (bvh.hpp), each answered exactly as
+  // the one-ray query answers it: hits[i] = closestHit(rays[i], range); blocked[i] = occluded(rays[i],
+  // ranges[i], lastBlocker).
+  void closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* hits) const;
+  void occluded(const Ray<T>* rays, const Interval<T>* ranges, int n, bool* blocked,
+                const Object<T>** lastBlocker) const;
+
+  const SceneDesc& desc() const { return desc_; }
+  const Arithmetic& arithmetic() const { return arithmetic_; }
+  const std::vector<Light<T>>& lights() const { return lights_; }
+  const std::vector<std::unique_ptr<Object<T>>>& objects() const { return objects_; }
+  // The hierarchy over the bounded objects, or nothing when every object is tested in turn.
+  const std::optional<Bvh<T>>& hierarchy() const { return hierarchy_; }
+
+ private:
+  // The point a hit reports: the shape's own, re-projected onto the surface, except in the course tier, which
+  // takes o + t·d as its reference does (precision.hpp).
+  Vec3<T> hitPoint(const Ray<T>& ray, const Hit<T>& hit) const;
+
+  const SceneDesc& desc_;
+  Arithmetic arithmetic_;
+  std::vector<Light<T>> lights_;
+  std::vector<std::unique_ptr<Object<T>>> objects_;
+  std::vector<const Object<T>*> scanned_;  // tested one by one in file order: planes, or all without hierarchy
+  std::optional<Bvh<T>> hierarchy_;
+};
+
+}  // namespace rt

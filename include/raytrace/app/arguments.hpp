@@ -1,0 +1,16 @@
+// The command line's words turned into values: whole numbers in a range, and the flags of RenderOptions.
+#pragma once
+
+#include <string>
+
+#include "raytrace/render/renderer.hpp"
+
+namespace rt {
+
+// `s` as a whole number in [lo, hi], or an Error naming `what`.
+int parseInt(const std::string& s, const char* what, int lo, int hi);
+
+// `options` with one flag (`-fresnel`, `--depth=3`, ...) applied, or an Error for an unknown or bad flag.
+RenderOptions parseFlag(const std::string& flag, RenderOptions options);
+
+}  // namespace rt

@@ -1,0 +1,66 @@
+// Images in linear float colour and in the 8 bits a PNG file holds, and their safe writing as PNG files.
+#pragma once
+
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+#include "raytrace/geometry/math.hpp"
+#include "raytrace/scene/description.hpp"
+
+namespace rt {
+
+class Image {
+ public:
+  // Throws Error, before taking any memory, when the machine lacks the memory for the image (limits.hpp).
+  Image(int width, int height);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // Pixel (x, y) with y growing upward, as the course numbers pixels (§a.0).
+  Color& at(int x, int y) { return pixels_[size_t(height_ - 1 - y) * width_ + x]; }
+  const Color& at(int x, int y) const { return pixels_[size_t(height_ - 1 - y) * width_ + x]; }
+
+ private:
+  struct Free {
+    void operator()(Color* p) const { std::free(p); }
+  };
+  int width_, height_;
+  // Top row first, as PNG stores them; all black to start with. From calloc, whose large blocks are fresh
+  // zero pages: nothing is written until the render threads write their own pixels. Filling a vector
+  // would write every page first, on one thread (7 ms at 1280×960).
+  std::unique_ptr<Color[], Free> pixels_;
+};
+
+// 8-bit RGB pixels, three bytes each, top row first: what a PNG file holds. renderRgb8 writes its tiles straight
+// into one, so that no float image is kept: at 1280×960 that would be 14.7 MB more to fault in (3600 pages)
+// and a pass of its own to convert.
+class Rgb8Image {
+ public:
+  // Throws Error, before taking any memory, when the machine lacks the memory for the image (limits.hpp).
+  Rgb8Image(int width, int height);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // The first of the three bytes of pixel (x, y), y growing upward as in Image.
+  unsigned char* at(int x, int y) { return bytes_.get() + (size_t(height_ - 1 - y) * width_ + x) * 3; }
+  const unsigned char* data() const { return bytes_.get(); }
+
+ private:
+  int width_, height_;
+  std::unique_ptr<unsigned char[]> bytes_;  // left unset: whoever makes the image writes every byte
+};
+
+// One colour channel to a byte: clamp to [0,1], then round (course §a.0) or truncate (.cli §A.4).
+unsigned char toByte(float c, Conventions::ToByte mode);
+// toByte() of `count` channels in a row, into `out`.
+void toBytes(const float* in, size_t count, unsigned char* out, Conventions::ToByte mode);
+
+// Writes the image as PNG at `path` without ever leaving a partial file there: it is written beside the
+// target under a temporary name and renamed over it only once complete. `threads` compress in parallel; the
+// file is the same for any number. Throws Error on failure.
+void writePng(const Rgb8Image& image, const std::string& path, int threads = 1);
+// The same for a float image, each channel converted by toByte().
+void writePng(const Image& image, const std::string& path, Conventions::ToByte mode, int threads = 1);
+
+}  // namespace rt

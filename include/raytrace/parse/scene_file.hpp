@@ -1,0 +1,44 @@
+// Reading a scene file from disk in whichever language it is written.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "raytrace/scene/description.hpp"
+
+namespace rt {
+
+// A file's bytes, in memory of their own.
+class FileText {
+ public:
+  // Room for `capacity` bytes, none of them set: zero-filling a large file's memory before reading over it
+  // would take a third as long as the read itself.
+  explicit FileText(size_t capacity) : bytes_(new char[capacity]) {}
+
+  char* data() { return bytes_.get(); }
+  void resize(size_t size) { size_ = size; }  // at most the capacity
+  std::string_view view() const { return {bytes_.get(), size_}; }
+
+ private:
+  std::unique_ptr<char[]> bytes_;
+  size_t size_ = 0;
+};
+
+// The whole file. Throws Error with a one-line reason for a missing, unreadable or non-regular file (a
+// directory, a FIFO, a device) and for one larger than kMaxSceneFileBytes (limits.hpp). A large file is read on
+// `threads` threads at once.
+FileText readFile(const std::string& path, int threads = 1);
+
+// A file name's extension in lower case without the dot: "png" for "a/b.PNG", "" for "a.d/b" or ".png" (a
+// hidden file's name is no extension).
+std::string extension(const std::string& path);
+
+// The language of a scene file: from its extension (.pov, .cli, any case) when it has one of those, otherwise
+// from its text (looksLikeCli), with the POV subset as the fallback.
+SceneLanguage sceneLanguage(const std::string& path, std::string_view text);
+
+// Reads and parses a scene in its language (sceneLanguage), a large POV file on up to `threads` threads.
+SceneDesc loadScene(const std::string& path, int threads = 1);
+
+}  // namespace rt

@@ -1,0 +1,41 @@
+// The course camera (csc473-course.md §d): a ray from `location` through the image plane spanned by `right`
+// and `up` at unit distance along the viewing direction. Pixel (x, y) has y growing upward.
+#pragma once
+
+#include "raytrace/geometry/ray.hpp"
+#include "raytrace/scene/description.hpp"
+
+namespace rt {
+
+template <class T> class Camera {
+ public:
+  Camera(const CameraDesc& desc, int width, int height);
+
+  // The eye ray through a point of the image given in pixel units from the lower-left image corner:
+  // d = Us·right + Vs·up + l̂ with Us = −½ + px/w, Vs = −½ + py/h (lecture 2 via §d); right and up are used as
+  // given, so `right` carries the aspect ratio and nothing is re-orthogonalized. (Inline: a ray returned
+  // through memory and copied on would be read back before its stores settle, once per sample.)
+  Ray<T> ray(T px, T py) const {
+    const T us = T(-0.5) + px / T(width_);
+    const T vs = T(-0.5) + py / T(height_);
+    return Ray<T>{origin_, glm::normalize(us * right_ + vs * up_ + forward_)};
+  }
+  // The eye ray of pixel (x, y), through the pixel's own sample point (CameraDesc::pixelOffset).
+  Ray<T> pixelRay(int x, int y) const { return sampleRay(x, y, 0, 0, 1); }
+  // Sub-sample (i, j) of an n × n grid over pixel (x, y), centred on the pixel's sample point (§c.12: the
+  // course's centre offset ½ gives its Us = −½ + (x·n + i + ½)/(w·n)). n = 1 is the pixel's own ray.
+  Ray<T> sampleRay(int x, int y, int i, int j, int n) const {
+    return ray(T(x) + offset_.x + ((T(i) + T(0.5)) / T(n) - T(0.5)),
+               T(y) + offset_.y + ((T(j) + T(0.5)) / T(n) - T(0.5)));
+  }
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  Vec3<T> origin_, right_, up_, forward_;
+  glm::vec<2, T, glm::defaultp> offset_;
+  int width_, height_;
+};
+
+}  // namespace rt

@@ -1,0 +1,53 @@
+// The shading formulas of the course (csc473-course.md §c), each a pure function of unit vectors and the
+// material, so each can be checked by hand. The tracer (tracer.hpp) decides where they are applied.
+#pragma once
+
+#include <optional>
+
+#include "raytrace/scene/material.hpp"
+#include "raytrace/geometry/math.hpp"
+
+namespace rt {
+
+enum class Brdf { BlinnPhong, CookTorrance };
+
+// Vectors below are unit length: n the shading normal (on the viewer's side), v toward the viewer, l toward
+// the light. Every factor is finite for any unit input.
+
+// Blinn-Phong specular factor clamp(n·h, 0, 1)^p with h = normalize(l + v) (§c.1). A roughness above 1 makes
+// p = 2/roughness² − 2 negative, and 0^p infinite; such exponents are treated as 0.
+template <class T> float blinnPhongSpecular(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, float exponent);
+
+// Cook-Torrance with the GGX distribution, Smith-GGX shadowing and Schlick's Fresnel (§c.2), as the factor
+// D·G·F / (4·max(1/16, n·v)) that multiplies Lc·ks·C (the n·l of the sum cancels the one in the BRDF).
+template <class T>
+float cookTorranceSpecular(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, float roughness, float ior);
+
+// GGX's α = roughness² (§c.2), floored at kMinGgxAlpha: a perfect mirror has no finite D, and below this
+// (roughness 3e-4) the highlight is a single over-exposed pixel anyway. The floor keeps D ≤ 1/(πα²) finite.
+constexpr float kMinGgxAlpha = 1e-7f;
+float ggxAlpha(float roughness);
+
+// Schlick's approximation F0 + (1 − F0)(1 − cosθ)^5 with F0 = ((ior − 1)/(ior + 1))² (§c.5).
+float schlick(float cosTheta, float ior);
+
+// The mirror direction of incoming direction d about n (either orientation): d − 2(d·n)n (§c.3).
+template <class T> Vec3<T> reflectDirection(const Vec3<T>& d, const Vec3<T>& n);
+
+// Snell's law for incoming direction d at a surface with OUTWARD normal n (§c.4). Entering (d·n ≤ 0) bends by
+// 1/ior, leaving by ior about −n. Nothing on total internal reflection (negative radicand, stability.md F9).
+template <class T> std::optional<Vec3<T>> refractDirection(const Vec3<T>& d, const Vec3<T>& n, float ior);
+
+// Beer's law (§c.6): the fraction of each channel left after `distance` (possibly +∞) inside a medium of
+// pigment C, exp(−(1 − C)·0.15·distance).
+Color beerAttenuation(const Color& pigment, float distance);
+
+// How a hit's colour is split between its local shading and its two secondary rays (§c.5): local
+// (1−f)(1−k), reflection (1−f)k + fF, transmission f(1−F) for filter f, reflection k and Fresnel
+// reflectance F. When reflection does not mix (the .cli rule, cs3451 §A.4) local keeps (1−f) whole.
+struct Weights {
+  float local = 1, reflection = 0, transmission = 0;
+};
+Weights weights(const Material& m, float fresnel, bool reflectionMixes);
+
+}  // namespace rt

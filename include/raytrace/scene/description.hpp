@@ -1,0 +1,95 @@
+// A parsed scene: what the file says, in double precision, before any precision choice or acceleration.
+// Both scene languages (POV subset and .cli) produce this; Scene<T> (scene.hpp) is built from it.
+#pragma once
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "raytrace/util/error.hpp"
+#include "raytrace/scene/material.hpp"
+#include "raytrace/geometry/transform.hpp"
+
+namespace rt {
+
+struct CameraDesc {
+  glm::dvec3 location{0, 0, 0};
+  glm::dvec3 up{0, 1, 0};
+  glm::dvec3 right{1.33333, 0, 0};  // carries the aspect ratio; not normalized (§d)
+  glm::dvec3 lookAt{0, 0, -1};
+  // Where in a pixel the eye ray passes, in pixel units from the pixel's lower-left corner. The course
+  // uses the centre (§d); the .cli reference images need (0, 1) (cs3451-course.md §A.4).
+  glm::dvec2 pixelOffset{0.5, 0.5};
+  // .cli: `right` is written for a square image and is stretched by width/height when the image is made, so
+  // pixels stay square at any size and `fov` stays the vertical angle (cs3451-course.md §A.4 leaves this open).
+  bool rightFollowsImage = false;
+};
+
+struct LightDesc {
+  glm::dvec3 position{0};
+  Color color{1};
+};
+
+struct SphereDesc { glm::dvec3 center; double radius; };
+struct PlaneDesc { glm::dvec3 normal; double distance; };  // n·p = distance
+struct TriangleDesc { glm::dvec3 a, b, c; };
+struct BoxDesc { glm::dvec3 min, max; };
+struct ConeDesc { glm::dvec3 base; double baseRadius; glm::dvec3 cap; double capRadius; };
+struct CylinderDesc { glm::dvec3 base, cap; double radius; };  // capped at both ends
+
+using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc>;
+
+struct ObjectDesc {
+  ShapeDesc shape;
+  Material material;
+  Finish finish;  // POV: as written, for sceneinfo
+  SourceLoc loc;  // where the object starts, for messages
+  // The POV transforms as written (§c.10), in file order; a scene built in code gives its own the same way.
+  std::vector<TransformStep> transforms;
+
+  // The transforms composed in double. Made when asked, not stored: most objects have none, and the matrix
+  // would be a third of every object's description, to fill, copy and page in.
+  glm::dmat4 worldFromObject() const { return composeTransforms<double>(transforms); }
+};
+
+// How a scene language wants its pictures made: the conventions that reproduce each course's reference
+// images. They belong to the language, not to the renderer, so each parser fills them in once.
+struct Conventions {
+  Color background{0};
+  enum class ToByte { Round, Truncate } toByte = ToByte::Round;  // course: round(c·255); .cli: (int)(c·255)
+  bool clampEachBounce = false;  // .cli clamps every shade() result to [0,1] before it is weighted
+  bool reflectionMixes = true;   // course: local·(1−f)(1−k) + k·C·reflected; .cli: local + k·reflected
+  bool tintReflection = true;    // course multiplies reflected light by the pigment (§c.3)
+  int maxDepth = 5;              // deepest secondary ray (primary = 0) that is traced (§c.9)
+  bool shadeDeepest = true;      // .cli: a ray at maxDepth that hits returns black (cs3451 §A.4)
+};
+
+enum class SceneLanguage { Pov, Cli };
+
+struct WriteDesc;
+
+struct SceneDesc {
+  std::string file;
+  SceneLanguage language = SceneLanguage::Pov;  // only reports that quote the file's own terms look at it
+  CameraDesc camera;
+  std::vector<LightDesc> lights;
+  std::vector<ObjectDesc> objects;
+  Conventions conventions;
+  std::vector<std::string> warnings;  // "file:line:col: warning: …", printed before any output
+  // The images the file itself asks for, in order (.cli `write`); empty for POV, whose `render` writes
+  // output.png. Each holds the scene as it stood at that command.
+  std::vector<WriteDesc> writes;
+};
+
+struct WriteDesc {
+  std::string path;  // as written, relative to the working directory
+  SourceLoc loc;
+  SceneDesc scene;   // its own `writes` are empty
+};
+
+// The type name the course prints ("Sphere", "Plane", …).
+const char* shapeName(const ShapeDesc& shape);
+
+}  // namespace rt

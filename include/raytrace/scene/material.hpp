@@ -1,0 +1,32 @@
+// Surface appearance as shading reads it, whichever scene language described it.
+#pragma once
+
+#include "raytrace/geometry/math.hpp"
+
+namespace rt {
+
+// A POV-Ray `finish` block as written (csc473-course.md §b): what `sceneinfo` prints, and what the POV parser
+// makes a Material of.
+struct Finish {
+  double ambient = 0, diffuse = 0, specular = 0;
+  double roughness = 1;  // course default; Blinn-Phong exponent 2/roughness² − 2 (§c.1)
+  double reflection = 0;
+  double refraction = 0;  // parsed and ignored, as in the course: the pigment's filter drives refraction (§c.4)
+  double ior = 1;
+};
+
+// What shading reads of a surface, in either scene language. Every object carries one, so it holds nothing
+// else: the finish as written stays in the scene's description (ObjectDesc).
+struct Material {
+  Color pigment{0};   // C
+  float filter = 0;   // f, the fraction of light transmitted (rgbf's fourth component)
+  Color ambient{0};   // per-term colours: POV ka·C, kd·C, ks·C; .cli Ca, Cd, Cs
+  Color diffuse{0};
+  Color specular{0};
+  float exponent = 0;    // Blinn-Phong exponent: POV 2/roughness² − 2, .cli P
+  float roughness = 1;   // Cook-Torrance α = roughness² (§c.2)
+  float reflection = 0;  // POV `reflection`, .cli Krefl
+  float ior = 1;
+};
+
+}  // namespace rt

@@ -1,0 +1,70 @@
+// The abstract scene object: every shape answers one query, the closest intersection inside an open interval.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "raytrace/geometry/aabb.hpp"
+#include "raytrace/geometry/hit.hpp"
+#include "raytrace/geometry/interval.hpp"
+#include "raytrace/scene/material.hpp"
+#include "raytrace/geometry/ray.hpp"
+
+namespace rt {
+
+template <class T> class Object {
+ public:
+  Object(const Material& material, int id) : material_(material), id_(id) {}
+  virtual ~Object() = default;
+
+  // The closest intersection whose t lies strictly inside `range`, or nothing. On a hit, `point` lies on the
+  // surface (re-projected, not just ray.at(t)) and `normal` is the unit outward normal at it.
+  virtual std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const = 0;
+
+  // The tests of a packet of rays, one call per object and packet: a shape whose test is a few operations
+  // answers them in a loop the processor pipelines, without a call per ray. closerHits, for the objects
+  // scanned in file order rather than through a hierarchy (Scene): best[i] becomes this object's hit on
+  // rays[i] when one lies strictly inside `range` and strictly before best[i]; an equal t keeps the earlier
+  // object. blocking, for shadow rays, in the scan and in the hierarchy's leaves: the rays among `open` that
+  // this object meets strictly inside ranges[i], as a bit mask (a sphere skips the hit record they would not
+  // use).
+  virtual void closerHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const {
+    for (int i = 0; i < n; ++i) {
+      if (auto hit = intersect(rays[i], {range.min, best[i] ? best[i]->t : range.max})) best[i] = hit;
+    }
+  }
+  virtual uint32_t blocking(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const {
+    uint32_t blocked = 0;
+    for (uint32_t mask = open; mask; mask &= mask - 1) {
+      const int i = __builtin_ctz(mask);
+      if (intersect(rays[i], ranges[i])) blocked |= 1u << i;
+    }
+    return blocked;
+  }
+  // blocking(), with this object made the blocker of each ray it meets; returns those rays.
+  uint32_t block(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open, const Object** blockers) const {
+    const uint32_t met = blocking(rays, ranges, open);
+    for (uint32_t mask = met; mask; mask &= mask - 1) blockers[__builtin_ctz(mask)] = this;
+    return met;
+  }
+
+  // The outward normal at `point`, a point on the surface at or next to `hit`: the course tier takes a
+  // transformed object's normal where its world hit point maps back to (Transformed). A sphere computes it
+  // from the point, as the course's reference does; the other shapes keep the hit's, the same on a flat face.
+  virtual Vec3<T> normalAt(const Vec3<T>& point, const Hit<T>& hit) const {
+    static_cast<void>(point);
+    return hit.normal;
+  }
+
+  // World-space bounds, or nothing for unbounded shapes (planes), which stay outside any hierarchy.
+  virtual std::optional<Aabb<T>> bounds() const = 0;
+
+  const Material& material() const { return material_; }
+  int id() const { return id_; }  // 1-based position in the scene file, as printrays shows it
+
+ private:
+  Material material_;
+  int id_;
+};
+
+}  // namespace rt

@@ -1,0 +1,99 @@
+#include "raytrace/app/arguments.hpp"
+
+#include <cerrno>
+#include <cstdlib>
+#include <initializer_list>
+#include <utility>
+
+#include "raytrace/util/error.hpp"
+
+namespace rt {
+
+namespace {
+constexpr int kMaxThreads = 1024;
+}  // namespace
+
+int parseInt(const std::string& s, const char* what, int lo, int hi) {
+  errno = 0;
+  char* end = nullptr;
+  const long v = std::strtol(s.c_str(), &end, 10);
+  if (s.empty() || *end != '\0') {
+    throw Error(std::string(what) + " must be a whole number, found '" + s + "'");
+  }
+  // A number too long for a long (ERANGE) is still a whole number, just out of range.
+  if (errno == ERANGE || v < lo || v > hi) {
+    throw Error(std::string(what) + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
+                ", found " + s);
+  }
+  return int(v);
+}
+
+// The value of `--flag=value` among `names`, or an error listing them: "--flag must be a, b or c, found 'v'".
+namespace {
+
+template <class E>
+E choice(const char* flag, const std::string& value, std::initializer_list<std::pair<const char*, E>> names) {
+  std::string list;
+  size_t i = 0;
+  for (const auto& [name, e] : names) {
+    if (value == name) return e;
+    list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + std::string(name);
+    ++i;
+  }
+  throw Error(std::string(flag) + " must be " + list + ", found '" + value + "'");
+}
+
+}  // namespace
+
+RenderOptions parseFlag(const std::string& flag, RenderOptions o) {
+  const auto value = [&](const std::string& name) -> const char* {
+    return flag.rfind(name + "=", 0) == 0 ? flag.c_str() + name.size() + 1 : nullptr;
+  };
+  if (flag == "-sds") return o;  // the course's "use a hierarchy": ours decides per scene (Scene, Hierarchy)
+  if (const char* p = value("--precision")) {
+    o.arithmetic.precision = choice<Precision>("--precision", p,
+                                               {{"float", Precision::Float}, {"double", Precision::Double},
+                                                {"course", Precision::Course}, {"auto", Precision::Auto}});
+    return o;
+  }
+  if (const char* p = value("--sphere")) {
+    o.arithmetic.sphere = choice<SphereMethod>("--sphere", p,
+                                               {{"textbook", SphereMethod::Textbook},
+                                                {"robust", SphereMethod::Robust}, {"auto", SphereMethod::Auto}});
+    return o;
+  }
+  if (const char* p = value("--offset")) {
+    o.arithmetic.offset = choice<OffsetPolicy>(
+        "--offset", p,
+        {{"relative", OffsetPolicy::Relative}, {"course", OffsetPolicy::Course},
+         {"normal", OffsetPolicy::FixedNormal}, {"wb", OffsetPolicy::WaechterBinder}});
+    return o;
+  }
+  if (const char* p = value("--hierarchy")) {
+    o.hierarchy = choice<Hierarchy>("--hierarchy", p,
+                                    {{"auto", Hierarchy::Auto}, {"always", Hierarchy::Always},
+                                     {"never", Hierarchy::Never}});
+    return o;
+  }
+  if (const char* p = value("--depth")) {
+    o.depth = parseInt(p, "--depth", 0, 64);
+    return o;
+  }
+  if (const char* p = value("-ss")) {
+    o.samples = parseInt(p, "-ss", 1, 64);
+    return o;
+  }
+  if (const char* p = value("--threads")) {
+    o.threads = parseInt(p, "--threads", 1, kMaxThreads);
+    return o;
+  }
+  if (flag == "-altbrdf") o.brdf = Brdf::CookTorrance;
+  else if (flag == "-fresnel") o.fresnel = true;
+  else if (flag == "-beers") o.beers = true;
+  else if (flag == "-normals") o.normals = true;
+  else if (flag == "--quiet") o.progress = nullptr;
+  else throw Error("unknown option '" + flag + "' (see raytrace --help)");
+  return o;
+}
+
+}  // namespace rt

@@ -1,0 +1,58 @@
+// The commands that write images: raycast (Program 1) and render.
+#include <cstdio>
+#include <string>
+
+#include "raytrace/app/invocation.hpp"
+#include "raytrace/image/image.hpp"
+#include "raytrace/image/png.hpp"
+#include "raytrace/util/stopwatch.hpp"
+
+namespace rt {
+
+// Each pixel gets the pigment of the closest object, or the background (Program 1's ray cast).
+int raycast(const Invocation& inv, std::ostream&) {
+  Image image(inv.width, inv.height);
+  withScene(inv, [&](const auto& scene, const auto& camera) {
+    for (int y = 0; y < inv.height; ++y) {
+      for (int x = 0; x < inv.width; ++x) {
+        const auto hit = scene.closestHit(camera.pixelRay(x, y), {});
+        image.at(x, y) = hit ? hit->object->material().pigment : inv.scene.conventions.background;
+      }
+    }
+    return 0;
+  });
+  writePng(image, "output.png", inv.scene.conventions.toByte);
+  return 0;
+}
+
+// The Whitted render of Programs 2-4, written to output.png; a file that names its own images (.cli `write`)
+// gets each of them instead, in file order, each showing the scene as it stood at its command.
+int renderImage(const Invocation& inv, std::ostream&) {
+  RenderTimes times;
+  RenderOptions options = inv.options;
+  options.times = &times;
+  double png = 0;
+  const auto renderTo = [&](const SceneDesc& scene, const std::string& path) {
+    const Rgb8Image image = renderRgb8(scene, inv.width, inv.height, options);
+    Stopwatch watch;
+    writePng(image, path, options.threads);
+    png += watch.lap();
+  };
+  if (inv.scene.writes.empty()) renderTo(inv.scene, "output.png");
+  for (const WriteDesc& w : inv.scene.writes) renderTo(w.scene, w.path);
+  if (inv.stats) {
+    const auto ms = [](double seconds) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.1f ms", seconds * 1000);
+      return std::string(text);
+    };
+    *inv.stats << "raytrace: load " << ms(inv.loadSeconds) << ", build " << ms(times.build) << ", trace "
+               << ms(times.trace) << ", png " << ms(png) << ", total "
+               << ms(inv.loadSeconds + times.build + times.trace + png) << " (" << inv.width << "x" << inv.height
+               << ", " << options.samples * options.samples << (options.samples == 1 ? " eye ray" : " eye rays")
+               << " per pixel, " << options.threads << (options.threads == 1 ? " thread)\n" : " threads)\n");
+  }
+  return 0;
+}
+
+}  // namespace rt

@@ -1,0 +1,106 @@
+// The commands that print what the renderer sees: the scene as parsed, one pixel's rays, hits and colour, and
+// the hierarchy.
+#include <string>
+#include <vector>
+
+#include "raytrace/app/invocation.hpp"
+#include "raytrace/app/report.hpp"
+#include "raytrace/image/image.hpp"
+#include "raytrace/render/ray_tree.hpp"
+#include "raytrace/render/tracer.hpp"
+
+namespace rt {
+
+namespace {
+
+void printPixelRay(std::ostream& out, int x, int y, const glm::dvec3& origin, const glm::dvec3& dir) {
+  out << "Pixel: [" << x << ", " << y << "] Ray: " << braces(origin) << " -> " << braces(dir) << "\n";
+}
+
+// A colour as the course prints it, "(r, g, b)" in bytes (§a.0).
+std::string bytes(const Color& c, Conventions::ToByte mode) {
+  return "(" + std::to_string(toByte(c.r, mode)) + ", " + std::to_string(toByte(c.g, mode)) + ", " +
+         std::to_string(toByte(c.b, mode)) + ")";
+}
+
+}  // namespace
+
+// The pixel's shaded colour with its eye ray and first hit (§a.2); with -ss, the first sub-sample's ray.
+int pixelcolor(const Invocation& inv, std::ostream& out) {
+  return withScene(inv, [&](const auto& scene, const auto& camera) {
+    Tracer tracer(scene, inv.options);
+    std::vector<RayRecord> trees;
+    const Color color = tracer.pixel(camera, inv.x, inv.y, &trees);
+    const RayRecord& eye = trees.front();
+    printPixelRay(out, inv.x, inv.y, eye.origin, eye.dir);
+    if (!eye.hit) {
+      out << "No Hit\n";
+      return 0;
+    }
+    out << "T = " << fixed4(eye.t) << "\nObject Type: " << eye.objectType
+        << "\nBRDF: " << (inv.options.brdf == Brdf::BlinnPhong ? "Blinn-Phong" : "Cook-Torrance")
+        << "\nColor: " << bytes(color, inv.scene.conventions.toByte) << "\n";
+    return 0;
+  });
+}
+
+// Every ray the pixel's colour is made of: printrays (§a.3) or, decorated with shadow rays, pixeltrace (§a.9).
+int rayTrees(const Invocation& inv, std::ostream& out, bool decorated) {
+  return withScene(inv, [&](const auto& scene, const auto& camera) {
+    Tracer tracer(scene, inv.options);
+    std::vector<RayRecord> trees;
+    const Color color = tracer.pixel(camera, inv.x, inv.y, &trees);
+    printRayTrees(out, inv.x, inv.y, bytes(color, inv.scene.conventions.toByte), trees, decorated);
+    return 0;
+  });
+}
+int printrays(const Invocation& inv, std::ostream& out) { return rayTrees(inv, out, false); }
+int pixeltrace(const Invocation& inv, std::ostream& out) { return rayTrees(inv, out, true); }
+
+
+int sceneinfo(const Invocation& inv, std::ostream& out) {
+  printSceneInfo(out, inv.scene);
+  return 0;
+}
+
+int pixelray(const Invocation& inv, std::ostream& out) {
+  return withScene(inv, [&](const auto& scene, const auto& camera) {
+    (void)scene;
+    const auto ray = camera.pixelRay(inv.x, inv.y);
+    printPixelRay(out, inv.x, inv.y, glm::dvec3(ray.origin), glm::dvec3(ray.dir));
+    return 0;
+  });
+}
+
+int firsthit(const Invocation& inv, std::ostream& out) {
+  return withScene(inv, [&](const auto& scene, const auto& camera) {
+    const auto ray = camera.pixelRay(inv.x, inv.y);
+    printPixelRay(out, inv.x, inv.y, glm::dvec3(ray.origin), glm::dvec3(ray.dir));
+    const auto hit = scene.closestHit(ray, {});
+    if (!hit) {
+      out << "No Hit\n";
+      return 0;
+    }
+    const ObjectDesc& object = inv.scene.objects[size_t(hit->object->id() - 1)];
+    out << "T = " << fixed4(hit->t) << "\nObject Type: " << shapeName(object.shape)
+        << "\nColor: " << bare(hit->object->material().pigment) << "\n";
+    return 0;
+  });
+}
+
+// The hierarchy the scene's bounded objects get, printed whether or not renders would use it.
+int printbvh(const Invocation& inv, std::ostream& out) {
+  const Arithmetic arithmetic = chooseArithmetic(inv.scene, inv.options.arithmetic);
+  return withPrecision(arithmetic.precision, [&](auto tag) {
+    const Scene<decltype(tag)> scene(inv.scene, arithmetic, Hierarchy::Always);
+    const size_t bounded = scene.hierarchy()->objects().size();
+    out << scene.objects().size() << " objects: " << bounded << " bounded, "
+        << scene.objects().size() - bounded << " unbounded (tested one by one). Renders use the hierarchy from "
+        << kHierarchyMinObjects << " bounded objects on: " << (bounded >= kHierarchyMinObjects ? "yes" : "no")
+        << ".\n";
+    scene.hierarchy()->print(out);
+    return 0;
+  });
+}
+
+}  // namespace rt

@@ -1,0 +1,83 @@
+#include "raytrace/app/report.hpp"
+
+#include <cstdio>
+#include <type_traits>
+
+namespace rt {
+
+std::string fixed4(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4f", v);
+  return buf;
+}
+
+std::string bare(const glm::dvec3& v) { return fixed4(v.x) + " " + fixed4(v.y) + " " + fixed4(v.z); }
+std::string braces(const glm::dvec3& v) { return "{" + bare(v) + "}"; }
+
+const char* shapeName(const ShapeDesc& shape) {
+  static const char* const names[] = {"Sphere", "Plane", "Triangle", "Box", "Cone", "Cylinder"};
+  static_assert(std::variant_size_v<ShapeDesc> == 6);
+  return names[shape.index()];
+}
+
+namespace {
+
+void printShape(std::ostream& out, const ShapeDesc& shape) {
+  std::visit(
+      [&](const auto& s) {
+        using S = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<S, SphereDesc>) {
+          out << "- Center: " << braces(s.center) << "\n- Radius: " << fixed4(s.radius) << "\n";
+        } else if constexpr (std::is_same_v<S, PlaneDesc>) {
+          out << "- Normal: " << braces(s.normal) << "\n- Distance: " << fixed4(s.distance) << "\n";
+        } else if constexpr (std::is_same_v<S, TriangleDesc>) {
+          out << "- Vertices[0]: " << braces(s.a) << "\n- Vertices[1]: " << braces(s.b)
+              << "\n- Vertices[2]: " << braces(s.c) << "\n";
+        } else if constexpr (std::is_same_v<S, BoxDesc>) {
+          out << "- Min: " << braces(s.min) << "\n- Max: " << braces(s.max) << "\n";
+        } else if constexpr (std::is_same_v<S, ConeDesc>) {
+          out << "- Center 1: " << braces(s.base) << "\n- Radius 1: " << fixed4(s.baseRadius)
+              << "\n- Center 2: " << braces(s.cap) << "\n- Radius 2: " << fixed4(s.capRadius) << "\n";
+        } else {
+          out << "- Base: " << braces(s.base) << "\n- Cap: " << braces(s.cap) << "\n- Radius: " << fixed4(s.radius)
+              << "\n";
+        }
+      },
+      shape);
+}
+
+// The material in the file's own terms: POV's pigment and finish scalars (§a.1); a .cli `surface`'s colours,
+// which no scalar can stand for, with its power and reflection coefficient.
+void printMaterial(std::ostream& out, const ObjectDesc& o, SceneLanguage language) {
+  const Material& m = o.material;
+  if (language == SceneLanguage::Cli) {
+    out << "- Material:\n  - Ambient: " << braces(m.ambient) << "\n  - Diffuse: " << braces(m.diffuse)
+        << "\n  - Specular: " << braces(m.specular) << "\n  - Power: " << fixed4(m.exponent)
+        << "\n  - Reflection: " << fixed4(m.reflection) << "\n";
+    return;
+  }
+  out << "- Color: " << braces(m.pigment) << "\n- Material:\n  - Ambient: " << fixed4(o.finish.ambient)
+      << "\n  - Diffuse: " << fixed4(o.finish.diffuse) << "\n";
+}
+
+}  // namespace
+
+void printSceneInfo(std::ostream& out, const SceneDesc& scene) {
+  const CameraDesc& c = scene.camera;
+  out << "Camera:\n- Location: " << braces(c.location) << "\n- Up: " << braces(c.up) << "\n- Right: "
+      << braces(c.right) << "\n- Look at: " << braces(c.lookAt) << "\n\n---\n\n";
+  out << scene.lights.size() << " light(s)\n";
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const LightDesc& l = scene.lights[i];
+    out << "\nLight[" << i << "]:\n- Location: " << braces(l.position) << "\n- Color: " << braces(l.color) << "\n";
+  }
+  out << "\n---\n\n" << scene.objects.size() << " object(s)\n";
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const ObjectDesc& o = scene.objects[i];
+    out << "\nObject[" << i << "]:\n- Type: " << shapeName(o.shape) << "\n";
+    printShape(out, o.shape);
+    printMaterial(out, o, scene.language);
+  }
+}
+
+}  // namespace rt

@@ -1,0 +1,513 @@
+#include "raytrace/parse/pov_parser.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <new>
+#include <optional>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "raytrace/util/limits.hpp"
+#include "raytrace/util/parallel.hpp"
+#include "raytrace/parse/tokenizer.hpp"
+
+namespace rt {
+
+namespace {
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// Fewer bytes than an object takes in the files we know: the benchmark's spheres take 160, the course's
+// objects more (each has a pigment and a finish). A denser file just grows its array once or twice more.
+constexpr size_t kTypicalObjectBytes = 128;
+
+// The shortest an object can be written: `plane{<0,1,0>,0}`.
+constexpr size_t kMinObjectBytes = 16;
+
+// Texts of at least this size are large: worth a thread as a part of a file (about 2 ms of reading), and
+// worth reserving room for their objects.
+constexpr size_t kMinPartBytes = size_t(256) << 10;
+
+// The objects to reserve room for in a text of `bytes`: as many as a typical file of this size holds, so that a
+// large file does not copy its objects into ever larger arrays as it is read (pages are only taken once
+// objects fill them). A power of two, so that the array still doubles where parseObject() checks the memory
+// (powers of two): it never grows past a check that would have stopped it. None for a small text.
+size_t objectRoom(size_t bytes) {
+  if (bytes < kMinPartBytes) return 0;
+  size_t room = 1;
+  while (room < bytes / kTypicalObjectBytes) room *= 2;
+  return room;
+}
+
+class PovParser {
+ public:
+  // `text` is a whole file, or whole lines of one from line `firstLine` on, one of `parts` read at once.
+  // `room` objects are reserved (objectRoom(), where memory allows).
+  PovParser(std::string_view text, const std::string& file, size_t room, int firstLine = 1,
+            std::uint64_t parts = 1)
+      : tokens_(text, file, firstLine), current_(tokens_.next()), parts_(parts) {
+    scene_.file = file;
+    scene_.objects.reserve(room);
+  }
+
+  SceneDesc parse() {
+    statements();
+    if (cameras_ == 0) throw ParseError(peek().loc, "the scene has no camera");
+    return std::move(scene_);  // parse() is the parser's last act
+  }
+
+  // A part of a file: its statements, and how many of them were cameras.
+  struct Part {
+    SceneDesc scene;
+    int cameras;
+  };
+  Part part() {
+    statements();
+    return {std::move(scene_), cameras_};
+  }
+
+ private:
+  void statements() {
+    while (peek().kind != Token::Kind::End) {
+      const Token& t = next();
+      if (t.kind != Token::Kind::Word) {
+        throw ParseError(t.loc, "expected 'camera', 'light_source' or an object, found " + t.quoted());
+      }
+      if (t.text == "camera") {
+        parseCamera(t);
+        ++cameras_;
+      } else if (t.text == "light_source") {
+        parseLight(t);
+      } else if (t.text == "sphere" || t.text == "plane" || t.text == "triangle" || t.text == "box" ||
+                 t.text == "cone" || t.text == "cylinder") {
+        parseObject(t);
+      } else {
+        throw ParseError(t.loc, "unknown keyword " + t.quoted());
+      }
+    }
+  }
+
+  const Token& peek() const { return current_; }
+  // By value: the token after it replaces the lookahead, and a caller's `const Token&` keeps the value alive.
+  Token next() {
+    Token t = std::move(current_);
+    current_ = t.kind == Token::Kind::End ? t : tokens_.next();
+    return t;
+  }
+  bool isPunct(const Token& t, char c) const { return t.kind == Token::Kind::Punct && t.text[0] == c; }
+
+  // The context is a C string so that the message costs nothing until it is needed.
+  void expect(char c, const char* context) {
+    const Token& t = next();
+    if (!isPunct(t, c)) {
+      throw ParseError(t.loc, std::string("expected '") + c + "' " + context + ", found " + t.quoted());
+    }
+  }
+  void expect(char c, const std::string& context) { expect(c, context.c_str()); }
+
+  // `what` completes "expected a number for …", e.g. "the sphere radius". The messages here are put together
+  // only for an error: these run for every object, and the names are C strings so that they cost nothing.
+  double numberFor(const char* what) {
+    const Token& t = next();
+    if (t.kind != Token::Kind::Number) {
+      throw ParseError(t.loc, std::string("expected a number for ") + what + ", found " + t.quoted());
+    }
+    return t.number;
+  }
+  // The number after a keyword, e.g. `ambient 0.2`.
+  double numberAfter(const Token& keyword) {
+    const Token& t = next();
+    if (t.kind != Token::Kind::Number) {
+      throw ParseError(t.loc, "expected a number after " + keyword.quoted() + ", found " + t.quoted());
+    }
+    return t.number;
+  }
+
+  // `<a, b, …>` with between minN and maxN components.
+  // The components of a vector: at most four are ever wanted, and `size` counts all that were written.
+  struct Components {
+    std::array<double, 4> v{};
+    size_t size = 0;
+    double operator[](size_t i) const { return v[i]; }
+  };
+
+  // `<a, b, …>` with between minN and maxN (at most 4) components.
+  Components vector(int minN, int maxN, const char* what) {
+    const Token& open = next();
+    if (!isPunct(open, '<')) {
+      throw ParseError(open.loc, std::string("expected '<' to start ") + what + ", found " + open.quoted());
+    }
+    Components v;
+    for (;;) {
+      const Token& t = next();
+      if (t.kind != Token::Kind::Number) {
+        throw ParseError(t.loc, std::string("expected a number in ") + what + ", found " + t.quoted());
+      }
+      if (v.size < v.v.size()) v.v[v.size] = t.number;
+      ++v.size;
+      if (!isPunct(peek(), ',')) break;
+      next();
+    }
+    const Token& close = next();
+    if (!isPunct(close, '>')) {
+      throw ParseError(close.loc, std::string("expected ',' or '>' in ") + what + ", found " + close.quoted());
+    }
+    if (int(v.size) < minN || int(v.size) > maxN) {
+      const std::string want = minN == maxN ? std::to_string(minN) : std::to_string(minN) + " or " + std::to_string(maxN);
+      throw ParseError(close.loc, std::string(what) + " needs " + want + " components, found " + std::to_string(v.size));
+    }
+    return v;
+  }
+
+  glm::dvec3 vec3(const char* what) {
+    const auto v = vector(3, 3, what);
+    return {v[0], v[1], v[2]};
+  }
+
+  // [color|colour] rgb <r,g,b> | rgbf <r,g,b[,f]>; a missing filter is 0, as POV-Ray reads a 3-vector.
+  // POV-Ray 3.7 also reads `rgb <r,g,b,f>`, with the fourth value as the filter and a "suspicious
+  // expression" warning (marble2.pov relies on it); so do we.
+  void color(Color& rgb, float& filter, const std::string& owner) {
+    Token t = next();
+    if (t.kind == Token::Kind::Word && (t.text == "color" || t.text == "colour")) t = next();
+    if (t.kind != Token::Kind::Word || (t.text != "rgb" && t.text != "rgbf")) {
+      throw ParseError(t.loc, "expected 'rgb' or 'rgbf' in the " + owner + " colour, found " + t.quoted());
+    }
+    const SourceLoc at = peek().loc;
+    const auto v = vector(3, 4, t.text == "rgb" ? "an 'rgb' colour" : "an 'rgbf' colour");
+    if (t.text == "rgb" && v.size == 4) {
+      scene_.warnings.push_back(at.str() + ": warning: 'rgb' with 4 values; the fourth is read as the filter");
+    }
+    rgb = Color(float(v[0]), float(v[1]), float(v[2]));
+    filter = v.size == 4 ? float(v[3]) : 0.0f;
+    if (filter < 0 || filter > 1) throw ParseError(at, "filter must be between 0 and 1, found " + num(filter));
+  }
+
+  void parseCamera(const Token& keyword) {
+    expect('{', "after 'camera'");
+    CameraDesc& cam = scene_.camera;
+    for (;;) {
+      const Token& t = next();
+      if (isPunct(t, '}')) break;
+      if (t.kind == Token::Kind::End) throw ParseError(t.loc, unclosed("camera", keyword));
+      if (t.text == "location") {
+        cam.location = vec3("the camera location");
+      } else if (t.text == "up") {
+        cam.up = vec3("the camera up vector");
+      } else if (t.text == "right") {
+        cam.right = vec3("the camera right vector");
+      } else if (t.text == "look_at") {
+        cam.lookAt = vec3("the camera look_at point");
+      } else {
+        throw ParseError(t.loc, "unknown camera property " + t.quoted());
+      }
+    }
+    if (cam.lookAt == cam.location) throw ParseError(keyword.loc, "the camera's look_at equals its location");
+    if (cam.up == glm::dvec3(0)) throw ParseError(keyword.loc, "the camera's up vector is zero");
+    if (cam.right == glm::dvec3(0)) throw ParseError(keyword.loc, "the camera's right vector is zero");
+    if (glm::length(glm::cross(cam.up, cam.right)) == 0) {
+      throw ParseError(keyword.loc, "the camera's up and right vectors are parallel");
+    }
+  }
+
+  void parseLight(const Token& keyword) {
+    expect('{', "after 'light_source'");
+    LightDesc light;
+    light.position = vec3("the light position");
+    float filter = 0;
+    color(light.color, filter, "light");
+    const Token& t = next();
+    if (t.kind == Token::Kind::End) throw ParseError(t.loc, unclosed("light_source", keyword));
+    if (!isPunct(t, '}')) throw ParseError(t.loc, "unknown light_source property " + t.quoted());
+    scene_.lights.push_back(light);
+  }
+
+  void parseObject(const Token& keyword) {
+    const std::string_view kind = keyword.text;
+    expect('{', "after " + keyword.quoted());
+    ObjectDesc obj;
+    obj.loc = keyword.loc;
+    if (kind == "sphere") {
+      const glm::dvec3 center = vec3("the sphere center");
+      expect(',', "after the sphere center");
+      obj.shape = SphereDesc{center, positive("the sphere radius")};
+    } else if (kind == "plane") {
+      const SourceLoc at = peek().loc;
+      const glm::dvec3 normal = vec3("the plane normal");
+      if (normal == glm::dvec3(0)) throw ParseError(at, "the plane normal is zero");
+      expect(',', "after the plane normal");
+      obj.shape = PlaneDesc{normal, numberFor("the plane distance")};
+    } else if (kind == "triangle") {
+      TriangleDesc tri;
+      tri.a = vec3("the first triangle vertex");
+      expect(',', "after the first triangle vertex");
+      tri.b = vec3("the second triangle vertex");
+      expect(',', "after the second triangle vertex");
+      tri.c = vec3("the third triangle vertex");
+      obj.shape = tri;
+    } else if (kind == "box") {
+      BoxDesc box;
+      box.min = vec3("the first box corner");
+      expect(',', "after the first box corner");
+      box.max = vec3("the second box corner");
+      obj.shape = box;
+    } else if (kind == "cone") {
+      ConeDesc cone;
+      const SourceLoc at = peek().loc;
+      cone.base = vec3("the cone base");
+      expect(',', "after the cone base");
+      cone.baseRadius = nonNegative("the cone base radius");
+      expect(',', "after the cone base radius");
+      cone.cap = vec3("the cone cap");
+      expect(',', "after the cone cap");
+      cone.capRadius = nonNegative("the cone cap radius");
+      if (cone.base == cone.cap) throw ParseError(at, "the cone's base and cap centres are the same point");
+      if (cone.baseRadius == 0 && cone.capRadius == 0) throw ParseError(at, "both cone radii are zero");
+      obj.shape = cone;
+    } else {
+      CylinderDesc cyl;
+      const SourceLoc at = peek().loc;
+      cyl.base = vec3("the cylinder base");
+      expect(',', "after the cylinder base");
+      cyl.cap = vec3("the cylinder cap");
+      expect(',', "after the cylinder cap");
+      cyl.radius = positive("the cylinder radius");
+      if (cyl.base == cyl.cap) throw ParseError(at, "the cylinder's base and cap centres are the same point");
+      obj.shape = cyl;
+    }
+    parseModifiers(obj, keyword);
+    // A file of tiny objects can outgrow memory (limits.hpp). A part stands for its share of the file.
+    const std::uint64_t n = scene_.objects.size();
+    const std::string shortage = objectMemoryShortage(n * parts_, (n + 1) * parts_, "a scene");
+    if (!shortage.empty()) throw ParseError(keyword.loc, shortage);
+    scene_.objects.push_back(std::move(obj));
+  }
+
+  double positive(const char* what) {
+    const SourceLoc at = peek().loc;
+    const double v = numberFor(what);
+    if (!(v > 0)) throw ParseError(at, std::string(what) + " must be greater than 0, found " + num(v));
+    return v;
+  }
+  double nonNegative(const char* what) {
+    const SourceLoc at = peek().loc;
+    const double v = numberFor(what);
+    if (v < 0) throw ParseError(at, std::string(what) + " must not be negative, found " + num(v));
+    return v;
+  }
+
+  // pigment, finish and transforms, in any order and repeated, up to the object's closing brace.
+  void parseModifiers(ObjectDesc& obj, const Token& keyword) {
+    Finish& finish = obj.finish;
+    for (;;) {
+      const Token& t = next();
+      if (isPunct(t, '}')) break;
+      if (t.kind == Token::Kind::End) throw ParseError(t.loc, unclosed(keyword.text, keyword));
+      if (t.text == "pigment") {
+        expect('{', "after 'pigment'");
+        color(obj.material.pigment, obj.material.filter, "pigment");
+        expect('}', "to close the pigment");
+      } else if (t.text == "finish") {
+        parseFinish(finish, t);
+      } else if (t.text == "translate") {
+        obj.transforms.push_back({TransformStep::Kind::Translate, vec3("the translation")});
+      } else if (t.text == "scale") {
+        obj.transforms.push_back({TransformStep::Kind::Scale, scaleFactors()});
+      } else if (t.text == "rotate") {
+        obj.transforms.push_back({TransformStep::Kind::Rotate, vec3("the rotation")});
+      } else {
+        throw ParseError(t.loc, "unknown " + std::string(keyword.text) + " property " + t.quoted());
+      }
+    }
+    Material& m = obj.material;
+    m.ambient = float(finish.ambient) * m.pigment;
+    m.diffuse = float(finish.diffuse) * m.pigment;
+    m.specular = float(finish.specular) * m.pigment;
+    m.roughness = float(finish.roughness);
+    m.exponent = float(2.0 / (finish.roughness * finish.roughness) - 2.0);  // §c.1
+    m.reflection = float(finish.reflection);
+    m.ior = float(finish.ior);
+  }
+
+  // `scale <x,y,z>` or POV-Ray's uniform `scale s`; a zero factor would make the object unrenderable.
+  glm::dvec3 scaleFactors() {
+    const SourceLoc at = peek().loc;
+    const glm::dvec3 s = peek().kind == Token::Kind::Number ? glm::dvec3(numberFor("the scale")) : vec3("the scale");
+    if (s.x == 0 || s.y == 0 || s.z == 0) throw ParseError(at, "a scale factor is zero");
+    return s;
+  }
+
+  void parseFinish(Finish& f, const Token& keyword) {
+    expect('{', "after 'finish'");
+    for (;;) {
+      const Token& t = next();
+      if (isPunct(t, '}')) break;
+      if (t.kind == Token::Kind::End) throw ParseError(t.loc, unclosed("finish", keyword));
+      const SourceLoc at = peek().loc;
+      if (t.text == "ambient") {
+        f.ambient = numberAfter(t);
+      } else if (t.text == "diffuse") {
+        f.diffuse = numberAfter(t);
+      } else if (t.text == "specular") {
+        f.specular = numberAfter(t);
+      } else if (t.text == "roughness") {
+        f.roughness = numberAfter(t);
+        // 0 would make the exponent 2/roughness² − 2 infinite.
+        if (!(f.roughness > 0)) throw ParseError(at, "roughness must be greater than 0, found " + num(f.roughness));
+      } else if (t.text == "reflection") {
+        f.reflection = numberAfter(t);
+      } else if (t.text == "refraction") {
+        f.refraction = numberAfter(t);
+      } else if (t.text == "ior") {
+        f.ior = numberAfter(t);
+        if (!(f.ior > 0)) throw ParseError(at, "ior must be greater than 0, found " + num(f.ior));
+      } else if (t.text == "metallic") {
+        // A real POV-Ray finish keyword that this renderer does not model: read, said, and ignored.
+        numberAfter(t);
+        scene_.warnings.push_back(t.loc.str() + ": warning: 'metallic' is not modelled and is ignored");
+      } else {
+        throw ParseError(t.loc, "unknown finish property " + t.quoted());
+      }
+    }
+  }
+
+  static std::string unclosed(std::string_view what, const Token& opener) {
+    return "end of file inside the " + std::string(what) + " started at line " + std::to_string(opener.loc.line) +
+           "; expected '}'";
+  }
+
+  Tokenizer tokens_;
+  Token current_;  // the one token of lookahead
+  std::uint64_t parts_;
+  SceneDesc scene_;
+  int cameras_ = 0;
+};
+
+// Line ends (LF, CRLF, lone CR) in `text`, as the tokenizer counts them. LFs are counted in blocks of 255
+// bytes, whose count fits in a byte: a loop the compiler vectorizes, 2.5 times as fast as std::count.
+int lineEnds(std::string_view text) {
+  size_t n = 0;
+  for (size_t block = 0; block < text.size(); block += 255) {
+    const size_t end = std::min(text.size(), block + 255);
+    unsigned char lf = 0;
+    for (size_t i = block; i < end; ++i) lf += text[i] == '\n';
+    n += lf;
+  }
+  for (size_t at = text.find('\r'); at != std::string_view::npos; at = text.find('\r', at + 1)) {
+    if (at + 1 == text.size() || text[at + 1] != '\n') ++n;
+  }
+  return int(n);
+}
+
+// Whether a statement keyword opens the line that starts at `at`, after blanks.
+bool statementStartsLine(std::string_view text, size_t at) {
+  while (at < text.size() && (text[at] == ' ' || text[at] == '\t')) ++at;
+  for (const std::string_view keyword :
+       {"camera", "light_source", "sphere", "plane", "triangle", "box", "cone", "cylinder"}) {
+    if (text.compare(at, keyword.size(), keyword) == 0) {
+      const size_t after = at + keyword.size();
+      return after == text.size() || !(std::isalnum(static_cast<unsigned char>(text[after])) || text[after] == '_');
+    }
+  }
+  return false;
+}
+
+// Where to cut the text into about `count` parts of equal size: each cut is at the start of a line that a
+// statement keyword opens, the first after its even share. Some may fall inside a statement or a comment
+// after all; parseParts() finds out.
+std::vector<size_t> partStarts(std::string_view text, int count) {
+  std::vector<size_t> starts{0};
+  for (int k = 1; k < count; ++k) {
+    const size_t from = std::max(starts.back() + 1, text.size() / size_t(count) * size_t(k));
+    for (size_t at = text.find_first_of("\n\r", from); at != std::string_view::npos;
+         at = text.find_first_of("\n\r", at + 1)) {
+      const size_t line = at + 1;  // a CR followed by LF does not end the line; its LF does
+      if (text[at] == '\r' && line < text.size() && text[line] == '\n') continue;
+      if (statementStartsLine(text, line)) {
+        starts.push_back(line);
+        break;
+      }
+    }
+  }
+  return starts;
+}
+
+// Reads the parts at once, as if each were a file. Together they mean what the whole file means when every
+// part reads to its end without an error, so that each cut lay between two statements and outside any comment
+// (a comment cannot hide a cut: a line comment ends before it, and a block comment left open is an error), and
+// when the file has one camera (a second camera statement changes the first's). Otherwise nothing, and the
+// whole file is read in one piece, for its exact error or meaning.
+std::optional<SceneDesc> parseParts(std::string_view text, const std::string& file,
+                                    const std::vector<size_t>& starts, int threads) {
+  const size_t n = starts.size();
+  std::vector<int> firstLines{1};
+  for (size_t k = 1; k < n; ++k) {
+    firstLines.push_back(firstLines.back() + lineEnds(text.substr(starts[k - 1], starts[k] - starts[k - 1])));
+  }
+  std::vector<std::optional<PovParser::Part>> parts(n);
+  parallelFor(int(n), threads, [&](int k) {
+    const size_t begin = starts[size_t(k)], end = size_t(k) + 1 < n ? starts[size_t(k) + 1] : text.size();
+    try {
+      // The first part's list becomes the scene's, with room for the objects of the whole text, so that only
+      // the other parts' objects are copied into it. The room of every part together is within the memory
+      // parsePov() found for the whole text.
+      const size_t room = objectRoom(k == 0 ? text.size() : end - begin);
+      parts[size_t(k)] = PovParser(text.substr(begin, end - begin), file, room, firstLines[size_t(k)], n).part();
+    } catch (const ParseError&) {  // reported by the reading of the whole file
+    } catch (const std::bad_alloc&) {  // so is a lack of memory, where the file's own checks see it
+    }
+  });
+  int cameras = 0;
+  size_t objects = 0;
+  for (const auto& part : parts) {
+    if (!part) return std::nullopt;
+    cameras += part->cameras;
+    objects += part->scene.objects.size();
+  }
+  if (cameras != 1) return std::nullopt;
+  SceneDesc scene = std::move(parts[0]->scene);
+  scene.objects.reserve(objects);
+  for (size_t k = 1; k < n; ++k) {
+    SceneDesc& s = parts[k]->scene;
+    if (parts[k]->cameras == 1) scene.camera = s.camera;
+    scene.lights.insert(scene.lights.end(), s.lights.begin(), s.lights.end());
+    std::move(s.objects.begin(), s.objects.end(), std::back_inserter(scene.objects));
+    std::move(s.warnings.begin(), s.warnings.end(), std::back_inserter(scene.warnings));
+    s = SceneDesc();  // its memory back before the next part's objects are moved
+  }
+  return scene;
+}
+
+}  // namespace
+
+SceneDesc parsePov(std::string_view text, const std::string& file, int threads) {
+  const size_t room = objectRoom(text.size());
+  if (room == 0) return PovParser(text, file, 0).parse();  // a small text: nothing to reserve or to share out
+  // In parts only with memory to spare for as many objects as the text could hold: where memory is short, the
+  // one-piece read meets the memory checks exactly where it would on one thread, and the parts, which would
+  // use memory of their own first, are not tried.
+  const std::uint64_t available = availableMemory();
+  const std::uint64_t mostObjects = text.size() / kMinObjectBytes;
+  if (text.size() >= 2 * kMinPartBytes && threads > 1 &&
+      memoryShortage("", mostObjects * kBytesPerObject, available).empty()) {
+    // One part per thread: the fewer the parts, the fewer objects are copied into the first one's list. The
+    // helper threads start while the cuts are found.
+    const int count = int(std::min<size_t>(size_t(threads), text.size() / kMinPartBytes));
+    startHelpers(count);
+    if (auto scene = parseParts(text, file, partStarts(text, count), threads)) return std::move(*scene);
+  }
+  // Room only where memory allows, as parseObject()'s checks would.
+  const bool roomFits = memoryShortage("", room * sizeof(ObjectDesc), available).empty();
+  return PovParser(text, file, roomFits ? room : 0).parse();
+}
+
+}  // namespace rt

@@ -1,0 +1,105 @@
+#include "raytrace/render/shading.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/constants.hpp>
+
+namespace rt {
+
+namespace {
+
+float saturate(float x) { return glm::clamp(x, 0.0f, 1.0f); }
+
+// Smith's masking term for GGX, G1(x) = 2 / (1 + √(1 + α² tan²θx)) (Walter et al. 2007, eq. 34). The caller
+// has checked x·n > 0, and the half vector makes x·h ≥ 0, so the χ⁺(x·h / x·n) of §c.2 is 1. A tiny x·n
+// gives tan²θ = ∞ and G1 = 0, never NaN.
+float smithG1(float xn, float alpha) {
+  const float tan2 = (1.0f - xn * xn) / (xn * xn);
+  return 2.0f / (1.0f + std::sqrt(1.0f + alpha * alpha * tan2));
+}
+
+}  // namespace
+
+template <class T>
+float blinnPhongSpecular(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, float exponent) {
+  const Vec3<T> sum = l + v;
+  const T len = glm::length(sum);
+  if (!(len > T(0))) return 0.0f;  // l = −v: no half vector
+  const float nh = saturate(float(glm::dot(n, sum) / len));
+  return std::pow(nh, std::max(exponent, 0.0f));
+}
+
+template <class T>
+float cookTorranceSpecular(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, float roughness, float ior) {
+  const float nl = float(glm::dot(n, l));
+  const float nv = float(glm::dot(n, v));
+  // Light or viewer below the surface: χ⁺ in G makes the whole term 0 (§c.2).
+  if (!(nl > 0.0f && nv > 0.0f)) return 0.0f;
+  const Vec3<T> h = glm::normalize(l + v);  // l + v ≠ 0: both lie above the surface
+  const float alpha = ggxAlpha(roughness);
+  const float nh = saturate(float(glm::dot(n, h)));
+  const float a2 = alpha * alpha;
+  // D's denominator (n·h)²(α² − 1) + 1, written as sin²θh + (n·h)²α² so that it keeps its α² near the peak
+  // instead of cancelling to 0 in float (1 − 1 + α²).
+  const Vec3<T> across = glm::cross(n, h);
+  const float k = float(glm::dot(across, across)) + nh * nh * a2;
+  const float d = a2 / (glm::pi<float>() * k * k);
+  const float g = smithG1(nv, alpha) * smithG1(nl, alpha);
+  const float f = schlick(float(glm::dot(v, h)), ior);
+  return d * g * f / (4.0f * std::max(1.0f / 16.0f, nv));
+}
+
+float ggxAlpha(float roughness) { return std::max(roughness * roughness, kMinGgxAlpha); }
+
+float schlick(float cosTheta, float ior) {
+  const float r = (ior - 1.0f) / (ior + 1.0f);
+  const float f0 = r * r;
+  return f0 + (1.0f - f0) * std::pow(1.0f - saturate(cosTheta), 5.0f);
+}
+
+template <class T> Vec3<T> reflectDirection(const Vec3<T>& d, const Vec3<T>& n) {
+  return glm::normalize(d - T(2) * glm::dot(d, n) * n);
+}
+
+template <class T> std::optional<Vec3<T>> refractDirection(const Vec3<T>& d, const Vec3<T>& n, float ior) {
+  const bool entering = glm::dot(d, n) <= T(0);
+  const T eta = entering ? T(1) / T(ior) : T(ior);
+  const Vec3<T> facing = entering ? n : -n;  // the normal on the side the ray comes from
+  const T cosIn = -glm::dot(d, facing);
+  const T k = T(1) - eta * eta * (T(1) - cosIn * cosIn);
+  if (k < T(0)) return std::nullopt;
+  return glm::normalize(eta * d + (eta * cosIn - std::sqrt(k)) * facing);
+}
+
+Color beerAttenuation(const Color& pigment, float distance) {
+  Color kept(1.0f);
+  for (int c = 0; c < 3; ++c) {
+    // A channel the medium does not absorb (C ≥ 1) keeps everything, even over an infinite path, where
+    // 0·∞ would otherwise give NaN; a pigment above 1 does not amplify.
+    const float absorbance = std::max(0.0f, 1.0f - pigment[c]) * 0.15f;
+    if (absorbance > 0.0f) kept[c] = std::exp(-absorbance * distance);
+  }
+  return kept;
+}
+
+Weights weights(const Material& m, float fresnel, bool reflectionMixes) {
+  const float f = m.filter;
+  const float k = m.reflection;
+  Weights w;
+  w.local = (1.0f - f) * (reflectionMixes ? 1.0f - k : 1.0f);
+  w.reflection = (1.0f - f) * k + f * fresnel;
+  w.transmission = f * (1.0f - fresnel);
+  return w;
+}
+
+template float blinnPhongSpecular(const Vec3<float>&, const Vec3<float>&, const Vec3<float>&, float);
+template float blinnPhongSpecular(const Vec3<double>&, const Vec3<double>&, const Vec3<double>&, float);
+template float cookTorranceSpecular(const Vec3<float>&, const Vec3<float>&, const Vec3<float>&, float, float);
+template float cookTorranceSpecular(const Vec3<double>&, const Vec3<double>&, const Vec3<double>&, float, float);
+template Vec3<float> reflectDirection(const Vec3<float>&, const Vec3<float>&);
+template Vec3<double> reflectDirection(const Vec3<double>&, const Vec3<double>&);
+template std::optional<Vec3<float>> refractDirection(const Vec3<float>&, const Vec3<float>&, float);
+template std::optional<Vec3<double>> refractDirection(const Vec3<double>&, const Vec3<double>&, float);
+
+}  // namespace rt

@@ -1,0 +1,293 @@
+#include "raytrace/render/tracer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include <glm/gtc/constants.hpp>
+
+namespace rt {
+
+namespace {
+
+// The normal on the side the ray arrives from: the shading normal.
+template <class T> Vec3<T> viewerSide(const Hit<T>& hit, const Ray<T>& ray) {
+  return glm::dot(ray.dir, hit.normal) <= T(0) ? hit.normal : -hit.normal;
+}
+
+float brightest(const Color& c) { return std::max(c.r, std::max(c.g, c.b)); }
+
+// The largest factor a specular term can put on Lc·ks·C: 1 for Blinn-Phong (a clamped cosine to a power
+// ≥ 0); for Cook-Torrance D ≤ max(1/(πα²), α²/π), G ≤ 1, F ≤ 1 and the denominator is at least 4/16.
+float specularBound(const Material& m, Brdf brdf) {
+  if (brdf == Brdf::BlinnPhong) return 1.0f;
+  const float alpha = ggxAlpha(m.roughness);
+  return 4.0f * std::max(1.0f / (glm::pi<float>() * alpha * alpha), alpha * alpha / glm::pi<float>());
+}
+
+}  // namespace
+
+// Recursion cutoff (stability.md F12). A secondary ray is skipped when its accumulated weight w (the product
+// of the weights and tints from the eye down to it) times the brightest colour its subtree could return,
+// bound_[levels left], is below cutoff_ = (½/255) / 2^(maxDepth+1). A tree has fewer than 2^(maxDepth+1) rays,
+// so all the skipped subtrees of one eye ray together move its colour by less than half an 8-bit step: the
+// byte changes only if the exact value lay within that distance of a rounding boundary. bound_ is built
+// bottom-up: a ray returns the background or wl·local + Σ weight·tint·(child colour) with wl ≤ 1, local ≤
+// Lmax and Σ weight·tint ≤ G, the largest ((1−f)k + f)·max(1, C) of the scene's materials.
+template <class T>
+Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
+    : scene_(scene),
+      options_(options),
+      conventions_(scene.desc().conventions),
+      lastBlocker_(scene.lights().size(), nullptr) {
+  if (options.depth) conventions_.maxDepth = *options.depth;
+  float localMax = 0, gain = 0;
+  for (const auto& object : scene.objects()) {
+    const Material& m = object->material();
+    float local = brightest(m.ambient);
+    for (const Light<T>& light : scene.lights()) {
+      local += brightest(light.color) * (brightest(m.diffuse) + brightest(m.specular) * specularBound(m, options.brdf));
+    }
+    localMax = std::max(localMax, options.normals ? 1.0f : local);
+    gain = std::max(gain, ((1 - m.filter) * m.reflection + m.filter) * std::max(1.0f, brightest(m.pigment)));
+  }
+  const float background = brightest(conventions_.background);
+  const auto level = [&](float children) {
+    const float shaded = localMax + gain * children;
+    return std::max(background, conventions_.clampEachBounce ? std::min(shaded, 1.0f) : shaded);
+  };
+  bound_.push_back(level(0));
+  for (int r = 1; r <= conventions_.maxDepth; ++r) bound_.push_back(level(bound_.back()));
+  cutoff_ = std::ldexp(0.5f / 255.0f, -(conventions_.maxDepth + 1));
+}
+
+template <class T> bool Tracer<T>::matters(float weight, int depth) const {
+  return weight * bound_[size_t(conventions_.maxDepth - depth)] >= cutoff_;
+}
+
+template <class T>
+Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees) {
+  const int n = options_.samples;
+  Color sum(0);
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      RayRecord* record = trees ? &trees->emplace_back() : nullptr;
+      sum += trace(camera.sampleRay(x, y, i, j, n), RayRecord::Kind::Primary, 0, 1.0f, record).color;
+    }
+  }
+  return sum / float(n * n);
+}
+
+template <class T> const Color* Tracer<T>::block(const Camera<T>& camera, int x0, int y0, int x1, int y1) {
+  const int n = options_.samples;
+  std::vector<Ray<T>>& rays = rays_;  // in pixel() order: pixel by pixel, row by row, then sample by sample
+  rays.resize(size_t(x1 - x0) * size_t(y1 - y0) * size_t(n * n));
+  size_t k = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+          // Stored member by member from registers: push_back would store the ray on the stack and copy it
+          // from there at once, a store-forwarding stall per sample.
+          const Ray<T> ray = camera.sampleRay(x, y, i, j, n);
+          rays[k].origin = ray.origin;
+          rays[k++].dir = ray.dir;
+        }
+      }
+    }
+  }
+  const size_t lights = scene_.lights().size();
+  std::vector<Color>& colors = colors_;
+  colors.resize(rays.size());
+  constexpr int kPacket = Bvh<T>::kPacket;
+  std::vector<std::optional<ShadowRay>>& shadows = shadows_;
+  shadows.resize(kPacket * lights);
+  for (size_t first = 0; first < rays.size(); first += kPacket) {
+    const int count = int(std::min<size_t>(kPacket, rays.size() - first));
+    const Ray<T>* packet = &rays[first];
+    std::optional<Hit<T>> hits[kPacket];
+    scene_.closestHits(packet, count, {}, hits);
+    // The shadow rays of the packet's hits toward each light, asked together: shadows[i · lights + l].
+    for (size_t l = 0; l < lights; ++l) {
+      Ray<T> query[kPacket];
+      Interval<T> segments[kPacket];
+      int index[kPacket], m = 0;
+      for (int i = 0; i < count; ++i) {
+        auto& s = shadows[size_t(i) * lights + l];
+        s.emplace();
+        if (!hits[i] || !shadowRay(*hits[i], viewerSide(*hits[i], packet[i]), scene_.lights()[l], *s)) s.reset();
+      }
+      // Gathered in a second pass: copied right after it is written, a ray is read back before its stores
+      // have left the store buffer, and each such read stalls.
+      for (int i = 0; i < count; ++i) {
+        if (const auto& s = shadows[size_t(i) * lights + l]) query[m] = s->ray, segments[m] = s->segment, index[m++] = i;
+      }
+      bool answers[kPacket];
+      scene_.occluded(query, segments, m, answers, &lastBlocker_[l]);
+      for (int k = 0; k < m; ++k) shadows[size_t(index[k]) * lights + l]->blocked = answers[k];
+    }
+    for (int i = 0; i < count; ++i) {
+      colors[first + size_t(i)] =
+          follow(packet[i], hits[i], RayRecord::Kind::Primary, 0, 1.0f, nullptr, shadows.data() + size_t(i) * lights)
+              .color;
+    }
+  }
+  // Each pixel's average in place: pixel p's samples start at p·n² ≥ p.
+  const size_t pixels = colors.size() / size_t(n * n);
+  for (size_t p = 0, next = 0; p < pixels; ++p) {
+    Color sum(0);
+    for (int s = 0; s < n * n; ++s) sum += colors[next++];
+    colors[p] = sum / float(n * n);
+  }
+  return colors.data();
+}
+
+template <class T>
+typename Tracer<T>::Traced Tracer<T>::trace(const Ray<T>& ray, RayRecord::Kind kind, int depth, float weight,
+                                            RayRecord* record) {
+  return follow(ray, scene_.closestHit(ray, {}), kind, depth, weight, record, nullptr);
+}
+
+template <class T>
+typename Tracer<T>::Traced Tracer<T>::follow(const Ray<T>& ray, const std::optional<Hit<T>>& hit,
+                                             RayRecord::Kind kind, int depth, float weight, RayRecord* record,
+                                             const std::optional<ShadowRay>* shadows) {
+  if (record) {
+    record->kind = kind;
+    record->origin = glm::dvec3(ray.origin);
+    record->dir = glm::dvec3(ray.dir);
+  }
+  if (!hit) {
+    if (record) record->color = conventions_.background;
+    return {conventions_.background, std::numeric_limits<T>::infinity()};
+  }
+  Color color = shade(ray, *hit, depth, weight, record, shadows);
+  if (conventions_.clampEachBounce) color = glm::clamp(color, 0.0f, 1.0f);
+  if (record) record->color = color;
+  return {color, hit->t};
+}
+
+template <class T>
+Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float weight, RayRecord* record,
+                       const std::optional<ShadowRay>* shadows) {
+  const Material& m = hit.object->material();
+  if (record) {
+    record->hit = true;
+    record->objectId = hit.object->id();
+    record->objectType = shapeName(scene_.desc().objects[size_t(hit.object->id() - 1)].shape);
+    record->point = glm::dvec3(hit.point);
+    record->normal = glm::dvec3(hit.normal);
+    record->t = double(hit.t);
+  }
+  // The .cli rule: the deepest ray that hits returns black (cs3451-course.md §A.4).
+  if (depth == conventions_.maxDepth && !conventions_.shadeDeepest) return Color(0);
+  if (options_.normals) return Color(hit.normal) * 0.5f + 0.5f;
+
+  const Vec3<T> v = -ray.dir;
+  const bool entering = glm::dot(v, hit.normal) >= T(0);
+  const Vec3<T> n = viewerSide(hit, ray);  // shading normal
+  const float fresnel = options_.fresnel ? schlick(float(glm::dot(n, v)), m.ior) : 0.0f;
+  Weights w = weights(m, fresnel, conventions_.reflectionMixes);
+  std::optional<Vec3<T>> refracted;
+  if (w.transmission > 0) {
+    refracted = refractDirection(ray.dir, hit.normal, m.ior);
+    if (!refracted) {  // total internal reflection: the transmitted share is reflected (§c.4)
+      w.reflection += w.transmission;
+      w.transmission = 0;
+      if (record) record->extraInfo.push_back("total-internal-reflection");
+    }
+  }
+
+  const Color ambient = w.local * m.ambient;
+  Local local;
+  if (w.local > 0) local = direct(hit, n, v, record, shadows);
+  local.diffuse *= w.local;
+  local.specular *= w.local;
+
+  // Secondary rays: refraction first, then reflection, as the course traces and prints them (§a.3).
+  Color refraction(0), reflection(0);
+  const int child = depth + 1;
+  // The weight a child's colour has in the pixel includes the tint put on it: transmitted light is tinted by
+  // the object it travelled in (§c.4; Beer's law instead, §c.6), reflected light by the pigment (§c.3).
+  const Color transmitTint = entering && !options_.beers ? m.pigment : Color(1);
+  const float transmitWeight = weight * w.transmission * brightest(transmitTint);
+  if (child <= conventions_.maxDepth && w.transmission > 0 && matters(transmitWeight, child)) {
+    RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
+    if (sub) sub->extraInfo.push_back(entering ? "into-object" : "into-air");
+    const Traced t =
+        trace(spawnRay(hit, *refracted, *scene_.arithmetic().offset), RayRecord::Kind::Refraction, child,
+              transmitWeight, sub);
+    Color gathered = transmitTint * t.color;
+    if (entering && options_.beers) gathered *= beerAttenuation(m.pigment, float(t.distance));
+    refraction = w.transmission * gathered;
+  }
+  const Color reflectTint = conventions_.tintReflection ? m.pigment : Color(1);
+  const float reflectWeight = weight * w.reflection * brightest(reflectTint);
+  if (child <= conventions_.maxDepth && w.reflection > 0 && matters(reflectWeight, child)) {
+    RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
+    const Ray<T> mirrored = spawnRay(hit, reflectDirection(ray.dir, n), *scene_.arithmetic().offset);
+    const Traced r = trace(mirrored, RayRecord::Kind::Reflection, child, reflectWeight, sub);
+    reflection = w.reflection * reflectTint * r.color;
+  }
+
+  if (record) {
+    record->ambient = ambient;
+    record->diffuse = local.diffuse;
+    record->specular = local.specular;
+    record->reflection = reflection;
+    record->refraction = refraction;
+    record->local = w.local;
+    record->reflect = w.reflection;
+    record->transmit = w.transmission;
+  }
+  return ambient + local.diffuse + local.specular + reflection + refraction;
+}
+
+template <class T>
+typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v,
+                                            RayRecord* record, const std::optional<ShadowRay>* shadows) {
+  const Material& m = hit.object->material();
+  // Summed in locals, not in the returned struct: that one lives in the caller's memory, and each sum would
+  // wait for the store before it.
+  Color diffuse(0), specular(0);
+  for (size_t i = 0; i < scene_.lights().size(); ++i) {
+    const Light<T>& light = scene_.lights()[i];
+    ShadowRay own;
+    const ShadowRay* s = nullptr;
+    if (shadows) {
+      if (shadows[i]) s = &*shadows[i];
+    } else if (shadowRay(hit, n, light, own)) {
+      own.blocked = scene_.occluded(own.ray, own.segment, &lastBlocker_[i]);
+      s = &own;
+    }
+    if (!s) continue;
+    if (record) record->shadows.push_back({glm::dvec3(s->ray.origin), glm::dvec3(s->ray.dir), s->blocked});
+    if (s->blocked) continue;
+    diffuse += light.color * m.diffuse * std::min(s->nl, 1.0f);
+    if (m.specular == Color(0)) continue;  // a matte surface: no power to take
+    const float factor = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, s->l, m.exponent)
+                                                           : cookTorranceSpecular(n, v, s->l, m.roughness, m.ior);
+    specular += light.color * m.specular * factor;
+  }
+  return {diffuse, specular};
+}
+
+template <class T>
+bool Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, ShadowRay& out) const {
+  // A light behind the surface, as the viewer sees it, cannot light it: for a closed surface the shadow ray
+  // would run into the object itself (§c.7: no direct light on the inside of glass), and an open one is lit
+  // on the light's side only. A light on the point has no direction: n·l is NaN.
+  out.l = glm::normalize(light.position - hit.point);
+  out.nl = float(glm::dot(n, out.l));
+  // Where n faces the light (n·l > 0) it picks the side to leave by as l would. The ray is made before the
+  // verdict, which it does not need, so that the two chains of square root and division overlap.
+  spawnRayTo(hit, light.position, out.l, n, *scene_.arithmetic().offset, out.ray, out.segment);
+  out.blocked = false;
+  return out.nl > 0.0f;
+}
+
+template class Tracer<float>;
+template class Tracer<double>;
+
+}  // namespace rt

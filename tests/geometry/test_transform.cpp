@@ -1,0 +1,69 @@
+// The POV transform steps and the matrix they compose to (transform.hpp), in either precision.
+#include <catch2/catch.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "raytrace/parse/pov_parser.hpp"
+#include "raytrace/geometry/transform.hpp"
+
+using namespace rt;
+
+namespace {
+
+const char* kCamera = "camera { location <0, 0, 12> up <0, 1, 0> right <1.33333, 0, 0> look_at <0, 0, 0> }\n";
+const char* kChain = "rotate <30, -45, 10> scale <0.5, 2, 1.25> translate <1.1, -0.3, 7> rotate <0, 0, -25>";
+
+ObjectDesc parsed(const std::string& modifiers) {
+  return parsePov(std::string(kCamera) + "sphere { <0, 0, 0>, 1 " + modifiers + " }", "t.pov").objects.at(0);
+}
+
+// The course reference's float composition, written out product by product (csc473-course.md §c.10).
+glm::mat4 referenceRotation(glm::vec3 degrees) {
+  glm::mat4 r(1.f);
+  r = glm::rotate(glm::mat4(1.f), glm::radians(degrees.z), glm::vec3(0, 0, 1)) * r;
+  r = glm::rotate(glm::mat4(1.f), glm::radians(degrees.y), glm::vec3(0, 1, 0)) * r;
+  r = glm::rotate(glm::mat4(1.f), glm::radians(degrees.x), glm::vec3(1, 0, 0)) * r;
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("transform: the parser keeps the steps in file order", "[transform]") {
+  const ObjectDesc o = parsed(kChain);
+  REQUIRE(o.transforms.size() == 4);
+  CHECK(o.transforms[0].kind == TransformStep::Kind::Rotate);
+  CHECK(o.transforms[0].v == glm::dvec3(30, -45, 10));
+  CHECK(o.transforms[1].kind == TransformStep::Kind::Scale);
+  CHECK(o.transforms[1].v == glm::dvec3(0.5, 2, 1.25));
+  CHECK(o.transforms[2].kind == TransformStep::Kind::Translate);
+  CHECK(o.transforms[2].v == glm::dvec3(1.1, -0.3, 7));
+  CHECK(o.transforms[3].kind == TransformStep::Kind::Rotate);
+  CHECK(parsed("scale 3").transforms.at(0).v == glm::dvec3(3));  // POV-Ray's uniform scale
+  CHECK(parsed("").transforms.empty());
+}
+
+TEST_CASE("transform: worldFromObject is the steps composed in double", "[transform]") {
+  // translate, then scale: M = S·T takes the origin to 2·(1, 0, 0).
+  CHECK(parsed("translate <1, 0, 0> scale 2").worldFromObject() ==
+        glm::scale(glm::dmat4(1.0), glm::dvec3(2)) * glm::translate(glm::dmat4(1.0), glm::dvec3(1, 0, 0)));
+  CHECK(parsed("").worldFromObject() == glm::dmat4(1.0));
+}
+
+// The course tier needs the reference's float matrix to the last bit: each step multiplied on the left in
+// float, every rotation built from Rz, Ry, Rx in that order.
+TEST_CASE("transform: the float composition is the course reference's, bit for bit", "[transform]") {
+  glm::mat4 expected(1.f);
+  expected = referenceRotation({30, -45, 10}) * expected;
+  expected = glm::scale(glm::mat4(1.f), glm::vec3(0.5f, 2, 1.25f)) * expected;
+  expected = glm::translate(glm::mat4(1.f), glm::vec3(1.1f, -0.3f, 7)) * expected;
+  expected = referenceRotation({0, 0, -25}) * expected;
+  const glm::mat4 got = composeTransforms<float>(parsed(kChain).transforms);
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) {
+      CAPTURE(c, r);
+      CHECK(got[c][r] == expected[c][r]);
+    }
+  }
+  // Not the double matrix rounded: the float products round differently.
+  CHECK(got != glm::mat4(composeTransforms<double>(parsed(kChain).transforms)));
+}

@@ -1,0 +1,102 @@
+// The course camera (csc473-course.md §d): the worked check on simple.pov and the simp_cam scenes, in both
+// precisions, compared with directions computed independently in float64 (numpy) and with the course's
+// printed 4-decimal values.
+#include <catch2/catch.hpp>
+
+#include "raytrace/render/camera.hpp"
+#include "raytrace/app/report.hpp"
+
+namespace {
+
+rt::CameraDesc camera(glm::dvec3 location, glm::dvec3 right) {
+  rt::CameraDesc c;
+  c.location = location;
+  c.up = {0, 1, 0};
+  c.right = right;
+  c.lookAt = {0, 0, 0};
+  return c;
+}
+
+const rt::CameraDesc kSimple = camera({0, 0, 14}, {1.33333, 0, 0});
+
+template <class T> T tolerance() { return std::is_same_v<T, float> ? T(2e-6) : T(1e-12); }
+
+template <class T> void checkDir(const rt::Ray<T>& ray, const glm::dvec3& expected) {
+  for (int k = 0; k < 3; ++k) {
+    CAPTURE(k);
+    CHECK(double(ray.dir[k]) == Approx(expected[k]).margin(tolerance<T>()));
+  }
+}
+
+// The course's pixelray line for a ray.
+template <class T> std::string printed(const rt::Ray<T>& ray) {
+  return rt::braces(glm::dvec3(ray.origin)) + " -> " + rt::braces(glm::dvec3(ray.dir));
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("camera: the worked check of §d on simple.pov at 640x480", "", float, double) {
+  using T = TestType;
+  const rt::Camera<T> cam(kSimple, 640, 480);
+  CHECK(cam.width() == 640);
+  CHECK(cam.height() == 480);
+  struct Case {
+    int x, y;
+    glm::dvec3 dir;
+    const char* course;  // p1/test1..5 and the firsthit tests
+  };
+  const Case cases[] = {
+      {320, 240, {0.0010416629322267603, 0.0010416655363907124, -0.9999989149350342}, "{0.0010 0.0010 -1.0000}"},
+      {170, 120, {-0.2893075472241956, -0.23125309915810827, -0.9288827413882174}, "{-0.2893 -0.2313 -0.9289}"},
+      {490, 120, {0.32587117934407567, -0.22839708672067605, -0.9174108922671507}, "{0.3259 -0.2284 -0.9174}"},
+      {170, 360, {-0.2891776237296593, 0.23308355033044076, -0.9284655946772742}, "{-0.2892 0.2331 -0.9285}"},
+      {490, 360, {0.3257284257472795, 0.23020746878874349, -0.9170090043037084}, "{0.3257 0.2302 -0.9170}"},
+      {320, 160, {0.0010276636232874991, -0.16339892460003322, -0.9865595447549174}, "{0.0010 -0.1634 -0.9866}"},
+      {400, 240, {0.16539796764875458, 0.0010273191375448183, -0.9862263720429764}, "{0.1654 0.0010 -0.9862}"},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.x, c.y);
+    const rt::Ray<T> ray = cam.pixelRay(c.x, c.y);
+    CHECK(ray.origin == rt::Vec3<T>(0, 0, 14));
+    checkDir(ray, c.dir);
+    CHECK(double(glm::length(ray.dir)) == Approx(1).margin(tolerance<T>()));
+    CHECK(printed(ray) == std::string("{0.0000 0.0000 14.0000} -> ") + c.course);
+  }
+}
+
+TEMPLATE_TEST_CASE("camera: pixel y grows upward and the corners are symmetric", "", float, double) {
+  using T = TestType;
+  const rt::Camera<T> cam(kSimple, 640, 480);
+  const auto low = cam.pixelRay(0, 0).dir;
+  const auto high = cam.pixelRay(639, 479).dir;
+  checkDir(cam.pixelRay(0, 0), {-0.5117131567776935, -0.38358562578177213, -0.7687728616920695});
+  CHECK(low.y < T(0));
+  CHECK(high.x == Approx(-low.x).margin(tolerance<T>()));
+  CHECK(high.y == Approx(-low.y).margin(tolerance<T>()));
+  CHECK(high.z == Approx(low.z).margin(tolerance<T>()));
+}
+
+TEMPLATE_TEST_CASE("camera: simp_cam1..3 at pixel (320, 240), as p2/test6..8", "", float, double) {
+  using T = TestType;
+  const rt::Ray<T> cam1 = rt::Camera<T>(camera({-14, 0, 0}, {0, 0, 1.3333}), 640, 480).pixelRay(320, 240);
+  checkDir(cam1, {0.9999989149594479, 0.0010416655364161435, 0.001041639494777622});
+  CHECK(printed(cam1) == "{-14.0000 0.0000 0.0000} -> {1.0000 0.0010 0.0010}");
+  const rt::Ray<T> cam2 = rt::Camera<T>(camera({14, 0, 0}, {0, 0, -1.3333}), 640, 480).pixelRay(320, 240);
+  checkDir(cam2, {-0.9999989149594479, 0.0010416655364161435, -0.001041639494777622});
+  CHECK(printed(cam2) == "{14.0000 0.0000 0.0000} -> {-1.0000 0.0010 -0.0010}");
+  const rt::Ray<T> cam3 = rt::Camera<T>(camera({7, 0, 7}, {.94, 0, -.94}), 640, 480).pixelRay(320, 240);
+  checkDir(cam3, {-0.706371642004901, 0.0010416655397504607, -0.7078403904159489});
+  CHECK(printed(cam3) == "{7.0000 0.0000 7.0000} -> {-0.7064 0.0010 -0.7078}");
+}
+
+TEMPLATE_TEST_CASE("camera: pixelRay passes through the pixel's sample point", "", float, double) {
+  using T = TestType;
+  rt::CameraDesc desc = kSimple;
+  const rt::Camera<T> centre(desc, 640, 480);
+  CHECK(centre.pixelRay(170, 120).dir == centre.ray(T(170.5), T(120.5)).dir);
+  desc.pixelOffset = {0, 1};  // the .cli convention
+  const rt::Camera<T> corner(desc, 640, 480);
+  CHECK(corner.pixelRay(170, 120).dir == centre.ray(T(170), T(121)).dir);
+  // The image centre looks straight down the viewing direction.
+  CHECK(centre.ray(T(320), T(240)).dir == rt::Vec3<T>(0, 0, -1));
+}

@@ -1,0 +1,304 @@
+#include <cmath>
+#include <sstream>
+
+#include <catch2/catch.hpp>
+
+#include "raytrace/app/commands.hpp"
+#include "raytrace/util/error.hpp"
+#include "raytrace/parse/scene_file.hpp"
+#include "raytrace/render/renderer.hpp"
+#include "raytrace/render/tracer.hpp"
+
+using namespace rt;
+using Catch::Matchers::WithinAbs;
+
+namespace {
+
+// The scene's source folder, found from this file's path so the tests run from any folder.
+std::string sourceDir() {
+  const std::string file = __FILE__;
+  return file.substr(0, file.rfind("/tests/"));
+}
+
+// A camera at the origin looking down −z; a 1×1 image's only eye ray is exactly (0, 0, −1).
+SceneDesc emptyScene() {
+  SceneDesc scene;
+  scene.camera.right = {1, 0, 0};
+  return scene;
+}
+
+// A POV-style material: per-term colours are the finish coefficients times the pigment (§c.1).
+Material pov(const Color& c, float ka, float kd, float ks = 0, float roughness = 1, float reflection = 0) {
+  Material m;
+  m.pigment = c;
+  m.ambient = ka * c;
+  m.diffuse = kd * c;
+  m.specular = ks * c;
+  m.roughness = roughness;
+  m.exponent = 2 / (roughness * roughness) - 2;
+  m.reflection = reflection;
+  return m;
+}
+
+void add(SceneDesc& scene, const ShapeDesc& shape, const Material& m) {
+  ObjectDesc o;
+  o.shape = shape;
+  o.material = m;
+  scene.objects.push_back(o);
+}
+
+Color centre(const SceneDesc& scene, const RenderOptions& options = {}) {
+  return render(scene, 1, 1, options).at(0, 0);
+}
+
+void checkColor(const Color& actual, const Color& expected, double tolerance = 1e-5) {
+  CAPTURE(actual.r, actual.g, actual.b, expected.r, expected.g, expected.b);
+  for (int k = 0; k < 3; ++k) CHECK_THAT(actual[k], WithinAbs(expected[k], tolerance));
+}
+
+bool allFinite(const Image& image) {
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x) {
+      const Color& c = image.at(x, y);
+      if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b)) return false;
+    }
+  }
+  return true;
+}
+
+const Color kPigment(1.0f, 0.5f, 0.25f);
+
+// A sphere whose nearest point (0, 0, −4) faces the camera, lit from (0, 4, 0): N·L = cos 45°, and the half
+// vector is 22.5° off the normal, so Blinn-Phong with roughness 0.5 (p = 6) gives cos(22.5°)^6.
+SceneDesc litSphere() {
+  SceneDesc scene = emptyScene();
+  scene.lights.push_back({{0, 4, 0}, Color(1)});
+  add(scene, SphereDesc{{0, 0, -5}, 1}, pov(kPigment, 0.1f, 0.6f, 0.5f, 0.5f));
+  return scene;
+}
+const float kDirect = 0.6f * std::cos(float(M_PI) / 4) + 0.5f * std::pow(std::cos(float(M_PI) / 8), 6.0f);
+
+}  // namespace
+
+TEST_CASE("Blinn-Phong: ambient once, diffuse and specular per light, tinted by the pigment", "[render]") {
+  SceneDesc scene = litSphere();
+  checkColor(centre(scene), kPigment * (0.1f + kDirect));
+  // A second, mirror-image light adds its own diffuse and specular but no second ambient.
+  scene.lights.push_back({{0, -4, 0}, Color(1)});
+  checkColor(centre(scene), kPigment * (0.1f + 2 * kDirect));
+}
+
+TEST_CASE("A light hidden by another object leaves only the ambient term", "[render]") {
+  SceneDesc scene = litSphere();
+  add(scene, SphereDesc{{0, 2, -2}, 0.5}, pov(Color(1), 0, 0));  // on the segment to the light, off the eye ray
+  checkColor(centre(scene), kPigment * 0.1f);
+  // A light behind the surface does not light it either.
+  scene.lights = {{{0, 0, -10}, Color(1)}};
+  checkColor(centre(scene), kPigment * 0.1f);
+}
+
+TEST_CASE("Cook-Torrance replaces the specular term under -altbrdf", "[render]") {
+  SceneDesc scene = emptyScene();
+  scene.lights.push_back({{0, 0, 0}, Color(1)});  // at the eye: n = v = l
+  Material m = pov(kPigment, 0, 0, 1, 0.5f);
+  m.ior = 1.5f;
+  add(scene, SphereDesc{{0, 0, -5}, 1}, m);
+  RenderOptions options;
+  options.brdf = Brdf::CookTorrance;
+  // D·G·F / (4 n·v) at normal incidence = F0 / (4π α²) with α = 0.25, F0 = 0.04.
+  checkColor(centre(scene, options), kPigment * float(0.04 / (4 * M_PI * 0.0625)));
+}
+
+TEST_CASE("A mirror mixes in the tinted reflection, or adds it untinted under the .cli conventions", "[render]") {
+  SceneDesc scene = emptyScene();
+  scene.conventions.background = Color(0.2f, 0.4f, 0.6f);
+  // The plane z = −5 faces the camera; its reflection goes back past the eye into the background.
+  add(scene, PlaneDesc{{0, 0, 1}, -5}, pov(kPigment, 0.2f, 0, 0, 1, 0.5f));
+  const Color b = scene.conventions.background;
+  checkColor(centre(scene), 0.5f * 0.2f * kPigment + 0.5f * kPigment * b);  // §c.3, §c.5
+  scene.conventions.reflectionMixes = false;
+  scene.conventions.tintReflection = false;
+  checkColor(centre(scene), 0.2f * kPigment + 0.5f * b);  // cs3451 §A.4
+}
+
+TEST_CASE("Clamping each bounce keeps every returned colour within [0, 1]", "[render]") {
+  SceneDesc scene = emptyScene();
+  add(scene, SphereDesc{{0, 0, -5}, 1}, pov(Color(1), 3, 0));
+  CHECK(centre(scene).r == 3.0f);
+  scene.conventions.clampEachBounce = true;
+  CHECK(centre(scene).r == 1.0f);
+}
+
+// Two facing mirrors of reflection ½ and ambient 1: each level adds ½·(½)^depth, so the pixel shows how many
+// levels were shaded.
+SceneDesc mirrorHall() {
+  SceneDesc scene = emptyScene();
+  add(scene, PlaneDesc{{0, 0, 1}, -5}, pov(Color(1), 1, 0, 0, 1, 0.5f));
+  add(scene, PlaneDesc{{0, 0, -1}, -5}, pov(Color(1), 1, 0, 0, 1, 0.5f));
+  return scene;
+}
+
+TEST_CASE("Recursion stops after the primary ray and maxDepth secondary rays", "[render]") {
+  SceneDesc scene = mirrorHall();
+  // Course: primary + 5 secondary, all shaded; the deepest one spawns nothing (§c.9).
+  CHECK(centre(scene).r == 1.0f - std::ldexp(1.0f, -6));
+  scene.conventions.maxDepth = 2;
+  CHECK(centre(scene).r == 1.0f - std::ldexp(1.0f, -3));
+  // .cli: the deepest ray that hits returns black.
+  scene.conventions.shadeDeepest = false;
+  CHECK(centre(scene).r == 0.75f);
+}
+
+TEST_CASE("The recorded ray tree is the traced one: one chain of maxDepth reflections", "[render]") {
+  const SceneDesc desc = mirrorHall();
+  const Scene<float> scene(desc, chooseArithmetic(desc));
+  const Camera<float> camera(desc.camera, 1, 1);
+  Tracer<float> tracer(scene, RenderOptions{});
+  std::vector<RayRecord> trees;
+  const Color color = tracer.pixel(camera, 0, 0, &trees);
+  REQUIRE(trees.size() == 1);
+  CHECK(trees[0].color == color);
+  int depth = 0;
+  const RayRecord* node = &trees[0];
+  while (!node->children.empty()) {
+    REQUIRE(node->children.size() == 1);
+    node = &node->children[0];
+    CHECK(node->kind == RayRecord::Kind::Reflection);
+    ++depth;
+  }
+  CHECK(depth == desc.conventions.maxDepth);
+  CHECK(node->hit);
+  CHECK(node->reflection == Color(0));  // its reflection was not traced
+}
+
+TEST_CASE("Supersampling averages stratified sub-pixel rays in float", "[render]") {
+  SceneDesc scene = emptyScene();
+  // A triangle covering exactly the left half of the view (its right edge is the plane x = 0).
+  add(scene, TriangleDesc{{0, -100, -5}, {0, 100, -5}, {-100, 0, -5}}, pov(Color(1), 0.6f, 0));
+  RenderOptions options;
+  options.samples = 2;
+  checkColor(centre(scene, options), Color(0.3f));
+  options.samples = 4;
+  checkColor(centre(scene, options), Color(0.3f));
+}
+
+TEST_CASE("The normals debug view colours a hit by its outward normal", "[render]") {
+  RenderOptions options;
+  options.normals = true;
+  checkColor(centre(litSphere(), options), Color(0.5f, 0.5f, 1.0f));
+}
+
+TEST_CASE("Rendered images are finite whatever the flags and materials", "[render]") {
+  RenderOptions flags;
+  const auto each = [&](const SceneDesc& scene) {
+    for (const Brdf brdf : {Brdf::BlinnPhong, Brdf::CookTorrance}) {
+      for (const bool fresnel : {false, true}) {
+        for (const bool beers : {false, true}) {
+          for (const OffsetPolicy offset : {OffsetPolicy::Relative, OffsetPolicy::Course}) {
+            flags.brdf = brdf;
+            flags.fresnel = fresnel;
+            flags.beers = beers;
+            flags.arithmetic.offset = offset;
+            CAPTURE(int(brdf), fresnel, beers, int(offset));
+            CHECK(allFinite(render(scene, 40, 30, flags)));
+          }
+        }
+      }
+    }
+  };
+  SECTION("our test scenes") {
+    for (const char* file : {"/scenes/glass_mirror.pov", "/scenes/under_glass.pov"}) {
+      CAPTURE(file);
+      each(loadScene(sourceDir() + file));
+    }
+  }
+  SECTION("hostile materials: negative exponent, tiny ior, pigment above 1, light on a surface") {
+    SceneDesc scene = emptyScene();
+    scene.lights.push_back({{0, 0, -4}, Color(2)});
+    Material odd = pov(Color(1.5f, 0, 1), 0.1f, 0.9f, 0.9f, 5.0f, 0.3f);
+    odd.filter = 0.7f;
+    odd.ior = 0.01f;
+    add(scene, SphereDesc{{0, 0, -5}, 1}, odd);
+    Material rough = pov(Color(0.5f), 0.1f, 0.5f, 1, 0.001f);
+    rough.filter = 1;
+    rough.ior = 40;
+    add(scene, TriangleDesc{{-3, -1, -3}, {3, -1, -3}, {0, 3, -8}}, rough);
+    add(scene, TriangleDesc{{0, 0, -6}, {1, 1, -6}, {2, 2, -6}}, odd);  // degenerate
+    add(scene, PlaneDesc{{0, 1, 0}, -1}, odd);
+    each(scene);
+  }
+}
+
+TEST_CASE("A rendered pixel is the colour pixel() reports for it: packets change nothing", "[render]") {
+  // pixel() traces one ray at a time, as printrays and pixelcolor do; render() goes through Tracer::block's
+  // packets and shadow cache. Scenes with and without a hierarchy, several lights, mirrors and glass.
+  for (const char* file : {"/scenes/glass_mirror.pov", "/scenes/shapes.pov", "/scenes/stability/s3_glass_mirrors.pov",
+                           "/scenes/default.pov", "/scenes/stability/s1_grazing.pov"}) {
+    const SceneDesc scene = loadScene(sourceDir() + file);
+    for (const int samples : {1, 2}) {
+      for (const Hierarchy hierarchy : {Hierarchy::Always, Hierarchy::Never}) {
+        CAPTURE(file, samples, int(hierarchy));
+        RenderOptions options;
+        options.samples = samples;
+        options.fresnel = samples == 2;
+        options.hierarchy = hierarchy;
+        const Image image = render(scene, 37, 23, options);
+        const Arithmetic arithmetic = chooseArithmetic(scene, options.arithmetic);
+        withPrecision(arithmetic.precision, [&](auto tag) {
+          using T = decltype(tag);
+          const Scene<T> s(scene, arithmetic, hierarchy);
+          const Camera<T> camera(scene.camera, 37, 23);
+          Tracer<T> tracer(s, options);
+          for (int y = 0; y < 23; ++y) {
+            for (int x = 0; x < 37; ++x) {
+              CAPTURE(x, y);
+              REQUIRE(image.at(x, y) == tracer.pixel(camera, x, y));
+            }
+          }
+        });
+      }
+    }
+  }
+}
+
+TEST_CASE("renderRgb8 holds the bytes of render()'s colours, on any number of threads", "[render]") {
+  // The .cli scene truncates where the course rounds: each keeps its own convention.
+  for (const char* file : {"/scenes/glass_mirror.pov", "/scenes/pillars.cli"}) {
+    const SceneDesc scene = loadScene(sourceDir() + file);
+    RenderOptions options;
+    options.samples = 2;
+    options.threads = 1;
+    const Image colours = render(scene, 45, 37, options);  // sizes that do not divide into tiles
+    for (const int threads : {1, 3}) {
+      CAPTURE(file, threads);
+      options.threads = threads;
+      Rgb8Image bytes = renderRgb8(scene, 45, 37, options);
+      for (int y = 0; y < 37; ++y) {
+        for (int x = 0; x < 45; ++x) {
+          for (int c = 0; c < 3; ++c) {
+            REQUIRE(bytes.at(x, y)[c] == toByte(colours.at(x, y)[c], scene.conventions.toByte));
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("Bad shading flags are reported with the accepted values", "[render]") {
+  const auto error = [](std::vector<std::string> args) -> std::string {
+    std::ostringstream out, err;
+    try {
+      runCommand(args, out, err);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  CHECK(error({"render", "scene.pov", "4", "4", "-ss=0"}) == "-ss must be between 1 and 64, found 0");
+  CHECK(error({"render", "scene.pov", "4", "4", "-ss=x"}) == "-ss must be a whole number, found 'x'");
+  CHECK(error({"printrays", "scene.pov", "4", "4", "0", "0", "--offset=epsilon"}) ==
+        "--offset must be relative, course, normal or wb, found 'epsilon'");
+  CHECK(error({"render", "scene.pov", "4", "4", "--depth=-1"}) == "--depth must be between 0 and 64, found -1");
+  CHECK(error({"pixelcolor", "scene.pov", "4", "4", "0", "0", "-altbrdff"}) ==
+        "unknown option '-altbrdff' (see raytrace --help)");
+}

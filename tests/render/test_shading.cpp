@@ -1,0 +1,152 @@
+#include <cmath>
+#include <random>
+
+#include <catch2/catch.hpp>
+
+#include "raytrace/render/shading.hpp"
+
+using namespace rt;
+using Catch::Matchers::WithinAbs;
+
+namespace {
+
+const Vec3<double> up(0, 0, 1);
+
+Vec3<double> unit(double x, double y, double z) { return glm::normalize(Vec3<double>(x, y, z)); }
+
+}  // namespace
+
+TEST_CASE("Blinn-Phong specular is the clamped half-vector cosine to the exponent", "[shading]") {
+  // Light straight above, viewer 45° off: h is 22.5° off the normal.
+  const Vec3<double> v = unit(0, 1, 1);
+  CHECK_THAT(blinnPhongSpecular(up, up, up, 20.0f), WithinAbs(1.0, 1e-6));
+  CHECK_THAT(blinnPhongSpecular(up, v, up, 6.0f), WithinAbs(std::pow(std::cos(M_PI / 8), 6.0), 1e-6));
+  // Roughness 1 gives exponent 0 and a constant factor 1 (§c.1), even where n·h = 0.
+  CHECK(blinnPhongSpecular(up, unit(1, 0, 0), unit(0, 1, 0), 0.0f) == 1.0f);
+  // A negative exponent (roughness > 1) is treated as 0 instead of giving 0^p = ∞.
+  CHECK(blinnPhongSpecular(up, unit(1, 0, 0), unit(0, 1, 0), -1.5f) == 1.0f);
+  // Opposite light and view have no half vector.
+  CHECK(blinnPhongSpecular(up, unit(1, 0, 0), unit(-1, 0, 0), 5.0f) == 0.0f);
+  CHECK(blinnPhongSpecular(up, unit(1, 0, 1), unit(-1, 0, 1), 5.0f) == 1.0f);
+}
+
+TEST_CASE("Cook-Torrance GGX at normal incidence is F0 / (4 pi alpha^2)", "[shading]") {
+  // n = v = l: D = 1/(πα²), G = 1, F = F0, denominator 4·n·v = 4.
+  const float roughness = 0.5f, alpha = 0.25f;
+  const double f0 = std::pow(0.5 / 2.5, 2);
+  CHECK_THAT(cookTorranceSpecular(up, up, up, roughness, 1.5f), WithinAbs(f0 / (4 * M_PI * alpha * alpha), 1e-6));
+  // Light or viewer below the surface: nothing.
+  CHECK(cookTorranceSpecular(up, up, unit(1, 0, -0.1), roughness, 1.5f) == 0.0f);
+  CHECK(cookTorranceSpecular(up, unit(1, 0, -0.1), up, roughness, 1.5f) == 0.0f);
+  // Grazing: finite and non-negative.
+  const float grazing = cookTorranceSpecular(up, unit(1, 0, 1e-30), unit(-1, 0, 1e-30), 0.001f, 1.5f);
+  CHECK(std::isfinite(grazing));
+  CHECK(grazing >= 0.0f);
+}
+
+TEST_CASE("Schlick's Fresnel term matches the course's fresnel1 check", "[shading]") {
+  CHECK_THAT(schlick(1.0f, 1.5f), WithinAbs(0.04, 1e-7));
+  CHECK_THAT(schlick(0.0f, 1.5f), WithinAbs(1.0, 1e-7));
+  // §c.5: ior 1.02, n·v = 0.2158 gives F = 0.2966.
+  CHECK_THAT(schlick(0.2158f, 1.02f), WithinAbs(0.2966, 5e-5));
+}
+
+TEST_CASE("Weights split a hit between local shading, reflection and transmission", "[shading]") {
+  Material glass;
+  glass.filter = 0.95f;
+  // p4/test4: f = 0.95, F = 0.2966 → 0.0500 Local, 0.2818 Reflection, 0.6682 Transmission.
+  const Weights w = weights(glass, 0.2966f, true);
+  CHECK_THAT(w.local, WithinAbs(0.05, 1e-6));
+  CHECK_THAT(w.reflection, WithinAbs(0.2818, 1e-4));
+  CHECK_THAT(w.transmission, WithinAbs(0.6682, 1e-4));
+  Material mirror;
+  mirror.reflection = 0.8f;
+  const Weights course = weights(mirror, 0.0f, true);
+  CHECK_THAT(course.local, WithinAbs(0.2, 1e-6));
+  CHECK_THAT(course.reflection, WithinAbs(0.8, 1e-6));
+  CHECK(course.transmission == 0.0f);
+  // The .cli rule adds the reflection on top of the whole local colour.
+  const Weights cli = weights(mirror, 0.0f, false);
+  CHECK(cli.local == 1.0f);
+  CHECK_THAT(cli.reflection, WithinAbs(0.8, 1e-6));
+}
+
+TEST_CASE("Reflection mirrors the direction about the normal", "[shading]") {
+  const Vec3<double> r = reflectDirection(unit(1, -1, 0), Vec3<double>(0, 1, 0));
+  CHECK_THAT(r.x, WithinAbs(std::sqrt(0.5), 1e-12));
+  CHECK_THAT(r.y, WithinAbs(std::sqrt(0.5), 1e-12));
+  CHECK_THAT(r.z, WithinAbs(0.0, 1e-12));
+  // The normal's orientation does not matter.
+  const Vec3<double> flipped = reflectDirection(unit(1, -1, 0), Vec3<double>(0, -1, 0));
+  CHECK_THAT(glm::length(flipped - r), WithinAbs(0.0, 1e-12));
+}
+
+TEST_CASE("Refraction follows Snell's law entering and leaving, and reports total internal reflection",
+          "[shading]") {
+  const Vec3<double> n(0, 1, 0);  // outward
+  SECTION("normal incidence passes straight through") {
+    const auto t = refractDirection(Vec3<double>(0, -1, 0), n, 1.5f);
+    REQUIRE(t);
+    CHECK_THAT(t->y, WithinAbs(-1.0, 1e-12));
+  }
+  SECTION("entering at 45 degrees bends toward the normal") {
+    const auto t = refractDirection(unit(1, -1, 0), n, 1.5f);
+    REQUIRE(t);
+    CHECK_THAT(t->x, WithinAbs(std::sin(M_PI / 4) / 1.5, 1e-7));
+    CHECK(t->y < 0);
+  }
+  SECTION("leaving at 30 degrees bends away from the normal") {
+    const auto t = refractDirection(Vec3<double>(std::sin(M_PI / 6), std::cos(M_PI / 6), 0), n, 1.5f);
+    REQUIRE(t);
+    CHECK_THAT(t->x, WithinAbs(1.5 * 0.5, 1e-7));
+    CHECK(t->y > 0);
+  }
+  SECTION("leaving beyond the critical angle is total internal reflection") {
+    CHECK_FALSE(refractDirection(Vec3<double>(std::sin(M_PI / 3), std::cos(M_PI / 3), 0), n, 1.5f));
+  }
+  SECTION("sweep: TIR exactly beyond the critical angle, unit directions otherwise (stability.md T8)") {
+    for (const float ior : {1.5f, 1.0f / 1.5f, 2.42f}) {
+      for (int step = 0; step < 900; ++step) {
+        const double theta = step * 0.1 * M_PI / 180;
+        CAPTURE(ior, step);
+        const Vec3<double> leaving(std::sin(theta), std::cos(theta), 0);  // from inside, against −n
+        const auto t = refractDirection(leaving, n, ior);
+        const double s = double(ior) * std::sin(theta);
+        if (s > 1 + 1e-6) CHECK_FALSE(t);
+        if (s < 1 - 1e-6) {
+          REQUIRE(t);
+          CHECK_THAT(glm::length(*t), WithinAbs(1.0, 1e-12));
+          CHECK_THAT(t->x, WithinAbs(s, 1e-6));
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("Beer's law attenuates by the complement of the pigment", "[shading]") {
+  const Color kept = beerAttenuation(Color(1.0f, 0.5f, 0.0f), 2.0f);
+  CHECK(kept.r == 1.0f);
+  CHECK_THAT(kept.g, WithinAbs(std::exp(-0.15), 1e-6));
+  CHECK_THAT(kept.b, WithinAbs(std::exp(-0.3), 1e-6));
+  // An infinite path absorbs what can be absorbed and nothing becomes NaN.
+  const Color far = beerAttenuation(Color(1.0f, 0.5f, 1.5f), std::numeric_limits<float>::infinity());
+  CHECK(far == Color(1.0f, 0.0f, 1.0f));
+}
+
+TEST_CASE("Shading terms stay finite for random unit vectors", "[shading]") {
+  const unsigned seed = 473;
+  CAPTURE(seed);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<float> r(0.001f, 1.0f), ior(0.1f, 3.0f);
+  for (int i = 0; i < 10000; ++i) {
+    const Vec3<double> n = unit(g(rng), g(rng), g(rng)), v = unit(g(rng), g(rng), g(rng)),
+                       l = unit(g(rng), g(rng), g(rng));
+    const float rough = r(rng), eta = ior(rng);
+    CAPTURE(i);
+    CHECK(std::isfinite(blinnPhongSpecular(n, v, l, 2 / (rough * rough) - 2)));
+    CHECK(std::isfinite(cookTorranceSpecular(n, v, l, rough, eta)));
+    const auto t = refractDirection(-v, n, eta);
+    if (t) CHECK(std::isfinite(t->x + t->y + t->z));
+  }
+}
