@@ -9,10 +9,6 @@
 
 namespace rt {
 
-namespace {
-constexpr int kMaxThreads = 1024;
-}  // namespace
-
 int parseInt(const std::string& s, const char* what, int lo, int hi) {
   errno = 0;
   char* end = nullptr;
@@ -28,11 +24,21 @@ int parseInt(const std::string& s, const char* what, int lo, int hi) {
   return int(v);
 }
 
-// The value of `--flag=value` among `names`, or an error listing them: "--flag must be a, b or c, found 'v'".
 namespace {
 
-template <class E>
-E choice(const char* flag, const std::string& value, std::initializer_list<std::pair<const char*, E>> names) {
+template <class E> using Names = std::initializer_list<std::pair<const char*, E>>;
+
+const Names<Precision> kPrecisions = {{"float", Precision::Float}, {"double", Precision::Double},
+                                      {"course", Precision::Course}, {"auto", Precision::Auto}};
+const Names<SphereMethod> kSpheres = {{"textbook", SphereMethod::Textbook}, {"robust", SphereMethod::Robust},
+                                      {"auto", SphereMethod::Auto}};
+const Names<OffsetPolicy> kOffsets = {{"relative", OffsetPolicy::Relative}, {"course", OffsetPolicy::Course},
+                                      {"normal", OffsetPolicy::FixedNormal}, {"wb", OffsetPolicy::WaechterBinder}};
+const Names<Hierarchy> kHierarchies = {{"auto", Hierarchy::Auto}, {"always", Hierarchy::Always},
+                                       {"never", Hierarchy::Never}};
+
+// The value of `--flag=value` among `names`, or an error listing them: "--flag must be a, b or c, found 'v'".
+template <class E> E choice(const char* flag, const std::string& value, Names<E> names) {
   std::string list;
   size_t i = 0;
   for (const auto& [name, e] : names) {
@@ -43,7 +49,33 @@ E choice(const char* flag, const std::string& value, std::initializer_list<std::
   throw Error(std::string(flag) + " must be " + list + ", found '" + value + "'");
 }
 
+template <class E> std::string nameOf(Names<E> names, E value) {
+  for (const auto& [name, e] : names) {
+    if (e == value) return name;
+  }
+  return "?";
+}
+
 }  // namespace
+
+std::string pixelFlags(const RenderOptions& o) {
+  const RenderOptions defaults;
+  std::string flags;
+  const auto add = [&](bool differs, const std::string& flag) {
+    if (differs) flags += (flags.empty() ? "" : " ") + flag;
+  };
+  add(o.arithmetic.precision != defaults.arithmetic.precision,
+      "--precision=" + nameOf(kPrecisions, o.arithmetic.precision));
+  add(o.arithmetic.sphere != defaults.arithmetic.sphere, "--sphere=" + nameOf(kSpheres, o.arithmetic.sphere));
+  add(o.arithmetic.offset.has_value(), "--offset=" + nameOf(kOffsets, o.arithmetic.offset.value_or(OffsetPolicy())));
+  add(o.depth.has_value(), "--depth=" + std::to_string(o.depth.value_or(0)));
+  add(o.samples != defaults.samples, "-ss=" + std::to_string(o.samples));
+  add(o.brdf != defaults.brdf, "-altbrdf");
+  add(o.fresnel, "-fresnel");
+  add(o.beers, "-beers");
+  add(o.normals, "-normals");
+  return flags;
+}
 
 RenderOptions parseFlag(const std::string& flag, RenderOptions o) {
   const auto value = [&](const std::string& name) -> const char* {
@@ -51,28 +83,19 @@ RenderOptions parseFlag(const std::string& flag, RenderOptions o) {
   };
   if (flag == "-sds") return o;  // the course's "use a hierarchy": ours decides per scene (Scene, Hierarchy)
   if (const char* p = value("--precision")) {
-    o.arithmetic.precision = choice<Precision>("--precision", p,
-                                               {{"float", Precision::Float}, {"double", Precision::Double},
-                                                {"course", Precision::Course}, {"auto", Precision::Auto}});
+    o.arithmetic.precision = choice("--precision", p, kPrecisions);
     return o;
   }
   if (const char* p = value("--sphere")) {
-    o.arithmetic.sphere = choice<SphereMethod>("--sphere", p,
-                                               {{"textbook", SphereMethod::Textbook},
-                                                {"robust", SphereMethod::Robust}, {"auto", SphereMethod::Auto}});
+    o.arithmetic.sphere = choice("--sphere", p, kSpheres);
     return o;
   }
   if (const char* p = value("--offset")) {
-    o.arithmetic.offset = choice<OffsetPolicy>(
-        "--offset", p,
-        {{"relative", OffsetPolicy::Relative}, {"course", OffsetPolicy::Course},
-         {"normal", OffsetPolicy::FixedNormal}, {"wb", OffsetPolicy::WaechterBinder}});
+    o.arithmetic.offset = choice("--offset", p, kOffsets);
     return o;
   }
   if (const char* p = value("--hierarchy")) {
-    o.hierarchy = choice<Hierarchy>("--hierarchy", p,
-                                    {{"auto", Hierarchy::Auto}, {"always", Hierarchy::Always},
-                                     {"never", Hierarchy::Never}});
+    o.hierarchy = choice("--hierarchy", p, kHierarchies);
     return o;
   }
   if (const char* p = value("--depth")) {

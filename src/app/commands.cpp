@@ -1,5 +1,6 @@
 #include "raytrace/app/commands.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <functional>
 
@@ -7,6 +8,7 @@
 
 #include "raytrace/app/arguments.hpp"
 #include "raytrace/app/invocation.hpp"
+#include "raytrace/app/merge.hpp"
 #include "raytrace/parse/scene_file.hpp"
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/parallel.hpp"
@@ -24,26 +26,158 @@ struct Command {
   const char* args;  // after the scene, for usage and messages
   int numbers;       // 0, 2 (width height) or 4 (width height x y)
   std::function<int(const Invocation&, std::ostream&)> run;
-  bool sizeOptional = false;  // width and height may be left out for kDefaultSide × kDefaultSide
+  const char* summary;          // what `raytrace help <command>` says it does
+  bool writesImage = false;     // takes -o, --tile and --region
+  bool sizeOptional = false;    // width and height may be left out for kDefaultSide × kDefaultSide
 };
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
-      {"raycast", "<width> <height>", 2, raycast},
-      {"sceneinfo", "", 0, sceneinfo},
-      {"pixelray", "<width> <height> <x> <y>", 4, pixelray},
-      {"firsthit", "<width> <height> <x> <y>", 4, firsthit},
-      {"render", "[<width> <height>]", 2, renderImage, true},
-      {"pixelcolor", "<width> <height> <x> <y>", 4, pixelcolor},
-      {"printrays", "<width> <height> <x> <y>", 4, printrays},
-      {"pixeltrace", "<width> <height> <x> <y>", 4, pixeltrace},
-      {"printbvh", "", 0, printbvh},
+      {"raycast", "<width> <height>", 2, raycast, "each pixel the colour of the first object its ray hits", true},
+      {"sceneinfo", "", 0, sceneinfo, "the camera, lights and objects as parsed"},
+      {"pixelray", "<width> <height> <x> <y>", 4, pixelray, "the eye ray of pixel (x, y), y counted upward"},
+      {"firsthit", "<width> <height> <x> <y>", 4, firsthit, "the first object the pixel's eye ray hits"},
+      {"render", "[<width> <height>]", 2, renderImage,
+       "the ray-traced image; a .cli scene's `write`s each their own (default size 300 x 300)", true, true},
+      {"pixelcolor", "<width> <height> <x> <y>", 4, pixelcolor, "the pixel's shaded colour and first hit"},
+      {"printrays", "<width> <height> <x> <y>", 4, printrays, "every ray the pixel's colour is made of"},
+      {"pixeltrace", "<width> <height> <x> <y>", 4, pixeltrace, "printrays with the shadow rays"},
+      {"printbvh", "", 0, printbvh, "the bounding volume hierarchy of the scene"},
   };
   return table;
 }
 
+constexpr const char* kMergeUsage = "raytrace merge -o <image> <tile.exr>... [--threads N]";
+constexpr const char* kMergeSummary =
+    "the tiles of one render (--tile, --region) joined into its image, exactly as one machine renders it";
+
 std::string commandUsage(const Command& c) {
   return std::string("raytrace ") + c.name + " <scene>" + (c.args[0] ? " " : "") + c.args;
+}
+
+const char* const kRenderOptions =
+    "options:\n"
+    "  --precision=float|double|course|auto\n"
+    "                                  arithmetic for geometry (default auto: chosen per scene); course\n"
+    "                                  is the course reference's float arithmetic and 0.001 offsets\n"
+    "  --sphere=textbook|robust|auto   ray-sphere formula (default auto: chosen per scene)\n"
+    "  --offset=relative|course|normal|wb\n"
+    "                                  spawned-ray origins (default: the arithmetic's): relative normal\n"
+    "                                  offset, the course's 0.001 along the normal, a fixed 1e-4 along\n"
+    "                                  the normal, or Waechter-Binder's ulp offset\n"
+    "  --depth=N                       deepest reflection/refraction level (default: the scene language's)\n"
+    "  -altbrdf                        Cook-Torrance (GGX) instead of Blinn-Phong\n"
+    "  -fresnel                        Schlick-weighted reflection and refraction\n"
+    "  -beers                          Beer's-law absorption inside transparent objects\n"
+    "  -ss=N                           N x N stratified samples per pixel (1 to 64)\n"
+    "  -normals                        colour each hit by its normal (debug)\n"
+    "  --threads N                     load, build and render on N threads (default: every core); same\n"
+    "                                  scene and image for any N\n"
+    "  --quiet                         no progress line (shown only while rendering to a terminal)\n"
+    "  --stats                         after render, how long loading, building, tracing and writing the\n"
+    "                                  image took (stderr)\n"
+    "  -sds                            accepted for the course; a hierarchy is used whenever it pays\n"
+    "  --hierarchy=auto|always|never   force the bounding volume hierarchy on or off (same image)\n";
+
+const char* const kImageOptions =
+    "image options (raycast, render):\n"
+    "  -o, --output FILE               the image file (default output.png); its extension picks the format:\n"
+    "                                  .png (8-bit), .hdr (Radiance RGBE) or .exr (OpenEXR, 32-bit float),\n"
+    "                                  the last two the linear radiance before clamping. For a .cli scene\n"
+    "                                  that writes its own images, the folder to write them into\n"
+    "  --tile I/N                      render only the I-th of N bands of rows (0 <= I < N), written to\n"
+    "                                  -o NAME.exr as a tile for merge\n"
+    "  --region X0,Y0,X1,Y1            render only columns X0 to X1-1 and rows Y0 to Y1-1, rows counted\n"
+    "                                  from the top, written to -o NAME.exr as a tile for merge\n";
+
+// The command nearest to `word` by edit distance, if a typo's distance away (at most 2).
+const char* nearestCommand(const std::string& word) {
+  const char* best = nullptr;
+  size_t bestDistance = 3;
+  std::vector<const char*> names{"merge", "help"};
+  for (const Command& c : commands()) names.push_back(c.name);
+  for (const char* candidate : names) {
+    const std::string name(candidate);
+    // Levenshtein distance, one row at a time.
+    std::vector<size_t> row(name.size() + 1);
+    for (size_t j = 0; j <= name.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= word.size(); ++i) {
+      size_t diagonal = row[0];
+      row[0] = i;
+      for (size_t j = 1; j <= name.size(); ++j) {
+        const size_t above = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (word[i - 1] == name[j - 1] ? 0 : 1)});
+        diagonal = above;
+      }
+    }
+    if (row[name.size()] < bestDistance) {
+      bestDistance = row[name.size()];
+      best = candidate;
+    }
+  }
+  return best;
+}
+
+const Command* findCommand(const std::string& name) {
+  for (const Command& c : commands()) {
+    if (name == c.name) return &c;
+  }
+  return nullptr;
+}
+
+[[noreturn]] void unknownCommand(const std::string& name) {
+  const char* near = nearestCommand(name);
+  throw Error("unknown command '" + name + "'" + (near ? " (did you mean '" + std::string(near) + "'?)" : "") +
+              "; raytrace --help lists the commands");
+}
+
+// `raytrace help <command>` and `raytrace <command> --help`.
+std::string commandHelp(const std::string& name) {
+  if (name == "merge") return std::string("usage: ") + kMergeUsage + "\n" + kMergeSummary + "\n";
+  const Command* c = findCommand(name);
+  if (!c) unknownCommand(name);
+  return "usage: " + commandUsage(*c) + " [options]\n" + c->summary + "\n" + kRenderOptions +
+         (c->writesImage ? kImageOptions : "");
+}
+
+// The value of an option written `--name VALUE` or `--name=VALUE` at args[i], moving i past it; nothing if
+// args[i] is not that option.
+std::optional<std::string> optionValue(const std::vector<std::string>& args, size_t& i,
+                                       std::initializer_list<const char*> names) {
+  for (const char* name : names) {
+    const std::string n(name);
+    if (args[i] == n) {
+      if (i + 1 == args.size()) throw Error(n + " needs a value");
+      return args[++i];
+    }
+    if (args[i].rfind(n + "=", 0) == 0) return args[i].substr(n.size() + 1);
+  }
+  return std::nullopt;
+}
+
+// "I/N" of --tile: the I-th of N row bands of a picture `height` rows high.
+Region parseTile(const std::string& value, int width, int height) {
+  const size_t slash = value.find('/');
+  if (slash == std::string::npos) throw Error("--tile must be I/N, as 0/4, found '" + value + "'");
+  const int n = parseInt(value.substr(slash + 1), "--tile's N", 1, height);
+  const int i = parseInt(value.substr(0, slash), "--tile's I", 0, n - 1);
+  return rowBand(i, n, width, height);
+}
+
+// "X0,Y0,X1,Y1" of --region, within the width × height picture.
+Region parseRegion(const std::string& value, int width, int height) {
+  std::vector<std::string> parts(1);
+  for (const char c : value) {
+    if (c == ',') parts.emplace_back();
+    else parts.back() += c;
+  }
+  if (parts.size() != 4) throw Error("--region must be X0,Y0,X1,Y1, as 0,0,64,48, found '" + value + "'");
+  Region r;
+  r.x0 = parseInt(parts[0], "--region's X0", 0, width - 1);
+  r.y0 = parseInt(parts[1], "--region's Y0", 0, height - 1);
+  r.x1 = parseInt(parts[2], "--region's X1", r.x0 + 1, width);
+  r.y1 = parseInt(parts[3], "--region's Y1", r.y0 + 1, height);
+  return r;
 }
 
 }  // namespace
@@ -51,53 +185,63 @@ std::string commandUsage(const Command& c) {
 std::string usage() {
   std::string text = "usage:\n";
   for (const Command& c : commands()) text += "  " + commandUsage(c) + " [options]\n";
-  text +=
-      "options:\n"
-      "  --precision=float|double|course|auto\n"
-      "                                  arithmetic for geometry (default auto: chosen per scene); course\n"
-      "                                  is the course reference's float arithmetic and 0.001 offsets\n"
-      "  --sphere=textbook|robust|auto   ray-sphere formula (default auto: chosen per scene)\n"
-      "  --offset=relative|course|normal|wb\n"
-      "                                  spawned-ray origins (default: the arithmetic's): relative normal\n"
-      "                                  offset, the course's 0.001 along the normal, a fixed 1e-4 along\n"
-      "                                  the normal, or Waechter-Binder's ulp offset\n"
-      "  --depth=N                       deepest reflection/refraction level (default: the scene language's)\n"
-      "  -altbrdf                        Cook-Torrance (GGX) instead of Blinn-Phong\n"
-      "  -fresnel                        Schlick-weighted reflection and refraction\n"
-      "  -beers                          Beer's-law absorption inside transparent objects\n"
-      "  -ss=N                           N x N stratified samples per pixel (1 to 64)\n"
-      "  -normals                        colour each hit by its normal (debug)\n"
-      "  --threads N                     load, build and render on N threads (default: every core); same\n"
-      "                                  scene and image for any N\n"
-      "  --quiet                         no progress line (shown only while rendering to a terminal)\n"
-      "  --stats                         after render, how long loading, building, tracing and writing the\n"
-      "                                  PNG took (stderr)\n"
-      "  -sds                            accepted for the course; a hierarchy is used whenever it pays\n"
-      "  --hierarchy=auto|always|never   force the bounding volume hierarchy on or off (same image)\n";
-  return text;
+  text += std::string("  ") + kMergeUsage + "\n  raytrace help <command>\n  raytrace --version\n";
+  return text + kRenderOptions + kImageOptions;
 }
 
 int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  if (args.empty()) throw Error("no command given\n" + usage());
+  if (args.empty()) throw Error("no command given; raytrace --help lists the commands");
   if (args[0] == "--help" || args[0] == "-h") {
     out << usage();
     return 0;
   }
-  const Command* command = nullptr;
-  for (const Command& c : commands()) {
-    if (args[0] == c.name) command = &c;
+  if (args[0] == "--version") {
+    out << "raytrace " << RAYTRACE_VERSION << "\n";
+    return 0;
   }
-  if (!command) throw Error("unknown command '" + args[0] + "'\n" + usage());
+  if (args[0] == "help") {
+    if (args.size() != 2) throw Error("help takes one command, as in: raytrace help render");
+    out << commandHelp(args[1]);
+    return 0;
+  }
+  const bool help = std::find(args.begin() + 1, args.end(), "--help") != args.end();
+  if (args[0] == "merge" || findCommand(args[0])) {
+    if (help) {
+      out << commandHelp(args[0]);
+      return 0;
+    }
+  }
+  if (args[0] == "merge") return merge(std::vector<std::string>(args.begin() + 1, args.end()));
+  const Command* command = findCommand(args[0]);
+  if (!command) unknownCommand(args[0]);
 
   // Flags start with '-' and a letter; anything else (a negative number too) is positional.
   std::vector<std::string> positional;
   RenderOptions options;
   bool stats = false;
+  std::string tile, region;
+  Invocation inv;
   if (isatty(STDERR_FILENO)) options.progress = &err;  // only render() shows it, and only to a person
   for (size_t i = 1; i < args.size(); ++i) {
     std::string a = args[i];
     if (a == "--stats") {  // not a render option: the command line reports it
       stats = true;
+      continue;
+    }
+    if (const auto v = optionValue(args, i, {"-o", "--output"})) {
+      if (!command->writesImage) throw Error(a + " is for the commands that write images (raycast, render)");
+      if (v->empty()) throw Error(a + " needs a file name");
+      inv.output = *v;
+      continue;
+    }
+    if (const auto v = optionValue(args, i, {"--tile"})) {
+      if (!command->writesImage) throw Error("--tile is for the commands that write images (raycast, render)");
+      tile = *v;
+      continue;
+    }
+    if (const auto v = optionValue(args, i, {"--region"})) {
+      if (!command->writesImage) throw Error("--region is for the commands that write images (raycast, render)");
+      region = *v;
       continue;
     }
     if (a == "--threads") {  // also written --threads=N
@@ -117,7 +261,8 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
                 "\nusage: " + commandUsage(*command));
   }
   if (stats && std::string(command->name) != "render") throw Error("--stats is for the render command only");
-  Invocation inv;
+  if (!tile.empty() && !region.empty()) throw Error("--tile and --region both name the part to render: give one");
+  inv.scenePath = positional[0];
   inv.options = options;
   if (stats) inv.stats = &err;
   if (defaultSize) {
@@ -130,10 +275,14 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     inv.x = parseInt(positional[3], "pixel x", 0, inv.width - 1);
     inv.y = parseInt(positional[4], "pixel y", 0, inv.height - 1);
   }
+  if (!tile.empty()) inv.region = parseTile(tile, inv.width, inv.height);
+  if (!region.empty()) inv.region = parseRegion(region, inv.width, inv.height);
+  inv.tile = tile;
+  if (command->writesImage) checkOutput(inv);
   // The image commands render on all their threads: the helpers start while the file is read.
   if (command->numbers == 2) startHelpers(options.threads);
   Stopwatch watch;
-  inv.scene = loadScene(positional[0], options.threads);
+  inv.scene = loadScene(inv.scenePath, options.threads);
   inv.loadSeconds = watch.lap();
   for (const std::string& w : inv.scene.warnings) err << w << "\n";
   return command->run(inv, out);

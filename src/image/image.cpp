@@ -1,29 +1,21 @@
 #include "raytrace/image/image.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
 #include <new>
 #include <type_traits>
 
-#include <glm/gtc/type_ptr.hpp>
-#include <unistd.h>
-
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/limits.hpp"
-#include "raytrace/util/parallel.hpp"
-#include "raytrace/image/png.hpp"
 
 namespace rt {
 
 namespace {
 
-// What a PNG of the 8-bit pixels takes besides them: its compressed segments and the file, each about 3 bytes
-// a pixel at most.
-constexpr std::uint64_t kRgb8BytesPerPixel = 9;
+// What a PNG of the 8-bit pixels takes besides them: stb's filtered copy, libdeflate's output and stb's file,
+// each about 3 bytes a pixel at most.
+constexpr std::uint64_t kRgb8BytesPerPixel = 12;
 
 void checkMemory(int width, int height, std::uint64_t bytesPerPixel) {
   const std::uint64_t bytes = std::uint64_t(width) * std::uint64_t(height) * bytesPerPixel;
@@ -35,7 +27,7 @@ void checkMemory(int width, int height, std::uint64_t bytesPerPixel) {
 }  // namespace
 
 Image::Image(int width, int height) : width_(width), height_(height) {
-  // The float pixels, then the 8-bit ones writePng makes of them.
+  // The float pixels, then the 8-bit ones and the PNG file that may be made of them.
   checkMemory(width, height, sizeof(Color) + kRgb8BytesPerPixel);
   static_assert(std::is_trivially_copyable_v<Color>, "pixels start as calloc's zero bytes");
   pixels_.reset(static_cast<Color*>(std::calloc(size_t(width) * size_t(height), sizeof(Color))));
@@ -59,35 +51,6 @@ unsigned char toByte(float c, Conventions::ToByte mode) {
 
 void toBytes(const float* in, size_t count, unsigned char* out, Conventions::ToByte mode) {
   for (size_t i = 0; i < count; ++i) out[i] = toByte(in[i], mode);
-}
-
-void writePng(const Image& image, const std::string& path, Conventions::ToByte mode, int threads) {
-  Rgb8Image bytes(image.width(), image.height());
-  parallelFor(image.height(), threads, [&](int y) {
-    static_assert(sizeof(Color) == 3 * sizeof(float), "a row of pixels is 3·width floats in a row");
-    toBytes(glm::value_ptr(image.at(0, y)), size_t(image.width()) * 3, bytes.at(0, y), mode);
-  });
-  writePng(bytes, path, threads);
-}
-
-void writePng(const Rgb8Image& image, const std::string& path, int threads) {
-  const std::vector<unsigned char> png = encodePng(image.data(), image.width(), image.height(), threads);
-  const std::string temp = path + ".tmp" + std::to_string(getpid());
-  std::FILE* f = std::fopen(temp.c_str(), "wb");
-  if (!f) throw Error("cannot write '" + path + "': " + std::strerror(errno));
-  // A short write sets the stream's error flag, checked below.
-  std::fwrite(png.data(), 1, png.size(), f);
-  const bool failed = std::ferror(f) || std::fflush(f) != 0 || fsync(fileno(f)) != 0;
-  const int err = errno;
-  if (std::fclose(f) != 0 || failed) {
-    std::remove(temp.c_str());
-    throw Error("cannot write '" + path + "': " + std::strerror(err ? err : EIO));
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    const int renameErr = errno;
-    std::remove(temp.c_str());
-    throw Error("cannot write '" + path + "': " + std::strerror(renameErr));
-  }
 }
 
 }  // namespace rt

@@ -17,10 +17,12 @@ namespace {
 // enough that handing them out costs nothing.
 constexpr int kTile = 32;
 
-// Renders the scene tile by tile on the threads and hands each finished row of a tile to
-// store(x0, y, x1, colours): the colours of pixels x0 … x1 − 1 of row y.
+// Renders the region of the scene's width × height picture tile by tile on the threads and hands each
+// finished row of a tile to store(x0, y, x1, colours): the colours of pixels x0 … x1 − 1 of row y (counted
+// upward, as Image::at counts).
 template <class Store>
-void renderRows(const SceneDesc& desc, int width, int height, const RenderOptions& options, const Store& store) {
+void renderRows(const SceneDesc& desc, int width, int height, const Region& region, const RenderOptions& options,
+                const Store& store) {
   const Arithmetic arithmetic = chooseArithmetic(desc, options.arithmetic);
   withPrecision(arithmetic.precision, [&](auto tag) {
     using T = decltype(tag);
@@ -35,11 +37,14 @@ void renderRows(const SceneDesc& desc, int width, int height, const RenderOption
     // tiles one above another, whose rows lie on pages of their own: side by side, they would take the same
     // fresh pages of the image at once, and the kernel would fault each twice (the small bench scene at
     // 1280×960 on two threads: 1350-1860 page faults in all instead of 1240).
-    const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
-    ProgressMeter progress(options.progress, int64_t(width) * height, options.samples * options.samples);
+    // Every pixel's colour depends on its (x, y) alone, so a region's pixels are those of the whole picture.
+    const int left = region.x0, bottom = height - region.y1, right = region.x1, top = height - region.y0;
+    const int tilesX = (right - left + kTile - 1) / kTile, tilesY = (top - bottom + kTile - 1) / kTile;
+    ProgressMeter progress(options.progress, int64_t(region.width()) * region.height(),
+                           options.samples * options.samples);
     parallelFor(tilesX * tilesY, options.threads, [&](int tile) {
-      const int x0 = tile / tilesY * kTile, y0 = tile % tilesY * kTile;
-      const int x1 = std::min(width, x0 + kTile), y1 = std::min(height, y0 + kTile);
+      const int x0 = left + tile / tilesY * kTile, y0 = bottom + tile % tilesY * kTile;
+      const int x1 = std::min(right, x0 + kTile), y1 = std::min(top, y0 + kTile);
       Tracer<T> tileTracer = tracer;
       for (int y = y0; y < y1; ++y) store(x0, y, x1, tileTracer.block(camera, x0, y, x1, y + 1));
       progress.add(int64_t(x1 - x0) * (y1 - y0));
@@ -54,9 +59,15 @@ void renderRows(const SceneDesc& desc, int width, int height, const RenderOption
 }  // namespace
 
 Image render(const SceneDesc& desc, int width, int height, const RenderOptions& options) {
-  Image image(width, height);
-  renderRows(desc, width, height, options, [&](int x0, int y, int x1, const Color* colors) {
-    std::copy(colors, colors + (x1 - x0), &image.at(x0, y));
+  return render(desc, width, height, wholeImage(width, height), options);
+}
+
+Image render(const SceneDesc& desc, int width, int height, const Region& region, const RenderOptions& options) {
+  Image image(region.width(), region.height());
+  // Row y of the picture, counted upward, is row y − (height − y1) of the region's image.
+  const int bottom = height - region.y1;
+  renderRows(desc, width, height, region, options, [&](int x0, int y, int x1, const Color* colors) {
+    std::copy(colors, colors + (x1 - x0), &image.at(x0 - region.x0, y - bottom));
   });
   return image;
 }
@@ -64,7 +75,7 @@ Image render(const SceneDesc& desc, int width, int height, const RenderOptions& 
 Rgb8Image renderRgb8(const SceneDesc& desc, int width, int height, const RenderOptions& options) {
   Rgb8Image image(width, height);
   const Conventions::ToByte mode = desc.conventions.toByte;
-  renderRows(desc, width, height, options, [&](int x0, int y, int x1, const Color* colors) {
+  renderRows(desc, width, height, wholeImage(width, height), options, [&](int x0, int y, int x1, const Color* colors) {
     toBytes(glm::value_ptr(*colors), size_t(x1 - x0) * 3, image.at(x0, y), mode);
   });
   return image;

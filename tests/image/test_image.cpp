@@ -1,4 +1,4 @@
-// Colour to byte conversion and the PNG writer: exact bytes after a round trip through stb_image, no temporary
+// Colour to byte conversion and the image writer: exact bytes after a round trip through stb_image, no temporary
 // file left behind, and an existing file untouched when the write fails.
 #include <catch2/catch.hpp>
 
@@ -16,6 +16,7 @@
 
 #include "raytrace/util/error.hpp"
 #include "raytrace/image/image.hpp"
+#include "raytrace/image/image_file.hpp"
 #include "temp_dir.hpp"
 
 using rt::Conventions;
@@ -95,7 +96,7 @@ TEST_CASE("image: at(x, y) counts y upward from the bottom row") {
   CHECK(image.at(1, 0) == rt::Color(0));
 }
 
-TEST_CASE("image: writePng round-trips through stb_image, bottom row last, and leaves no temporary file") {
+TEST_CASE("image: writeImage of a .png round-trips through stb_image, bottom row last, and leaves no temporary file") {
   const rt::test::TempDir dir;
   rt::Image image(3, 2);
   image.at(0, 0) = rt::Color(1, 0, 0);          // bottom-left
@@ -103,7 +104,7 @@ TEST_CASE("image: writePng round-trips through stb_image, bottom row last, and l
   image.at(1, 1) = rt::Color(std::nanf(""), -1, 0.999f);
   for (const Mode mode : {Mode::Round, Mode::Truncate}) {
     const std::string path = dir.file("out.png");
-    rt::writePng(image, path, mode);
+    rt::writeImage(image, path, mode, 1);
     CHECK(dir.names() == std::vector<std::string>{"out.png"});
     int w = 0, h = 0, n = 0;
     unsigned char* px = stbi_load(path.c_str(), &w, &h, &n, 3);
@@ -127,7 +128,7 @@ TEST_CASE("image: a failed write leaves an existing file untouched and no tempor
   REQUIRE(chmod(dir.path().c_str(), 0555) == 0);
   {
     const Unprivileged guard;
-    CHECK_THROWS_WITH(rt::writePng(rt::Image(2, 2), target, Mode::Round),
+    CHECK_THROWS_WITH(rt::writeImage(rt::Image(2, 2), target, Mode::Round, 1),
                       "cannot write '" + target + "': Permission denied");
   }
   REQUIRE(chmod(dir.path().c_str(), 0755) == 0);
@@ -141,10 +142,10 @@ TEST_CASE("image: a target that cannot be replaced is reported and the temporary
   const std::string sub = dir.file("output.png");
   REQUIRE(mkdir(sub.c_str(), 0755) == 0);
   std::ofstream(sub + "/inside") << "y";
-  CHECK_THROWS_WITH(rt::writePng(rt::Image(2, 2), sub, Mode::Round), "cannot write '" + sub + "': Is a directory");
+  CHECK_THROWS_WITH(rt::writeImage(rt::Image(2, 2), sub, Mode::Round, 1), "cannot write '" + sub + "': Is a directory");
   CHECK(dir.names() == std::vector<std::string>{"keep", "output.png"});
   CHECK(rt::test::readAll(sub + "/inside") == "y");
-  CHECK_THROWS_WITH(rt::writePng(rt::Image(2, 2), dir.file("missing/out.png"), Mode::Round),
+  CHECK_THROWS_WITH(rt::writeImage(rt::Image(2, 2), dir.file("missing/out.png"), Mode::Round, 1),
                     "cannot write '" + dir.file("missing/out.png") + "': No such file or directory");
 }
 
@@ -153,9 +154,22 @@ TEST_CASE("image: a full disk leaves an existing file untouched and no temporary
   const std::string target = dir.write("output.png", "the previous picture");
   {
     const NoRoomToWrite full;
-    CHECK_THROWS_WITH(rt::writePng(rt::Image(64, 64), target, Mode::Round),
+    CHECK_THROWS_WITH(rt::writeImage(rt::Image(64, 64), target, Mode::Round, 1),
                       "cannot write '" + target + "': File too large");
   }
   CHECK(rt::test::readAll(target) == "the previous picture");
   CHECK(dir.names() == std::vector<std::string>{"output.png"});
+}
+
+TEST_CASE("image: toByte rounds half up exactly as std::lround and truncates as a cast") {
+  for (int k = 0; k <= 255; ++k) {
+    // Every float within 64 steps of each rounding boundary k + 0.5 (after the ×255).
+    float c = (float(k) + 0.5f) / 255.0f;
+    for (int i = 0; i < 64; ++i) c = std::nextafter(c, 0.0f);
+    for (int i = 0; i < 128; ++i, c = std::nextafter(c, 2.0f)) {
+      const float v = std::min(c, 1.0f) * 255.0f;
+      CHECK(int(rt::toByte(c, Mode::Round)) == std::lround(v));
+      CHECK(int(rt::toByte(c, Mode::Truncate)) == int(v));
+    }
+  }
 }

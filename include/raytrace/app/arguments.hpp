@@ -7,10 +7,16 @@
 
 namespace rt {
 
+constexpr int kMaxThreads = 1024;  // for --threads
+
 // `s` as a whole number in [lo, hi], or an Error naming `what`.
 int parseInt(const std::string& s, const char* what, int lo, int hi);
 
 // `options` with one flag (`-fresnel`, `--depth=3`, ...) applied, or an Error for an unknown or bad flag.
 RenderOptions parseFlag(const std::string& flag, RenderOptions options);
+
+// The flags that give `options` the values that change pixels, in a fixed order, defaults left out: ""
+// or "--depth=3 -ss=2 -fresnel". Two renders with the same flags here make the same pixels of the same scene.
+std::string pixelFlags(const RenderOptions& options);
 
 }  // namespace rt

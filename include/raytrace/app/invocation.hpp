@@ -2,9 +2,12 @@
 // command families share.
 #pragma once
 
+#include <optional>
 #include <ostream>
+#include <string>
 
 #include "raytrace/accel/scene.hpp"
+#include "raytrace/image/region.hpp"
 #include "raytrace/render/camera.hpp"
 #include "raytrace/render/renderer.hpp"
 #include "raytrace/scene/arithmetic.hpp"
@@ -13,8 +16,16 @@
 namespace rt {
 
 struct Invocation {
+  std::string scenePath;
   SceneDesc scene;
   int width = 0, height = 0, x = 0, y = 0;
+  // -o: the image file, or for a .cli scene that writes its own images the folder they go into; "" for the
+  // default, output.png or the scene's own names.
+  std::string output;
+  // --tile or --region: the part of the picture to render, written as an OpenEXR tile; `tile` is the --tile
+  // value ("" for --region).
+  std::optional<Region> region;
+  std::string tile;
   RenderOptions options;
   std::ostream* stats = nullptr;  // --stats: where render reports how long each step took
   double loadSeconds = 0;         // the reading of the scene file
@@ -34,6 +45,9 @@ template <class F> auto withScene(const Invocation& inv, F&& f) {
 // The image commands (image_commands.cpp).
 int raycast(const Invocation& inv, std::ostream& out);
 int renderImage(const Invocation& inv, std::ostream& out);
+// Throws the Error an image command's -o, --tile or --region would meet (an unknown format, a missing or
+// unwritable folder, a tile not named .exr), before the scene is read.
+void checkOutput(const Invocation& inv);
 
 // The commands that print what the renderer sees (inspect.cpp).
 int sceneinfo(const Invocation& inv, std::ostream& out);

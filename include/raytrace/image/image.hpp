@@ -1,4 +1,4 @@
-// Images in linear float colour and in the 8 bits a PNG file holds, and their safe writing as PNG files.
+// Images in linear float colour and in the 8 bits a PNG file holds.
 #pragma once
 
 #include <cstdlib>
@@ -20,6 +20,9 @@ class Image {
   // Pixel (x, y) with y growing upward, as the course numbers pixels (§a.0).
   Color& at(int x, int y) { return pixels_[size_t(height_ - 1 - y) * width_ + x]; }
   const Color& at(int x, int y) const { return pixels_[size_t(height_ - 1 - y) * width_ + x]; }
+  // Every pixel, top row first.
+  Color* data() { return pixels_.get(); }
+  const Color* data() const { return pixels_.get(); }
 
  private:
   struct Free {
@@ -55,12 +58,5 @@ class Rgb8Image {
 unsigned char toByte(float c, Conventions::ToByte mode);
 // toByte() of `count` channels in a row, into `out`.
 void toBytes(const float* in, size_t count, unsigned char* out, Conventions::ToByte mode);
-
-// Writes the image as PNG at `path` without ever leaving a partial file there: it is written beside the
-// target under a temporary name and renamed over it only once complete. `threads` compress in parallel; the
-// file is the same for any number. Throws Error on failure.
-void writePng(const Rgb8Image& image, const std::string& path, int threads = 1);
-// The same for a float image, each channel converted by toByte().
-void writePng(const Image& image, const std::string& path, Conventions::ToByte mode, int threads = 1);
 
 }  // namespace rt

@@ -6,6 +6,7 @@
 
 #include "raytrace/accel/bvh.hpp"
 #include "raytrace/image/image.hpp"
+#include "raytrace/image/region.hpp"
 #include "raytrace/util/parallel.hpp"
 #include "raytrace/scene/arithmetic.hpp"
 #include "raytrace/scene/description.hpp"
@@ -37,6 +38,8 @@ struct RenderOptions {
 
 // Renders the scene at width × height.
 Image render(const SceneDesc& scene, int width, int height, const RenderOptions& options);
+// Renders only the region of that picture: the same colours as those pixels of the whole render, bit for bit.
+Image render(const SceneDesc& scene, int width, int height, const Region& region, const RenderOptions& options);
 // The same straight to the 8 bits a PNG holds, each channel converted by toByte() with the scene's convention.
 Rgb8Image renderRgb8(const SceneDesc& scene, int width, int height, const RenderOptions& options);
 

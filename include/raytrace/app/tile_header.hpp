@@ -1,0 +1,26 @@
+// What a tile's OpenEXR header says of the render it belongs to, so that merge joins only the parts of one
+// render: the scene, its contents, the size, the options that change pixels and the byte conversion.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "raytrace/app/invocation.hpp"
+
+namespace rt {
+
+// The attribute naming which part of the picture a tile holds ("3/8", or "x0,y0,x1,y1" for --region): for
+// people reading the header; merge goes by the data window.
+constexpr const char* kTilePartAttribute = "raytrace.part";
+// The attribute naming the byte conversion ("round" or "truncate") that turns the tile's floats into a PNG's
+// bytes, the scene language's (Conventions::ToByte).
+constexpr const char* kToByteAttribute = "raytrace.toByte";
+
+// Every attribute of a tile of `command` ("render" or "raycast") with `inv`. The scene file is read again for
+// its hash (FNV-1a, 64 bits).
+std::map<std::string, std::string> tileHeader(const Invocation& inv, const std::string& command);
+
+// The byte conversion a header names, or an Error naming `file` for another value.
+Conventions::ToByte toByteOf(const std::map<std::string, std::string>& header, const std::string& file);
+
+}  // namespace rt

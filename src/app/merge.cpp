@@ -1,0 +1,107 @@
+#include "raytrace/app/merge.hpp"
+
+#include <algorithm>
+#include <optional>
+
+#include "raytrace/app/arguments.hpp"
+#include "raytrace/app/tile_header.hpp"
+#include "raytrace/image/exr_file.hpp"
+#include "raytrace/image/image_file.hpp"
+#include "raytrace/util/error.hpp"
+#include "raytrace/util/parallel.hpp"
+
+namespace rt {
+
+namespace {
+
+struct MergeArguments {
+  std::string output;
+  std::vector<std::string> tiles;
+  int threads = defaultThreads();
+};
+
+MergeArguments parseMerge(const std::vector<std::string>& args) {
+  MergeArguments m;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    const bool valued = a == "-o" || a == "--output" || a == "--threads";
+    if (valued && i + 1 == args.size()) throw Error(a + " needs a value");
+    if (a == "-o" || a == "--output") m.output = args[++i];
+    else if (a.rfind("--output=", 0) == 0) m.output = a.substr(9);
+    else if (a == "--threads") m.threads = parseInt(args[++i], "--threads", 1, kMaxThreads);
+    else if (a.rfind("--threads=", 0) == 0) m.threads = parseInt(a.substr(10), "--threads", 1, kMaxThreads);
+    else if (a.size() > 1 && a[0] == '-') throw Error("unknown option '" + a + "' for merge (see raytrace help merge)");
+    else m.tiles.push_back(a);
+  }
+  if (m.output.empty()) throw Error("merge needs -o OUTPUT, the image to write");
+  if (m.tiles.empty()) throw Error("merge needs the tiles to join");
+  return m;
+}
+
+// The first attribute, the part aside, in which `tile` differs from `first`: "" if none.
+std::string difference(const ExrImage& tile, const ExrImage& first) {
+  auto keys = tile.attributes;
+  keys.insert(first.attributes.begin(), first.attributes.end());
+  for (const auto& [key, ignored] : keys) {
+    if (key == kTilePartAttribute) continue;
+    const auto a = tile.attributes.find(key), b = first.attributes.find(key);
+    const std::string mine = a == tile.attributes.end() ? "none" : "'" + a->second + "'";
+    const std::string theirs = b == first.attributes.end() ? "none" : "'" + b->second + "'";
+    if (mine != theirs) return "its " + key + " is " + mine + ", not " + theirs;
+  }
+  return "";
+}
+
+std::string pixel(int x, int y) { return "column " + std::to_string(x) + ", row " + std::to_string(y); }
+
+}  // namespace
+
+int merge(const std::vector<std::string>& args) {
+  const MergeArguments m = parseMerge(args);
+  checkImagePath(m.output);
+  std::optional<ExrImage> first;
+  std::optional<Image> image;
+  std::vector<int> owner;  // per pixel of the picture, top row first: 1 + the index of the tile holding it
+  for (size_t t = 0; t < m.tiles.size(); ++t) {
+    const std::string& name = m.tiles[t];
+    ExrImage tile = readExr(name);
+    if (!tile.attributes.count("raytrace.command")) {
+      throw Error("'" + name + "' is not a raytrace tile: it has no raytrace.command attribute");
+    }
+    if (!first) {
+      toByteOf(tile.attributes, name);
+      image.emplace(tile.width, tile.height);
+      owner.assign(size_t(tile.width) * size_t(tile.height), 0);
+    } else {
+      std::string why = difference(tile, *first);
+      if (why.empty() && (tile.width != first->width || tile.height != first->height)) why = "its size differs";
+      if (!why.empty()) throw Error("'" + name + "' is a tile of another render than '" + m.tiles[0] + "': " + why);
+    }
+    const Region& r = tile.window;
+    if (r.x0 < 0 || r.y0 < 0 || r.x1 > tile.width || r.y1 > tile.height) {
+      throw Error("'" + name + "' holds pixels outside its picture");
+    }
+    for (int y = r.y0; y < r.y1; ++y) {
+      for (int x = r.x0; x < r.x1; ++x) {
+        int& o = owner[size_t(y) * size_t(tile.width) + size_t(x)];
+        if (o) throw Error("'" + name + "' overlaps '" + m.tiles[size_t(o - 1)] + "' at " + pixel(x, y));
+        o = int(t) + 1;
+      }
+      std::copy(tile.pixels.data() + size_t(y - r.y0) * size_t(r.width()),
+                tile.pixels.data() + size_t(y - r.y0 + 1) * size_t(r.width()),
+                image->data() + size_t(y) * size_t(tile.width) + size_t(r.x0));
+    }
+    if (!first) first.emplace(std::move(tile));
+  }
+  const auto gap = std::find(owner.begin(), owner.end(), 0);
+  if (gap != owner.end()) {
+    const size_t at = size_t(gap - owner.begin());
+    throw Error("the tiles leave " + std::to_string(std::count(owner.begin(), owner.end(), 0)) +
+                " pixels of the picture uncovered, the first at " + pixel(int(at % size_t(first->width)),
+                                                                          int(at / size_t(first->width))));
+  }
+  writeImage(*image, m.output, toByteOf(first->attributes, m.tiles[0]), m.threads);
+  return 0;
+}
+
+}  // namespace rt

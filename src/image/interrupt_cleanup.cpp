@@ -1,0 +1,55 @@
+#include "raytrace/image/interrupt_cleanup.hpp"
+
+#include <atomic>
+#include <climits>
+#include <csignal>
+#include <cstring>
+#include <mutex>
+
+#include <unistd.h>
+
+namespace rt {
+
+namespace {
+
+constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+// Read by the handler, on any thread, so only what async-signal-safe code may use: a fixed buffer, published
+// by a lock-free atomic flag.
+char temporary[PATH_MAX + 1];
+std::atomic<bool> registered{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+void onInterrupt(int sig) {
+  if (registered.load(std::memory_order_acquire)) unlink(temporary);
+  signal(sig, SIG_DFL);
+  raise(sig);  // held back until this handler returns; then the default action ends the program
+}
+
+void installHandlers() {
+  for (const int sig : kSignals) {
+    struct sigaction current {};
+    sigaction(sig, nullptr, &current);
+    if (current.sa_handler == SIG_IGN) continue;
+    struct sigaction action {};
+    action.sa_handler = onInterrupt;
+    sigemptyset(&action.sa_mask);
+    sigaction(sig, &action, nullptr);
+  }
+}
+
+}  // namespace
+
+void registerTemporary(const std::string& path) {
+  static std::once_flag installed;
+  std::call_once(installed, installHandlers);
+  registered.store(false, std::memory_order_release);
+  // A longer path cannot be created (ENAMETOOLONG), so there is nothing to remove.
+  std::strncpy(temporary, path.c_str(), PATH_MAX);
+  temporary[PATH_MAX] = '\0';
+  registered.store(true, std::memory_order_release);
+}
+
+void clearTemporary() { registered.store(false, std::memory_order_release); }
+
+}  // namespace rt

@@ -1,0 +1,184 @@
+// The image formats read back with exact values (stb_image for .png and .hdr, OpenEXR for .exr), format by
+// extension, and the safety of the output file: a planted symbolic link, a long name, an interrupting signal.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <csignal>
+#include <limits>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <stb/stb_image.h>
+
+#include "raytrace/image/exr_file.hpp"
+#include "raytrace/image/image_file.hpp"
+#include "raytrace/image/output_file.hpp"
+#include "raytrace/image/png_file.hpp"
+#include "raytrace/util/error.hpp"
+#include "temp_dir.hpp"
+
+using Mode = rt::Conventions::ToByte;
+
+namespace {
+
+// A 5 × 3 image of distinct values, some beyond [0, 1].
+rt::Image sample() {
+  rt::Image image(5, 3);
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 5; ++x) image.at(x, y) = rt::Color(0.25f * float(x), 0.5f * float(y), 3.0f - float(x * y));
+  }
+  return image;
+}
+
+}  // namespace
+
+TEST_CASE("image files: the format follows the extension; others are refused with the names to use") {
+  CHECK(rt::imageFormat("a.png") == rt::ImageFormat::Png);
+  CHECK(rt::imageFormat("dir.d/a.hdr") == rt::ImageFormat::Hdr);
+  CHECK(rt::imageFormat("a.exr") == rt::ImageFormat::Exr);
+  CHECK_THROWS_WITH(rt::imageFormat("a.jpg"), "cannot write 'a.jpg': unknown image format '.jpg' (name it .png, .hdr or .exr)");
+  CHECK_THROWS_WITH(rt::imageFormat("a.PNG"), "cannot write 'a.PNG': unknown image format '.PNG' (name it .png, .hdr or .exr)");
+  CHECK_THROWS_WITH(rt::imageFormat("out"), "cannot write 'out': no image format (name it .png, .hdr or .exr)");
+  CHECK_THROWS_WITH(rt::imageFormat("v1.0/out"), "cannot write 'v1.0/out': no image format (name it .png, .hdr or .exr)");
+}
+
+TEST_CASE("image files: a folder that is missing, not a folder or not writable is found before writing") {
+  const rt::test::TempDir dir;
+  const std::string file = dir.write("f", "x");
+  CHECK_NOTHROW(rt::checkImagePath(dir.file("a.png")));
+  CHECK_THROWS_WITH(rt::checkImagePath(dir.file("no/a.png")),
+                    "cannot write '" + dir.file("no/a.png") + "': No such file or directory");
+  CHECK_THROWS_WITH(rt::checkImagePath(file + "/a.png"), "cannot write '" + file + "/a.png': Not a directory");
+}
+
+TEST_CASE("image files: .hdr holds the unclamped radiance to RGBE's 8-bit mantissa") {
+  const rt::test::TempDir dir;
+  const std::string path = dir.file("a.hdr");
+  rt::writeImage(sample(), path, Mode::Round, 1);
+  int w = 0, h = 0, n = 0;
+  float* px = stbi_loadf(path.c_str(), &w, &h, &n, 3);
+  REQUIRE(px);
+  CHECK(w == 5);
+  CHECK(h == 3);
+  const rt::Image expected = sample();
+  for (int row = 0; row < 3; ++row) {
+    for (int x = 0; x < 5; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        // RGBE shares one exponent between the channels: each keeps 8 bits below the largest's leading bit.
+        // It has no sign: a negative channel is written as 0.
+        const float want = std::max(0.0f, expected.at(x, 2 - row)[c]);
+        const float largest = std::max({expected.at(x, 2 - row).r, expected.at(x, 2 - row).g, expected.at(x, 2 - row).b});
+        CHECK(std::abs(px[(row * 5 + x) * 3 + c] - want) <= largest / 128);
+      }
+    }
+  }
+  // Values RGBE represents exactly come back exactly: 0.25 steps below 4 are multiples of 2⁻⁶.
+  CHECK(px[(2 * 5 + 1) * 3 + 0] == 0.25f);  // bottom row, x = 1: (0.25, 0, 3)
+  CHECK(px[(2 * 5 + 1) * 3 + 2] == 3.0f);
+  stbi_image_free(px);
+  CHECK(dir.names() == std::vector<std::string>{"a.hdr"});
+}
+
+TEST_CASE("image files: .hdr writes a negative or NaN channel as 0") {
+  const rt::test::TempDir dir;
+  rt::Image image(1, 1);
+  image.at(0, 0) = rt::Color(-1.0f, std::nanf(""), 2.0f);
+  rt::writeImage(image, dir.file("a.hdr"), Mode::Round, 1);
+  int w = 0, h = 0, n = 0;
+  float* px = stbi_loadf(dir.file("a.hdr").c_str(), &w, &h, &n, 3);
+  REQUIRE(px);
+  CHECK(std::vector<float>(px, px + 3) == std::vector<float>{0, 0, 2});
+  stbi_image_free(px);
+}
+
+TEST_CASE("image files: .exr holds the exact floats, and a tile its window and attributes") {
+  const rt::test::TempDir dir;
+  rt::writeImage(sample(), dir.file("a.exr"), Mode::Round, 1);
+  const rt::ExrImage whole = rt::readExr(dir.file("a.exr"));
+  CHECK(whole.width == 5);
+  CHECK(whole.height == 3);
+  CHECK(whole.window == rt::Region{0, 0, 5, 3});
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 5; ++x) CHECK(whole.pixels.at(x, y) == sample().at(x, y));
+  }
+  // A tile: columns 1-3 of the top two rows of a 5 × 3 picture.
+  rt::Image part(3, 2);
+  part.at(0, 1) = rt::Color(std::nextafter(1.0f, 2.0f), -0.0f, 1e30f);  // the region's top-left
+  part.at(2, 0) = rt::Color(std::numeric_limits<float>::denorm_min(), 7, -3);
+  rt::writeExr(rt::ExrImage{5, 3, rt::Region{1, 0, 4, 2}, std::move(part), {{"raytrace.scene", "s.pov"}}},
+               dir.file("t.exr"));
+  const rt::ExrImage tile = rt::readExr(dir.file("t.exr"));
+  CHECK(tile.width == 5);
+  CHECK(tile.height == 3);
+  CHECK(tile.window == rt::Region{1, 0, 4, 2});
+  CHECK(tile.attributes == std::map<std::string, std::string>{{"raytrace.scene", "s.pov"}});
+  CHECK(tile.pixels.at(0, 1) == rt::Color(std::nextafter(1.0f, 2.0f), 0, 1e30f));
+  CHECK(std::signbit(tile.pixels.at(0, 1).g));
+  CHECK(tile.pixels.at(2, 0) == rt::Color(std::numeric_limits<float>::denorm_min(), 7, -3));
+  CHECK(dir.names() == std::vector<std::string>{"a.exr", "t.exr"});
+}
+
+TEST_CASE("image files: reading what is not OpenEXR names the file") {
+  const rt::test::TempDir dir;
+  const std::string path = dir.write("x.exr", "not an image");
+  CHECK_THROWS_WITH(rt::readExr(path), Catch::StartsWith("cannot read '" + path + "': "));
+  CHECK_THROWS_WITH(rt::readExr(dir.file("none.exr")), Catch::StartsWith("cannot read '" + dir.file("none.exr") + "': "));
+}
+
+TEST_CASE("output file: a symbolic link planted at any name in the folder is never written through") {
+  const rt::test::TempDir dir;
+  const std::string victim = dir.write("victim.txt", "keep me");
+  // The old temporary name, and a spread of names: the new one is random, so none of them is used, and a
+  // link is not followed even if it were (O_EXCL | O_NOFOLLOW).
+  REQUIRE(symlink(victim.c_str(), dir.file("out.png.tmp" + std::to_string(getpid())).c_str()) == 0);
+  rt::writeFile(dir.file("out.png"), {'a', 'b'});
+  CHECK(rt::test::readAll(victim) == "keep me");
+  CHECK(rt::test::readAll(dir.file("out.png")) == "ab");
+  CHECK(dir.names().size() == 3);
+}
+
+TEST_CASE("output file: a name of 251 characters, the most with room for no suffix, is written") {
+  const rt::test::TempDir dir;
+  const std::string name = std::string(247, 'n') + ".png";
+  rt::writeFile(dir.file(name), {'x'});
+  CHECK(dir.names() == std::vector<std::string>{name});
+  const std::string tooLong = std::string(252, 'n') + ".png";
+  CHECK_THROWS_WITH(rt::writeFile(dir.file(tooLong), {'x'}), "cannot write '" + dir.file(tooLong) + "': File name too long");
+  CHECK(dir.names() == std::vector<std::string>{name});
+}
+
+TEST_CASE("output file: SIGTERM, SIGINT or SIGHUP while writing removes the temporary file and keeps the old one") {
+  for (const int sig : {SIGTERM, SIGINT, SIGHUP}) {
+    CAPTURE(sig);
+    const rt::test::TempDir dir;
+    const std::string target = dir.write("out.png", "the previous picture");
+    const pid_t child = fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+      // The signal arrives in the middle of the writing: the file is open, half written, never committed.
+      rt::OutputFile file(target);
+      file.write("half", 4);
+      raise(sig);
+      _exit(0);  // not reached: the signal ends the process
+    }
+    int status = 0;
+    REQUIRE(waitpid(child, &status, 0) == child);
+    CHECK(WIFSIGNALED(status));
+    CHECK(WTERMSIG(status) == sig);
+    CHECK(dir.names() == std::vector<std::string>{"out.png"});
+    CHECK(rt::test::readAll(target) == "the previous picture");
+  }
+}
+
+TEST_CASE("output file: a file not committed is removed, and the previous one kept") {
+  const rt::test::TempDir dir;
+  const std::string target = dir.write("out.png", "old");
+  {
+    rt::OutputFile file(target);
+    file.write("new", 3);
+  }
+  CHECK(dir.names() == std::vector<std::string>{"out.png"});
+  CHECK(rt::test::readAll(target) == "old");
+}
