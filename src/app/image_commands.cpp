@@ -59,11 +59,13 @@ std::vector<Target> targets(const Invocation& inv, bool sceneWrites) {
   return out;
 }
 
-// The image of inv's picture, or of its region, written to `path`: a region as an OpenEXR tile.
+// The image of inv's picture, or of its region, written to `path`. An OpenEXR file carries the render's
+// attributes (tile_header.hpp), so that merge takes a whole image as a tile of itself.
 void write(const Invocation& inv, const char* command, Image&& image, const std::string& path,
            Conventions::ToByte mode) {
-  if (!inv.region) return writeImage(image, path, mode, inv.options.threads);
-  writeExr(ExrImage{inv.width, inv.height, *inv.region, std::move(image), tileHeader(inv, command)}, path);
+  if (imageFormat(path) != ImageFormat::Exr) return writeImage(image, path, mode, inv.options.threads);
+  const Region region = inv.region.value_or(wholeImage(inv.width, inv.height));
+  writeExr(ExrImage{inv.width, inv.height, region, std::move(image), tileHeader(inv, command)}, path);
 }
 
 }  // namespace

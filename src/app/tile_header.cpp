@@ -30,7 +30,7 @@ std::string baseName(const std::string& path) {
 }  // namespace
 
 std::map<std::string, std::string> tileHeader(const Invocation& inv, const std::string& command) {
-  const Region& r = *inv.region;
+  const Region r = inv.region.value_or(wholeImage(inv.width, inv.height));
   return {
       {"raytrace.version", RAYTRACE_VERSION},
       {"raytrace.command", command},

@@ -16,7 +16,7 @@ constexpr const char* kTilePartAttribute = "raytrace.part";
 // bytes, the scene language's (Conventions::ToByte).
 constexpr const char* kToByteAttribute = "raytrace.toByte";
 
-// Every attribute of a tile of `command` ("render" or "raycast") with `inv`. The scene file is read again for
+// Every attribute of a tile of `command` ("render" or "raycast") with `inv`, or of the whole image. The scene file is read again for
 // its hash (FNV-1a, 64 bits).
 std::map<std::string, std::string> tileHeader(const Invocation& inv, const std::string& command);
 

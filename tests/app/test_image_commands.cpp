@@ -1,0 +1,192 @@
+// The image commands' output: -o and its formats, the errors of bad -o values (whole messages, found before
+// the scene is read), tiles merged into exactly the one-machine image, merge's errors, help and --version.
+#include <catch2/catch.hpp>
+
+#include <sstream>
+
+#include "raytrace/app/commands.hpp"
+#include "raytrace/image/exr_file.hpp"
+#include "raytrace/util/error.hpp"
+#include "temp_dir.hpp"
+
+namespace {
+
+// The error message a command line produces, or "" if it runs.
+std::string errorOf(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  try {
+    rt::runCommand(args, out, err);
+  } catch (const rt::Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string outputOf(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  REQUIRE(rt::runCommand(args, out, err) == 0);
+  return out.str();
+}
+
+// A glossy sphere over a plane, with reflections: smooth and sharp pixels for the sub-samples to differ in.
+const char* const kScene =
+    "camera { location <0,1,6> up <0,1,0> right <1.33333,0,0> look_at <0,0,0> }\n"
+    "light_source { <-10,10,10> color rgb <1.5,1.5,1.5> }\n"
+    "sphere { <0,0,0>, 1.5 pigment { color rgb <1,0.3,0.2> } finish { ambient 0.2 diffuse 0.6 specular 0.6 "
+    "roughness 0.05 reflection 0.3 } }\n"
+    "plane { <0,1,0>, -1.5 pigment { color rgb <0.2,0.7,0.3> } finish { ambient 0.3 diffuse 0.8 reflection 0.2 } }\n";
+
+}  // namespace
+
+TEST_CASE("image commands: -o names the file and its format; an .exr converts to the very same PNG") {
+  const rt::test::TempDir dir;
+  const std::string scene = dir.write("s.pov", kScene);
+  for (const std::string command : {"raycast", "render"}) {
+    CAPTURE(command);
+    const std::string png = dir.file(command + ".png"), exr = dir.file(command + ".exr");
+    CHECK(outputOf({command, scene, "40", "30", "-o", png}).empty());
+    CHECK(outputOf({command, scene, "40", "30", "--output", exr}).empty());
+    CHECK(outputOf({command, scene, "40", "30", "--output=" + dir.file(command + ".hdr")}).empty());
+    // The whole image is a tile of itself: merge converts its floats as the render converts them.
+    CHECK(outputOf({"merge", "-o", dir.file(command + "-merged.png"), exr}).empty());
+    CHECK(rt::test::readAll(dir.file(command + "-merged.png")) == rt::test::readAll(png));
+    const rt::ExrImage image = rt::readExr(exr);
+    CHECK(image.attributes.at("raytrace.command") == command);
+    CHECK(image.attributes.at("raytrace.scene") == "s.pov");
+    CHECK(image.attributes.at("raytrace.size") == "40x30");
+    CHECK(image.attributes.at("raytrace.toByte") == "round");
+    CHECK(image.attributes.at("raytrace.part") == "0,0,40,30");
+  }
+  CHECK(dir.names().size() == 9);
+}
+
+TEST_CASE("image commands: bad -o values are one whole message, before the scene is even read") {
+  const rt::test::TempDir dir;
+  const std::string file = dir.write("f", "x");
+  // The scene does not exist: each error comes first.
+  const std::string scene = dir.file("missing.pov");
+  CHECK(errorOf({"render", scene, "-o", dir.file("a.jpg")}) ==
+        "cannot write '" + dir.file("a.jpg") + "': unknown image format '.jpg' (name it .png, .hdr or .exr)");
+  CHECK(errorOf({"raycast", scene, "4", "3", "-o", dir.file("image")}) ==
+        "cannot write '" + dir.file("image") + "': no image format (name it .png, .hdr or .exr)");
+  CHECK(errorOf({"render", scene, "-o", dir.file("no/a.png")}) ==
+        "cannot write '" + dir.file("no/a.png") + "': No such file or directory");
+  CHECK(errorOf({"render", scene, "-o", file + "/a.png"}) == "cannot write '" + file + "/a.png': Not a directory");
+  CHECK(errorOf({"render", scene, "-o"}) == "-o needs a value");
+  CHECK(errorOf({"render", scene, "--output="}) == "--output= needs a file name");
+  CHECK(errorOf({"sceneinfo", scene, "-o", "a.png"}) == "-o is for the commands that write images (raycast, render)");
+  CHECK(errorOf({"render", scene, "--tile", "0/2"}) == "a tile is written as OpenEXR: name it with -o NAME.exr");
+  CHECK(errorOf({"render", scene, "--tile", "0/2", "-o", "t.png"}) ==
+        "cannot write 't.png': a tile is written as OpenEXR (name it .exr)");
+  CHECK(errorOf({"render", scene, "--tile", "2/2", "-o", "t.exr"}) == "--tile's I must be between 0 and 1, found 2");
+  CHECK(errorOf({"render", scene, "--tile", "0/301", "-o", "t.exr"}) == "--tile's N must be between 1 and 300, found 301");
+  CHECK(errorOf({"render", scene, "--tile", "1", "-o", "t.exr"}) == "--tile must be I/N, as 0/4, found '1'");
+  CHECK(errorOf({"render", scene, "--region", "0,0,10", "-o", "t.exr"}) ==
+        "--region must be X0,Y0,X1,Y1, as 0,0,64,48, found '0,0,10'");
+  CHECK(errorOf({"render", scene, "--region", "5,0,5,10", "-o", "t.exr"}) ==
+        "--region's X1 must be between 6 and 300, found 5");
+  CHECK(errorOf({"render", scene, "--region", "0,0,9,9", "--tile", "0/2", "-o", "t.exr"}) ==
+        "--tile and --region both name the part to render: give one");
+  CHECK(dir.names() == std::vector<std::string>{"f"});
+}
+
+TEST_CASE("image commands: -o and a .cli scene's own images") {
+  const rt::test::TempDir dir;
+  const std::string one = dir.write("one.cli", "fov 60\nsurface 1 1 1 0 0 0 0 0 0 1 0\nsphere 0 0 -3 1\nwrite a.png\n");
+  const std::string two = dir.write("two.cli", "fov 60\nwrite a.png\nwrite b.png\n");
+  REQUIRE(outputOf({"render", one, "8", "6", "-o", dir.path()}).empty());  // a folder: the writes go in it
+  CHECK(dir.names() == std::vector<std::string>{"a.png", "one.cli", "two.cli"});
+  REQUIRE(outputOf({"render", one, "8", "6", "-o", dir.file("c.exr")}).empty());  // one image: -o replaces it
+  CHECK(outputOf({"render", two, "8", "6", "-o", dir.path()}).empty());
+  CHECK(dir.names() == std::vector<std::string>{"a.png", "b.png", "c.exr", "one.cli", "two.cli"});
+  CHECK(errorOf({"render", two, "8", "6", "-o", dir.file("c.png")}) ==
+        "'" + two + "' writes 2 images: -o must name a folder to write them into");
+  const std::string pov = dir.write("s.pov", kScene);
+  CHECK(errorOf({"render", pov, "8", "6", "-o", dir.path()}) ==
+        "-o '" + dir.path() + "' is a folder, but '" + pov + "' names no images of its own: give -o the image's file name");
+}
+
+TEST_CASE("image commands: tiles of any count and thread count merge into the one-machine bytes, with -ss") {
+  const rt::test::TempDir dir;
+  const std::string scene = dir.write("s.pov", kScene);
+  const std::string whole = dir.file("whole.png");
+  REQUIRE(outputOf({"render", scene, "64", "47", "-ss=2", "-o", whole}).empty());
+  for (const int n : {1, 3, 7}) {
+    CAPTURE(n);
+    std::vector<std::string> merge{"merge", "-o", dir.file("merged.png")};
+    for (int i = n - 1; i >= 0; --i) {  // in any order
+      const std::string tile = dir.file("t" + std::to_string(i) + ".exr");
+      REQUIRE(outputOf({"render", scene, "64", "47", "-ss=2", "--threads", std::to_string(1 + i % 3), "--tile",
+                        std::to_string(i) + "/" + std::to_string(n), "-o", tile})
+                  .empty());
+      merge.push_back(tile);
+    }
+    REQUIRE(outputOf(merge).empty());
+    CHECK(rt::test::readAll(dir.file("merged.png")) == rt::test::readAll(whole));
+  }
+  // Regions in a grid, not bands: the same.
+  std::vector<std::string> merge{"merge", "-o", dir.file("grid.png")};
+  for (const char* region : {"0,0,20,30", "20,0,64,30", "0,30,50,47", "50,30,64,47"}) {
+    const std::string tile = dir.file(std::string("r") + region + ".exr");
+    REQUIRE(outputOf({"render", scene, "64", "47", "-ss=2", "--region", region, "-o", tile}).empty());
+    merge.push_back(tile);
+  }
+  REQUIRE(outputOf(merge).empty());
+  CHECK(rt::test::readAll(dir.file("grid.png")) == rt::test::readAll(whole));
+}
+
+TEST_CASE("image commands: merge refuses tiles that do not make one picture, naming the file, writing nothing") {
+  const rt::test::TempDir dir;
+  const std::string scene = dir.write("s.pov", kScene);
+  const auto tile = [&](const std::string& name, const std::string& part, std::vector<std::string> more = {}) {
+    std::vector<std::string> args{"render", scene, "32", "24", "--tile", part, "-o", dir.file(name)};
+    args.insert(args.end(), more.begin(), more.end());
+    REQUIRE(outputOf(args).empty());
+    return dir.file(name);
+  };
+  const std::string t0 = tile("t0.exr", "0/2"), t1 = tile("t1.exr", "1/2");
+  const std::string ss = tile("ss.exr", "1/2", {"-ss=2"});
+  const std::string third = tile("third.exr", "1/3");
+  const std::string out = dir.file("out.png");
+  CHECK(errorOf({"merge", "-o", out, t0}) ==
+        "the tiles leave 384 pixels of the picture uncovered, the first at column 0, row 12");
+  CHECK(errorOf({"merge", "-o", out, t0, t1, third}) == "'" + third + "' overlaps '" + t0 + "' at column 0, row 8");
+  CHECK(errorOf({"merge", "-o", out, t0, ss}) ==
+        "'" + ss + "' is a tile of another render than '" + t0 + "': its raytrace.options is '-ss=2', not ''");
+  REQUIRE(outputOf({"render", scene, "32", "25", "--tile", "1/2", "-o", dir.file("tall.exr")}).empty());
+  CHECK(errorOf({"merge", "-o", out, t0, dir.file("tall.exr")}) ==
+        "'" + dir.file("tall.exr") + "' is a tile of another render than '" + t0 + "': its raytrace.size is '32x25', not '32x24'");
+  // The same name, other contents.
+  dir.write("s.pov", std::string(kScene) + "sphere { <2,0,0>, 0.5 pigment { color rgb <1,1,1> } }\n");
+  const std::string edited = tile("edited.exr", "1/2");
+  CHECK_THAT(errorOf({"merge", "-o", out, t0, edited}),
+             Catch::Matches("'" + edited + "' is a tile of another render than '" + t0 +
+                            "': its raytrace.sceneHash is '[0-9a-f]{16}', not '[0-9a-f]{16}'"));
+  rt::writeExr(rt::ExrImage{32, 24, rt::Region{0, 12, 32, 24}, rt::Image(32, 12), {}}, dir.file("plain.exr"));
+  CHECK(errorOf({"merge", "-o", out, t0, dir.file("plain.exr")}) ==
+        "'" + dir.file("plain.exr") + "' is not a raytrace tile: it has no raytrace.command attribute");
+  const std::string text = dir.write("text.exr", "not an image");
+  CHECK_THAT(errorOf({"merge", "-o", out, t0, text}), Catch::StartsWith("cannot read '" + text + "': "));
+  CHECK(errorOf({"merge", t0, t1}) == "merge needs -o OUTPUT, the image to write");
+  CHECK(errorOf({"merge", "-o", out}) == "merge needs the tiles to join");
+  CHECK(errorOf({"merge", "-o", dir.file("out.gif"), t0, t1}) ==
+        "cannot write '" + dir.file("out.gif") + "': unknown image format '.gif' (name it .png, .hdr or .exr)");
+  CHECK(errorOf({"merge", "-o", out, "--fast", t0}) == "unknown option '--fast' for merge (see raytrace help merge)");
+  CHECK(dir.names() == std::vector<std::string>{"edited.exr", "plain.exr", "s.pov", "ss.exr", "t0.exr", "t1.exr",
+                                                "tall.exr", "text.exr", "third.exr"});
+}
+
+TEST_CASE("image commands: --version, help <command> and <command> --help") {
+  CHECK(outputOf({"--version"}) == std::string("raytrace ") + RAYTRACE_VERSION + "\n");
+  const std::string render = outputOf({"help", "render"});
+  CHECK(render.rfind("usage: raytrace render <scene> [<width> <height>] [options]\n", 0) == 0);
+  CHECK(render.find("--tile I/N") != std::string::npos);
+  CHECK(outputOf({"render", "--help"}) == render);
+  CHECK(outputOf({"render", "s.pov", "-ss=2", "--help"}) == render);
+  const std::string sceneinfo = outputOf({"sceneinfo", "--help"});
+  CHECK(sceneinfo.rfind("usage: raytrace sceneinfo <scene> [options]\n", 0) == 0);
+  CHECK(sceneinfo.find("--tile") == std::string::npos);
+  CHECK(outputOf({"help", "merge"}).rfind("usage: raytrace merge -o <image> <tile.exr>... [--threads N]\n", 0) == 0);
+  CHECK(errorOf({"help"}) == "help takes one command, as in: raytrace help render");
+  CHECK(rt::usage().find("raytrace merge -o <image> <tile.exr>...") != std::string::npos);
+}
