@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# A one-node Slurm cluster on this machine, started in a private folder, that runs the tile array job and the
+# merge job of submit.sh end to end on a scene, checks the image against the one-machine render byte for byte,
+# and stops the cluster again. Needs Debian's slurm-wlm and munge; runs as root (Slurm's daemons then run as
+# root too) or as any user who may run munged and slurmd.
+#
+#   tools/slurm/local-cluster.sh [--tiles N] [--keep DIR] RAYTRACE SCENE WIDTH HEIGHT [render options]
+#
+# Its own munge key and socket, its own ports (16817, 16818) and state under DIR (default: a fresh temporary
+# folder, removed at the end unless --keep names one), so a cluster already on the machine is left alone.
+set -euo pipefail
+
+tiles=4 keep=""
+while (($#)); do
+  case $1 in
+    --tiles) tiles=${2:?}; shift 2 ;;
+    --keep) keep=${2:?}; shift 2 ;;
+    *) break ;;
+  esac
+done
+(($# >= 4)) || { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 2; }
+raytrace=$(realpath "$1") scene=$(realpath "$2") width=$3 height=$4
+shift 4
+here=$(cd "$(dirname "$0")" && pwd)
+for tool in munged slurmctld slurmd sbatch sinfo; do
+  command -v "$tool" >/dev/null || [ -x "/usr/sbin/$tool" ] ||
+    { echo "local-cluster: $tool is missing (apt-get install slurm-wlm munge)" >&2; exit 2; }
+done
+export PATH=$PATH:/usr/sbin
+
+dir=${keep:-$(mktemp -d /tmp/raytrace-slurm-XXXXXX)}
+mkdir -p "$dir"/{munge,state,spool,log,work}
+chmod 700 "$dir/munge"
+stop() {
+  for pid in "$dir"/slurmd.pid "$dir"/slurmctld.pid "$dir"/munge/munged.pid; do
+    [ -s "$pid" ] && kill "$(cat "$pid")" 2>/dev/null || true
+  done
+  sleep 1
+  [ -n "$keep" ] || rm -rf "$dir"
+}
+trap stop EXIT
+start=$SECONDS
+
+# munge: a fresh key, a socket of our own.
+dd if=/dev/urandom of="$dir/munge/munge.key" bs=1024 count=1 status=none
+chmod 400 "$dir/munge/munge.key"
+munged --force --key-file="$dir/munge/munge.key" --socket="$dir/munge/socket" \
+  --pid-file="$dir/munge/munged.pid" --log-file="$dir/log/munged.log" --seed-file="$dir/munge/seed"
+
+node=$(hostname -s)
+cpus=$(nproc)
+memory=$(($(awk '/MemTotal/ {print $2}' /proc/meminfo) / 1024 / 2))
+user=$(id -un)
+cat >"$dir/slurm.conf" <<CONF
+ClusterName=raytrace-local
+SlurmctldHost=$node(127.0.0.1)
+SlurmctldPort=16817
+SlurmdPort=16818
+SlurmUser=$user
+SlurmdUser=$user
+AuthType=auth/munge
+AuthInfo=socket=$dir/munge/socket
+CredType=cred/munge
+StateSaveLocation=$dir/state
+SlurmdSpoolDir=$dir/spool/%n
+SlurmctldPidFile=$dir/slurmctld.pid
+SlurmdPidFile=$dir/slurmd.pid
+SlurmctldLogFile=$dir/log/slurmctld.log
+SlurmdLogFile=$dir/log/slurmd.log
+ProctrackType=proctrack/linuxproc
+TaskPlugin=task/none
+JobAcctGatherType=jobacct_gather/none
+AccountingStorageType=accounting_storage/none
+JobCompType=jobcomp/none
+SchedulerType=sched/backfill
+SelectType=select/cons_tres
+SelectTypeParameters=CR_Core
+ReturnToService=2
+MpiDefault=none
+NodeName=$node NodeAddr=127.0.0.1 CPUs=$cpus RealMemory=$memory State=UNKNOWN
+PartitionName=local Nodes=$node Default=YES MaxTime=INFINITE State=UP
+CONF
+export SLURM_CONF=$dir/slurm.conf
+slurmctld -i
+slurmd
+for _ in $(seq 120); do
+  sinfo -h -o %T 2>/dev/null | grep -q '^idle' && break
+  sleep 0.5
+done
+sinfo -h -o %T | grep -q '^idle' || { echo "local-cluster: the node did not come up" >&2; tail "$dir"/log/*.log >&2; exit 1; }
+echo "local-cluster: one-node cluster up in $((SECONDS - start)) s ($node, $cpus CPUs)"
+sinfo
+
+cd "$dir/work"
+"$raytrace" render "$scene" "$width" "$height" "$@" --quiet -o one.png
+RAYTRACE=$raytrace "$here/submit.sh" -n "$tiles" -o "$dir/work/slurm.png" --wait "$scene" "$width" "$height" "$@"
+cat slurm.png.tiles/merge.log
+cmp one.png slurm.png
+echo "local-cluster: $tiles array tasks and the merge job give the one-machine bytes ($((SECONDS - start)) s in all)"
