@@ -133,6 +133,14 @@ TEST_CASE("image commands: tiles of any count and thread count merge into the on
   }
   REQUIRE(outputOf(merge).empty());
   CHECK(rt::test::readAll(dir.file("grid.png")) == rt::test::readAll(whole));
+  // raycast's tiles too.
+  REQUIRE(outputOf({"raycast", scene, "64", "47", "-o", dir.file("cast.png")}).empty());
+  for (const char* part : {"0/2", "1/2"}) {
+    REQUIRE(outputOf({"raycast", scene, "64", "47", "--tile", part, "-o", dir.file(std::string("c") + part[0] + ".exr")})
+                .empty());
+  }
+  REQUIRE(outputOf({"merge", "-o", dir.file("cast-merged.png"), dir.file("c0.exr"), dir.file("c1.exr")}).empty());
+  CHECK(rt::test::readAll(dir.file("cast-merged.png")) == rt::test::readAll(dir.file("cast.png")));
 }
 
 TEST_CASE("image commands: merge refuses tiles that do not make one picture, naming the file, writing nothing") {
