@@ -94,6 +94,11 @@ sinfo
 cd "$dir/work"
 "$raytrace" render "$scene" "$width" "$height" "$@" --quiet -o one.png
 RAYTRACE=$raytrace "$here/submit.sh" -n "$tiles" -o "$dir/work/slurm.png" --wait "$scene" "$width" "$height" "$@"
-cat slurm.png.tiles/merge.log
 cmp one.png slurm.png
-echo "local-cluster: $tiles array tasks and the merge job give the one-machine bytes ($((SECONDS - start)) s in all)"
+echo "local-cluster: $tiles array tasks and the merge job give the one-machine bytes"
+# Resuming: with the image and the first tile gone (as if its task had failed), submitting again renders that
+# tile alone and merges the same bytes.
+rm slurm.png slurm.png.tiles/tile-0.exr
+RAYTRACE=$raytrace "$here/submit.sh" -n "$tiles" -o "$dir/work/slurm.png" --wait "$scene" "$width" "$height" "$@"
+cmp one.png slurm.png
+echo "local-cluster: resubmitted, tile 0 alone rendered again; the same bytes ($((SECONDS - start)) s in all)"
