@@ -218,13 +218,12 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   // Flags start with '-' and a letter; anything else (a negative number too) is positional.
   std::vector<std::string> positional;
   RenderOptions options;
-  bool stats = false;
+  bool stats = false, quiet = false;
   std::string tile, region;
   Invocation inv;
-  if (isatty(STDERR_FILENO)) options.progress = &err;  // only render() shows it, and only to a person
   for (size_t i = 1; i < args.size(); ++i) {
     std::string a = args[i];
-    if (a == "--stats") {  // not a render option: the command line reports it
+    if (a == "--stats") {  // not render options: they say how a run is watched
       stats = true;
       continue;
     }
@@ -242,6 +241,10 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     if (const auto v = optionValue(args, i, {"--region"})) {
       if (!command->writesImage) throw Error("--region is for the commands that write images (raycast, render)");
       region = *v;
+      continue;
+    }
+    if (a == "--quiet") {
+      quiet = true;
       continue;
     }
     if (a == "--threads") {  // also written --threads=N
@@ -264,6 +267,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (!tile.empty() && !region.empty()) throw Error("--tile and --region both name the part to render: give one");
   inv.scenePath = positional[0];
   inv.options = options;
+  if (!quiet && isatty(STDERR_FILENO)) inv.progress = &err;  // only render() shows it, and only to a person
   if (stats) inv.stats = &err;
   if (defaultSize) {
     inv.width = inv.height = kDefaultSide;

@@ -104,21 +104,21 @@ int raycast(const Invocation& inv, std::ostream&) {
 // file order, each showing the scene as it stood at its command.
 int renderImage(const Invocation& inv, std::ostream&) {
   RenderTimes times;
-  RenderOptions options = inv.options;
-  options.times = &times;
+  const RenderOptions& options = inv.options;
+  const RenderMonitor monitor{inv.progress, &times};
   const std::vector<Target> all = targets(inv, true);
   if (inv.region && all.size() != 1) throw Error("a tile is of one image, but the scene writes several");
   double writing = 0;
   for (const Target& t : all) {
     // A whole PNG is rendered straight to bytes; everything else keeps the floats.
     if (!inv.region && imageFormat(t.path) == ImageFormat::Png) {
-      const Rgb8Image image = renderRgb8(*t.scene, inv.width, inv.height, options);
+      const Rgb8Image image = renderRgb8(*t.scene, inv.width, inv.height, options, monitor);
       Stopwatch watch;
       writePng(image, t.path);
       writing += watch.lap();
     } else {
       Image image = render(*t.scene, inv.width, inv.height, inv.region.value_or(wholeImage(inv.width, inv.height)),
-                           options);
+                           options, monitor);
       Stopwatch watch;
       write(inv, "render", std::move(image), t.path, t.scene->conventions.toByte);
       writing += watch.lap();

@@ -8,26 +8,17 @@
 #include "raytrace/image/png_file.hpp"
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/parallel.hpp"
+#include "raytrace/util/path.hpp"
 
 namespace rt {
 
-namespace {
-
-bool endsWith(const std::string& s, const char* suffix) {
-  const std::string end(suffix);
-  return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
-}
-
-}  // namespace
-
 ImageFormat imageFormat(const std::string& path) {
-  if (endsWith(path, ".png")) return ImageFormat::Png;
-  if (endsWith(path, ".hdr")) return ImageFormat::Hdr;
-  if (endsWith(path, ".exr")) return ImageFormat::Exr;
-  const size_t slash = path.rfind('/'), dot = path.rfind('.');
-  const bool extension = dot != std::string::npos && (slash == std::string::npos || dot > slash + 1);
+  const std::string ext = extension(path);
+  if (ext == "png") return ImageFormat::Png;
+  if (ext == "hdr") return ImageFormat::Hdr;
+  if (ext == "exr") return ImageFormat::Exr;
   throw Error("cannot write '" + path + "': " +
-              (extension ? "unknown image format '" + path.substr(dot) + "'" : std::string("no image format")) +
+              (ext.empty() ? std::string("no image format") : "unknown image format '." + ext + "'") +
               " (name it .png, .hdr or .exr)");
 }
 

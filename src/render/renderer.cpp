@@ -22,7 +22,7 @@ constexpr int kTile = 32;
 // upward, as Image::at counts).
 template <class Store>
 void renderRows(const SceneDesc& desc, int width, int height, const Region& region, const RenderOptions& options,
-                const Store& store) {
+                const RenderMonitor& monitor, const Store& store) {
   const Arithmetic arithmetic = chooseArithmetic(desc, options.arithmetic);
   withPrecision(arithmetic.precision, [&](auto tag) {
     using T = decltype(tag);
@@ -40,7 +40,7 @@ void renderRows(const SceneDesc& desc, int width, int height, const Region& regi
     // Every pixel's colour depends on its (x, y) alone, so a region's pixels are those of the whole picture.
     const int left = region.x0, bottom = height - region.y1, right = region.x1, top = height - region.y0;
     const int tilesX = (right - left + kTile - 1) / kTile, tilesY = (top - bottom + kTile - 1) / kTile;
-    ProgressMeter progress(options.progress, int64_t(region.width()) * region.height(),
+    ProgressMeter progress(monitor.progress, int64_t(region.width()) * region.height(),
                            options.samples * options.samples);
     parallelFor(tilesX * tilesY, options.threads, [&](int tile) {
       const int x0 = left + tile / tilesY * kTile, y0 = bottom + tile % tilesY * kTile;
@@ -49,33 +49,37 @@ void renderRows(const SceneDesc& desc, int width, int height, const Region& regi
       for (int y = y0; y < y1; ++y) store(x0, y, x1, tileTracer.block(camera, x0, y, x1, y + 1));
       progress.add(int64_t(x1 - x0) * (y1 - y0));
     });
-    if (options.times) {
-      options.times->build += build;
-      options.times->trace += watch.lap();
+    if (monitor.times) {
+      monitor.times->build += build;
+      monitor.times->trace += watch.lap();
     }
   });
 }
 
 }  // namespace
 
-Image render(const SceneDesc& desc, int width, int height, const RenderOptions& options) {
-  return render(desc, width, height, wholeImage(width, height), options);
+Image render(const SceneDesc& desc, int width, int height, const RenderOptions& options,
+             const RenderMonitor& monitor) {
+  return render(desc, width, height, wholeImage(width, height), options, monitor);
 }
 
-Image render(const SceneDesc& desc, int width, int height, const Region& region, const RenderOptions& options) {
+Image render(const SceneDesc& desc, int width, int height, const Region& region, const RenderOptions& options,
+             const RenderMonitor& monitor) {
   Image image(region.width(), region.height());
   // Row y of the picture, counted upward, is row y − (height − y1) of the region's image.
   const int bottom = height - region.y1;
-  renderRows(desc, width, height, region, options, [&](int x0, int y, int x1, const Color* colors) {
+  renderRows(desc, width, height, region, options, monitor, [&](int x0, int y, int x1, const Color* colors) {
     std::copy(colors, colors + (x1 - x0), &image.at(x0 - region.x0, y - bottom));
   });
   return image;
 }
 
-Rgb8Image renderRgb8(const SceneDesc& desc, int width, int height, const RenderOptions& options) {
+Rgb8Image renderRgb8(const SceneDesc& desc, int width, int height, const RenderOptions& options,
+                     const RenderMonitor& monitor) {
   Rgb8Image image(width, height);
   const Conventions::ToByte mode = desc.conventions.toByte;
-  renderRows(desc, width, height, wholeImage(width, height), options, [&](int x0, int y, int x1, const Color* colors) {
+  renderRows(desc, width, height, wholeImage(width, height), options, monitor,
+             [&](int x0, int y, int x1, const Color* colors) {
     toBytes(glm::value_ptr(*colors), size_t(x1 - x0) * 3, image.at(x0, y), mode);
   });
   return image;

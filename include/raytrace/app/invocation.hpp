@@ -27,7 +27,8 @@ struct Invocation {
   std::optional<Region> region;
   std::string tile;
   RenderOptions options;
-  std::ostream* stats = nullptr;  // --stats: where render reports how long each step took
+  std::ostream* progress = nullptr;  // where render shows its progress line (not with --quiet)
+  std::ostream* stats = nullptr;     // --stats: where render reports how long each step took
   double loadSeconds = 0;         // the reading of the scene file
 };
 
