@@ -21,8 +21,9 @@ constexpr int kTile = 32;
 // store(x0, y, x1, colours): the colours of pixels x0 … x1 − 1 of row y.
 template <class Store>
 void renderRows(const SceneDesc& desc, int width, int height, const RenderOptions& options, const Store& store) {
-  const Arithmetic arithmetic = chooseArithmetic(desc, options.arithmetic);
-  withPrecision(arithmetic.precision, [&](auto tag) {
+  const Arithmetic arithmetic =
+      chooseArithmetic(desc, options.arithmetic, View{width * options.samples, height * options.samples});
+  withPrecision(arithmetic.tier, [&](auto tag) {
     using T = decltype(tag);
     Stopwatch watch;
     const Scene<T> scene(desc, arithmetic, options.hierarchy, options.threads);

@@ -107,20 +107,33 @@ SceneScale sceneScale(const SceneDesc& scene) {
 
 double precisionBudget(const SceneDesc& scene) { return budget(sceneScale(scene)); }
 
-Arithmetic chooseArithmetic(const SceneDesc& scene, Arithmetic requested) {
+namespace {
+
+bool courseTierSound(const SceneDesc& scene, const SceneScale& s, const TierDomain& d) {
+  return scene.language == SceneLanguage::Pov && s.smallestFeature >= kCourseMinFeature &&
+         s.extent <= kCourseMaxExtent && d.textbookPixels <= kVisiblePixels &&
+         d.textbookHitError <= kCourseEpsilon / 4 && d.offsetShadowPixels <= kVisiblePixels &&
+         d.offsetRefractionPixels <= kVisiblePixels && d.smallestGap >= 2 * kCourseEpsilon;
+}
+
+}  // namespace
+
+Arithmetic chooseArithmetic(const SceneDesc& scene, Arithmetic requested, View view) {
+  Arithmetic a = requested;
+  if (a.tier != Tier::Auto && a.sphere != SphereMethod::Auto && a.offset) return a;
   const SceneScale s = sceneScale(scene);
   const double r = budget(s);
-  const bool courseDomain = scene.language == SceneLanguage::Pov && s.smallestFeature >= kCourseMinFeature &&
-                            s.extent <= kCourseMaxExtent;
-  Arithmetic a = requested;
-  if (a.precision == Precision::Auto) {
-    a.precision = courseDomain ? Precision::Course : r <= 1e4 ? Precision::Float : Precision::Double;
+  const TierDomain d = tierDomain(scene, view);
+  if (a.tier == Tier::Auto) {
+    const bool floatSound = r <= 1e4 && d.robustPixels <= kVisiblePixels;
+    a.tier = courseTierSound(scene, s, d) ? Tier::Course : floatSound ? Tier::Float : Tier::Double;
   }
   if (a.sphere == SphereMethod::Auto) {
-    const bool textbook = a.precision == Precision::Course || (a.precision == Precision::Float && r <= 50);
+    const bool textbook =
+        a.tier == Tier::Course || (a.tier == Tier::Float && r <= 50 && d.textbookPixels <= kVisiblePixels);
     a.sphere = textbook ? SphereMethod::Textbook : SphereMethod::Robust;
   }
-  if (!a.offset) a.offset = a.precision == Precision::Course ? OffsetPolicy::Course : OffsetPolicy::Relative;
+  if (!a.offset) a.offset = a.tier == Tier::Course ? OffsetPolicy::Course : OffsetPolicy::Relative;
   return a;
 }
 

@@ -85,7 +85,7 @@ SphereErrors budgetErrors(const glm::dvec3& eye, const glm::dvec3& c, double r, 
   desc.camera.lookAt = c;
   desc.objects.push_back(ObjectDesc{SphereDesc{c, r}, Material{}});
   chosen = chooseArithmetic(desc);
-  return withPrecision(chosen.precision, [&](auto tag) {
+  return withPrecision(chosen.tier, [&](auto tag) {
     using T = decltype(tag);
     SphereErrors out;
     const Vec3<T> o(eye), cT(c);
@@ -172,7 +172,7 @@ TEST_CASE("chooseArithmetic keeps sphere t within its budget", "[stability][sphe
     Arithmetic a;
     SphereErrors e = budgetErrors(eye, c, r, 200, rng, a);
     const double max = test::quantile(e.relative, 1.0);
-    CAPTURE(scene, r, D, c, int(a.precision), int(a.sphere), max);
+    CAPTURE(scene, r, D, c, int(a.tier), int(a.sphere), max);
     REQUIRE(e.nonFinite == 0);
     REQUIRE(e.disagreements == 0);
     REQUIRE(max <= 1e-2);
@@ -190,7 +190,7 @@ TEST_CASE("chooseArithmetic counts the distance between camera and sphere", "[st
   Arithmetic a;
   SphereErrors e = budgetErrors(glm::dvec3(-k), glm::dvec3(k), 1.0, kRays, rng, a);
   const double p99 = test::quantile(e.relative, 0.99), max = test::quantile(e.relative, 1.0);
-  CAPTURE(int(a.precision), int(a.sphere), p99, max);
+  CAPTURE(int(a.tier), int(a.sphere), p99, max);
   CHECK(e.disagreements == 0);
   CHECK(p99 <= 1.5e-3);
   CHECK(max <= 1e-2);

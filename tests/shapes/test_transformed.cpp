@@ -131,7 +131,7 @@ TEST_CASE("the scene builds boxes, cones and cylinders, transformed or not", "[t
                                       "cone { <0, 0, 0>, 1, <0, 0, 2>, 0 scale 2 translate <0, 0, -5> }\n"
                                       "cylinder { <0, -1, 0>, <0, 1, 0>, 0.5 translate <3, 0, 0> }\n",
                                   "shapes.pov");
-  const Arithmetic arithmetic{Precision::Double, SphereMethod::Robust};
+  const Arithmetic arithmetic{Tier::Double, SphereMethod::Robust};
   const Scene<double> scene(desc, arithmetic);
   REQUIRE(scene.objects().size() == 3);
   // Down −z from the eye: the cone's apex at z = −1 (2·2 − 5), in front of the box's face at z = −9.
@@ -151,7 +151,7 @@ TEST_CASE("a sphere moved by a similarity becomes a plain sphere; other transfor
                                       "sphere { <1, 0, 0>, 2 rotate <0, 90, 0> scale 0.5 translate <1, 2, 3> }\n"
                                       "sphere { <0, 0, 0>, 1 scale <2, 1, 1> }\n",
                                   "spheres.pov");
-  const Scene<double> scene(desc, Arithmetic{Precision::Double, SphereMethod::Robust});
+  const Scene<double> scene(desc, Arithmetic{Tier::Double, SphereMethod::Robust});
   // Ry(90) takes the centre (1, 0, 0) to (0, 0, −1); halved and moved: (1, 2, 2.5), radius 1.
   const auto* folded = dynamic_cast<const Sphere<double>*>(scene.objects().at(0).get());
   REQUIRE(folded);
@@ -173,7 +173,7 @@ TEST_CASE("the course tier intersects the transformed ray and takes the normal a
   const SceneDesc desc = parsePov(std::string(kCamera) +
                                       "sphere { <1, 0, 0>, 2 rotate <0, 90, 0> scale 0.5 translate <1, 2, 3> }\n",
                                   "spheres.pov");
-  const Scene<float> scene(desc, Arithmetic{Precision::Course, SphereMethod::Textbook, OffsetPolicy::Course});
+  const Scene<float> scene(desc, Arithmetic{Tier::Course, SphereMethod::Textbook, OffsetPolicy::Course});
   REQUIRE(dynamic_cast<const Transformed<float>*>(scene.objects().at(0).get()));
   const Ray<float> ray{{1.1f, 2.2f, 12}, {0, 0, -1}};
   const auto hit = scene.closestHit(ray, Interval<float>{});
@@ -194,7 +194,7 @@ TEST_CASE("the course tier moves an object of a scene built in code by its steps
   o.shape = SphereDesc{{0, 0, 0}, 1};
   o.transforms = {{TransformStep::Kind::Translate, {0, 0, -5}}};
   desc.objects.push_back(o);
-  const Scene<float> scene(desc, Arithmetic{Precision::Course, SphereMethod::Textbook, OffsetPolicy::Course});
+  const Scene<float> scene(desc, Arithmetic{Tier::Course, SphereMethod::Textbook, OffsetPolicy::Course});
   const auto hit = scene.closestHit(Ray<float>{{0, 0, 0}, {0, 0, -1}}, Interval<float>{});
   REQUIRE(hit);
   CHECK(hit->t == 4.0f);
