@@ -122,29 +122,31 @@ TEST_CASE("precision: explicit requests win") {
   CHECK(rt::chooseArithmetic(small, {Tier::Auto, SphereMethod::Robust}).sphere == SphereMethod::Robust);
 }
 
-// A POV scene gets the course tier while its smallest feature is at least 0.002 (twice the course's fixed
-// offset) and its extent at most 1000 (float's ulp there is 6e-5, well below the offset).
+// A POV scene gets the course tier (besides the checks of tier_domain.hpp) while its smallest feature is at
+// least 0.002 (twice the course's fixed offset) and its extent at most 1000 (float's ulp there is 6e-5, well
+// below the offset).
 TEST_CASE("precision: the course tier for course-scale POV scenes only") {
   const auto scene = [](double scale, glm::dvec3 shift) {
     rt::SceneDesc s = withCamera(scale * glm::dvec3(0, 0, 14) + shift);
     add(s, rt::SphereDesc{scale * glm::dvec3(0, 0, 0) + shift, scale * 2});
-    add(s, rt::SphereDesc{scale * glm::dvec3(3, 0, 0) + shift, scale * 0.01});
+    add(s, rt::BoxDesc{scale * glm::dvec3(3, 0, 0) + shift, scale * glm::dvec3(3.5, 0.01, 0.5) + shift});
     return s;
   };
   const auto tier = [](const rt::SceneDesc& s) { return rt::chooseArithmetic(s).tier; };
   CHECK(tier(scene(1, glm::dvec3(0))) == Tier::Course);
-  // Scaled by 1e-3 the small sphere's radius is 1e-5, far below the offset: the budget tiers (the extent
-  // counts as at least 1, so R = 1e5 asks for double).
+  // Scaled by 1e-3 the thin box is 1e-5 thick, far below the offset: the budget tiers (the extent counts as
+  // at least 1, so R = 1e5 asks for double).
   CHECK(tier(scene(1e-3, glm::dvec3(0))) == Tier::Double);
   // Moved 1e5 away, the coordinates' rounding nears the offset: R ≈ 1e7 asks for double.
   CHECK(tier(scene(1, glm::dvec3(1e5, 0, 0))) == Tier::Double);
   // A .cli scene never gets it, at any scale.
   CHECK(tier(asCli(scene(1, glm::dvec3(0)))) == Tier::Float);
-  // The thresholds themselves: a feature of exactly 0.002 and an extent of exactly 1000 are inside.
+  // The thresholds themselves: a feature of exactly 0.002 and an extent of exactly 1000 are inside. (A
+  // sphere that small would fail first on the textbook quadratic's error: tests/scene/test_stability_tier_domain.cpp.)
   rt::SceneDesc thin = scene(1, glm::dvec3(0));
-  thin.objects[1].shape = rt::SphereDesc{{3, 0, 0}, 0.002};
+  thin.objects[1].shape = rt::BoxDesc{{3, 0, 0}, {3.5, 0.002, 0.5}};
   CHECK(tier(thin) == Tier::Course);
-  thin.objects[1].shape = rt::SphereDesc{{3, 0, 0}, 0.0019};
+  thin.objects[1].shape = rt::BoxDesc{{3, 0, 0}, {3.5, 0.0019, 0.5}};
   CHECK(tier(thin) == Tier::Float);
   rt::SceneDesc far = withCamera({0, 0, 0});
   add(far, rt::PlaneDesc{{0, 0, 1}, -1000});  // its point nearest the origin, (0, 0, −1000), stands in
