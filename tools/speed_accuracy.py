@@ -42,7 +42,7 @@ KNOBS = [
     ("precision", {"precision": "float"}),
     ("precision", {"precision": "float", "sphere": "textbook"}),
     ("sphere", {"sphere": "textbook"}),
-    # The course tier: the course reference's float arithmetic with its 0.001 offsets (precision.hpp).
+    # The course tier: the course reference's float arithmetic with its 0.001 offsets (scene/arithmetic.hpp).
     ("precision", {"precision": "course", "offset": "course"}),
     ("offset", {"offset": "course"}),
     ("offset", {"offset": "normal"}),

@@ -178,7 +178,7 @@ TEMPLATE_TEST_CASE("relative offsets survive grazing spawned rays", "[stability]
   CHECK(grazingRehits<TestType>(kind, pos, elevation, OffsetPolicy::Relative, 2000, seed) == 0);
 }
 
-// The course's 0.001 along the normal, inside the course tier's domain (coordinates up to 1e3, precision.hpp).
+// The course's 0.001 along the normal, inside the course tier's domain (coordinates up to 1e3, scene/arithmetic.hpp).
 TEST_CASE("the course's normal offset survives grazing spawned rays in its domain", "[stability][spawn]") {
   const ShapeKind kind = GENERATE(ShapeKind::Sphere, ShapeKind::Plane);
   const double pos = GENERATE(1e2, 1e3);

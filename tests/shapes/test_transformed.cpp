@@ -165,7 +165,7 @@ TEST_CASE("a sphere moved by a similarity becomes a plain sphere; other transfor
   CHECK(dynamic_cast<const Transformed<double>*>(scene.objects().at(1).get()));
 }
 
-// The course tier (precision.hpp) keeps the similarity transform, in the float matrix the reference composes
+// The course tier (scene/arithmetic.hpp) keeps the similarity transform, in the float matrix the reference composes
 // from the file's steps, and reports the hit as the reference does: the point o + t·d, the normal of the
 // sphere at M⁻¹ of that point, carried out by (M⁻¹)ᵀ.
 TEST_CASE("the course tier intersects the transformed ray and takes the normal at M⁻¹·(o + t·d)",

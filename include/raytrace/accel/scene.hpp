@@ -48,7 +48,7 @@ template <class T> class Scene {
 
  private:
   // The point a hit reports: the shape's own, re-projected onto the surface, except in the course tier, which
-  // takes o + t·d as its reference does (precision.hpp).
+  // takes o + t·d as its reference does (scene/arithmetic.hpp).
   Vec3<T> hitPoint(const Ray<T>& ray, const Hit<T>& hit) const;
 
   const SceneDesc& desc_;

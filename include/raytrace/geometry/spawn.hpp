@@ -21,7 +21,7 @@ enum class OffsetPolicy {
   // relative to the point's magnitude (Mitsuba 3 `offset_p`; stability.md F4a). Zero re-hits at any scale.
   Relative,
   // The course reference's P ± 0.001·N: 0.001 along the normal, to the side the ray leaves by (the 2018
-  // reference renderer that made the p5 images; the course tier's offset, precision.hpp). Fails once the
+  // reference renderer that made the p5 images; the course tier's offset, scene/arithmetic.hpp). Fails once the
   // coordinates' rounding nears 0.001 or a feature is thinner than it (stability.md F4, F5; the tier's
   // domain, chooseArithmetic()). An earlier reference (2018-05-17) moved along the ray instead, P + 0.001·d
   // (csc473-course.md §c.8): the p3/p4 printrays texts were made by it and now differ in their 4th decimals

@@ -32,7 +32,7 @@ struct Arithmetic {
   std::optional<OffsetPolicy> offset;  // spawned-ray origins; nothing: the tier's own
 };
 
-// The two lengths the precision budget compares (stability.md §1.1).
+// The two lengths the precision budget compares (docs/reference/stability.md §1.1).
 struct SceneScale {
   // The largest coordinate or ray length, at least 1; ray lengths are bounded by the diagonal of the box
   // around the camera and the objects.
@@ -58,7 +58,7 @@ constexpr double kCourseMaxExtent = 1e3;
 //   quarter of the offset, no shadow edge or refracted image moved by the offset more than kVisiblePixels,
 //   and no sphere within 2·0.001 of another or of a plane;
 // - else float while R ≤ 1e4 and the robust sphere test's error stays below kVisiblePixels, with the
-//   textbook quadratic while R ≤ 50 and its error does too (measured budgets: stability.md §1.1);
+//   textbook quadratic while R ≤ 50 and its error does too (measured budgets: docs/reference/stability.md §1.1);
 // - else double, robust.
 // The offset is the tier's: Course for the course tier, Relative for the others. Explicit requests in
 // `requested` win, each on its own.
