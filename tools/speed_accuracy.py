@@ -39,6 +39,8 @@ REFERENCE = dict(BASE, ss="8", depth="32")
 # failure float exposes first.
 KNOBS = [
     ("baseline", {}),
+    # What a user gets without flags: chooseArithmetic()'s tier, sphere test and offset for the scene.
+    ("default", {"precision": "auto", "sphere": "auto", "offset": "auto"}),
     ("precision", {"precision": "float"}),
     ("precision", {"precision": "float", "sphere": "textbook"}),
     ("sphere", {"sphere": "textbook"}),
@@ -60,14 +62,14 @@ KNOBS = [
     # These scenes are below the hierarchy's crossover, so auto means none: forcing one must only move time.
     ("hierarchy", {"hierarchy": "always"}),
 ]
-COLOURS = {"baseline": "black", "precision": "tab:red", "sphere": "tab:purple", "offset": "tab:orange",
+COLOURS = {"baseline": "black", "default": "tab:pink", "precision": "tab:red", "sphere": "tab:purple", "offset": "tab:orange",
            "samples": "tab:blue", "depth": "tab:green", "hierarchy": "tab:brown"}
 
 
 def flags(config):
-    return [f"--precision={config['precision']}", f"--sphere={config['sphere']}",
-            f"--offset={config['offset']}", f"-ss={config['ss']}", f"--depth={config['depth']}",
-            f"--hierarchy={config['hierarchy']}"]
+    offset = [] if config["offset"] == "auto" else [f"--offset={config['offset']}"]  # auto: the tier's own
+    return [f"--precision={config['precision']}", f"--sphere={config['sphere']}"] + offset + [
+        f"-ss={config['ss']}", f"--depth={config['depth']}", f"--hierarchy={config['hierarchy']}"]
 
 
 def label(config):

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "raytrace/geometry/spawn.hpp"
+#include "raytrace/scene/scene_scale.hpp"
 
 namespace rt {
 
@@ -19,21 +20,6 @@ glm::dvec3 toWorld(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3
 // A plane's normal is carried by the inverse transpose.
 glm::dvec3 normalToWorld(const glm::dmat4& m, const glm::dvec3& n) {
   return glm::normalize(glm::transpose(glm::inverse(glm::dmat3(m))) * n);
-}
-
-// How far a sphere in its own space can be from, and how small it can be in, the world: the transform's
-// largest and smallest column norms bound its stretch.
-struct Stretch {
-  double most = 0, least = kInf;
-};
-Stretch stretch(const glm::dmat4& m) {
-  Stretch s;
-  for (int i = 0; i < 3; ++i) {
-    const double n = glm::length(glm::dvec3(m[i]));
-    s.most = std::max(s.most, n);
-    s.least = std::min(s.least, n);
-  }
-  return s;
 }
 
 double brightest(const Color& c) { return std::max({double(c.r), double(c.g), double(c.b)}); }
@@ -95,19 +81,23 @@ double planeShadowPixels(const SceneDesc& scene, const Material& m, glm::dvec3 n
 
 // The six faces of a box, each sampled on a 5 × 5 grid of points, or a triangle.
 double flatShadowPixels(const SceneDesc& scene, const ObjectDesc& o, const glm::dmat4& m, double theta) {
-  std::vector<std::array<glm::dvec3, 3>> faces;  // corner, edge u, edge v
+  std::array<std::array<glm::dvec3, 3>, 6> faces;  // corner, edge u, edge v
+  size_t count = 0;
   if (const auto* b = std::get_if<BoxDesc>(&o.shape)) {
     const glm::dvec3 e = b->max - b->min;
     const glm::dvec3 x(e.x, 0, 0), y(0, e.y, 0), z(0, 0, e.z);
-    faces = {{b->min, y, z}, {b->min + x, y, z}, {b->min, x, z}, {b->min + y, x, z}, {b->min, x, y}, {b->min + z, x, y}};
+    faces = {{{b->min, y, z}, {b->min + x, y, z}, {b->min, x, z}, {b->min + y, x, z}, {b->min, x, y}, {b->min + z, x, y}}};
+    count = 6;
   } else if (const auto* t = std::get_if<TriangleDesc>(&o.shape)) {
-    faces = {{t->a, t->b - t->a, t->c - t->a}};
+    faces[0] = {t->a, t->b - t->a, t->c - t->a};
+    count = 1;
   }
   // A mesh has many small triangles: its corners and edge midpoints are enough.
   const bool triangle = std::holds_alternative<TriangleDesc>(o.shape);
   const int steps = triangle ? 2 : 4;
   double worst = 0;
-  for (const auto& f : faces) {
+  for (size_t k = 0; k < count; ++k) {
+    const auto& f = faces[k];
     const glm::dvec3 normal = normalToWorld(m, glm::cross(f[1], f[2]));
     if (glm::any(glm::isnan(normal))) continue;
     for (int i = 0; i <= steps; ++i) {
@@ -123,11 +113,21 @@ double flatShadowPixels(const SceneDesc& scene, const ObjectDesc& o, const glm::
 struct WorldSphere {
   glm::dvec3 center;
   double radius, bound, most, least;  // own radius; bounding radius in the world; the transform's stretch
-  const ObjectDesc* object;
 };
 
+// The world plane n·p = d of a plane object.
+std::pair<glm::dvec3, double> worldPlane(const PlaneDesc& p, const glm::dmat4& m) {
+  const glm::dvec3 n = normalToWorld(m, p.normal);
+  return {n, glm::dot(n, toWorld(m, p.distance * glm::normalize(p.normal)))};
+}
+
+WorldSphere worldSphere(const SphereDesc& s, const glm::dmat4& m) {
+  const Stretch k = stretch(m);
+  return {toWorld(m, s.center), s.radius, k.most * s.radius, k.most, k.least};
+}
+
 // The smallest clearance between two spheres, by a sweep along x, and between a sphere and a plane.
-double smallestGap(std::vector<WorldSphere> spheres, const std::vector<std::pair<glm::dvec3, double>>& planes) {
+double closestPair(std::vector<WorldSphere> spheres, const std::vector<std::pair<glm::dvec3, double>>& planes) {
   double gap = kInf;
   for (const WorldSphere& s : spheres) {
     for (const auto& [n, d] : planes) gap = std::min(gap, std::abs(glm::dot(n, s.center) - d) - s.bound);
@@ -165,48 +165,50 @@ double pixelAngle(const CameraDesc& c, View view) {
 TierDomain tierDomain(const SceneDesc& scene, View view) {
   TierDomain out;
   const double theta = pixelAngle(scene.camera, view);
-  const glm::dvec3 eye = scene.camera.location;
-  std::vector<WorldSphere> spheres;
-  std::vector<std::pair<glm::dvec3, double>> planes;
-  glm::dvec3 lo = eye, hi = eye;  // the box around the camera and every bounded object: all ray origins
+  const SceneScale scale = sceneScale(scene);
+  // Rays start at the camera and on every bounded object, inside the scale's box.
+  const auto farthest = [&](const glm::dvec3& c) {
+    return glm::length(glm::max(glm::abs(scale.hi - c), glm::abs(c - scale.lo)));
+  };
   for (const ObjectDesc& o : scene.objects) {
     const glm::dmat4 m = o.worldFromObject();
-    if (const auto* s = std::get_if<SphereDesc>(&o.shape)) {
-      const Stretch k = stretch(m);
-      const WorldSphere w{toWorld(m, s->center), s->radius, k.most * s->radius, k.most, k.least, &o};
-      spheres.push_back(w);
-      lo = glm::min(lo, w.center - w.bound);
-      hi = glm::max(hi, w.center + w.bound);
-    } else if (const auto* p = std::get_if<PlaneDesc>(&o.shape)) {
-      const glm::dvec3 n = normalToWorld(m, p->normal);
-      const double d = glm::dot(n, toWorld(m, p->distance * glm::normalize(p->normal)));
-      planes.emplace_back(n, d);
+    if (const auto* p = std::get_if<PlaneDesc>(&o.shape)) {
+      const auto [n, d] = worldPlane(*p, m);
       out.offsetShadowPixels = std::max(out.offsetShadowPixels, planeShadowPixels(scene, o.material, n, d, theta));
-    } else {
-      out.offsetShadowPixels = std::max(out.offsetShadowPixels, flatShadowPixels(scene, o, m, theta));
+      continue;
     }
-  }
-  const auto farthest = [&](const glm::dvec3& c) {
-    return glm::length(glm::max(glm::abs(hi - c), glm::abs(c - lo)));
-  };
-  for (const WorldSphere& s : spheres) {
+    const auto* sphere = std::get_if<SphereDesc>(&o.shape);
+    if (!sphere) {
+      out.offsetShadowPixels = std::max(out.offsetShadowPixels, flatShadowPixels(scene, o, m, theta));
+      continue;
+    }
+    const WorldSphere s = worldSphere(*sphere, m);
     // In the sphere's own space (where the course tier solves it) the origins are up to 1/least farther per
     // world unit, and its errors come back stretched by at most `most`.
     const double D = farthest(s.center) / s.least;
-    const double nearSurface = std::max(glm::length(eye - s.center) - s.bound, s.least * s.radius);
+    const double nearSurface = std::max(glm::length(scene.camera.location - s.center) - s.bound, s.least * s.radius);
     const double footprint = theta * nearSurface;
     const double textbook = s.most * textbookSphereError(D, s.radius);
     out.textbookPixels = std::max(out.textbookPixels, textbook / footprint);
     out.robustPixels = std::max(out.robustPixels, s.most * robustSphereError(D) / footprint);
     out.textbookHitError = std::max(out.textbookHitError, textbook);
-    if (s.object->material.filter > 0) {
+    if (o.material.filter > 0) {
       const double behind = farthest(s.center);
       out.offsetRefractionPixels =
           std::max(out.offsetRefractionPixels, 2 * kCourseEpsilon / (s.least * s.radius) * behind / footprint);
     }
   }
-  out.smallestGap = smallestGap(spheres, planes);
   return out;
+}
+
+double smallestGap(const SceneDesc& scene) {
+  std::vector<WorldSphere> spheres;
+  std::vector<std::pair<glm::dvec3, double>> planes;
+  for (const ObjectDesc& o : scene.objects) {
+    if (const auto* s = std::get_if<SphereDesc>(&o.shape)) spheres.push_back(worldSphere(*s, o.worldFromObject()));
+    if (const auto* p = std::get_if<PlaneDesc>(&o.shape)) planes.push_back(worldPlane(*p, o.worldFromObject()));
+  }
+  return closestPair(std::move(spheres), planes);
 }
 
 }  // namespace rt

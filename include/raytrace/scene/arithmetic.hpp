@@ -6,6 +6,7 @@
 
 #include "raytrace/scene/description.hpp"
 #include "raytrace/geometry/spawn.hpp"
+#include "raytrace/scene/scene_scale.hpp"
 #include "raytrace/scene/tier_domain.hpp"
 
 namespace rt {
@@ -31,18 +32,6 @@ struct Arithmetic {
   SphereMethod sphere = SphereMethod::Auto;
   std::optional<OffsetPolicy> offset;  // spawned-ray origins; nothing: the tier's own
 };
-
-// The two lengths the precision budget compares (docs/reference/stability.md §1.1).
-struct SceneScale {
-  // The largest coordinate or ray length, at least 1; ray lengths are bounded by the diagonal of the box
-  // around the camera and the objects.
-  double extent;
-  double smallestFeature;  // +∞ when no object has one (planes only, or nothing)
-};
-SceneScale sceneScale(const SceneDesc& scene);
-
-// The scene's precision budget R = extent ÷ smallest feature (the extent alone when there is no feature).
-double precisionBudget(const SceneDesc& scene);
 
 // The course tier's domain, where its fixed 0.001 offset (kCourseEpsilon) is sound in float. An offset must
 // stay below the smallest feature, or a spawned ray starts beyond a thin object: features of at least twice

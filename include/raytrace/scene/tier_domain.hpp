@@ -46,10 +46,12 @@ struct TierDomain {
   // The largest shift, in pixels, of what is seen through a glass sphere near its silhouette, where the
   // refracted ray's offset origin moves its exit by up to 2·0.001/r radians.
   double offsetRefractionPixels = 0;
-  // The smallest clearance between two spheres closer than twice the offset, or a sphere and a plane
-  // (negative: they overlap; +∞: none). Below twice the offset, a spawned ray can start inside the neighbour.
-  double smallestGap = 0;
 };
 TierDomain tierDomain(const SceneDesc& scene, View view);
+
+// The smallest clearance between two spheres closer than twice the course's offset, or between a sphere and a
+// plane (negative: they overlap; +∞: none). Below twice the offset, a spawned ray can start inside the
+// neighbour. Apart from tierDomain(): the sweep over pairs is the one cost that grows faster than the scene.
+double smallestGap(const SceneDesc& scene);
 
 }  // namespace rt
