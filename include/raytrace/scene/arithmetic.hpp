@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "raytrace/scene/description.hpp"
+#include "raytrace/geometry/roots.hpp"
 #include "raytrace/geometry/spawn.hpp"
 #include "raytrace/scene/scene_scale.hpp"
 #include "raytrace/scene/tier_domain.hpp"
@@ -24,7 +25,6 @@ enum class Tier {
   Double,
   Course,
 };
-enum class SphereMethod { Auto, Textbook, Robust };
 
 // What chooseArithmetic() is asked for (Auto and nothing: choose) and what it answers (all resolved).
 struct Arithmetic {
