@@ -15,7 +15,7 @@ enum class Precision {
   Float,
   Double,
   // The course tier: the 2018 CSC 473 reference renderer's own float arithmetic, which its expected images
-  // encode down to the rounding (csc473-course.md). Float, with the matrices composed in float as the
+  // encode down to the rounding (docs/reference/csc473.md). Float, with the matrices composed in float as the
   // reference composes them (composeTransforms<float>), every transformed object intersected on the
   // transformed ray (no sphere folded into a world sphere), hit points o + t·d as the ray reaches them (not
   // re-projected onto the surface), a transformed object's normal taken at M⁻¹·(o + t·d), and spawned rays
@@ -31,7 +31,7 @@ struct Arithmetic {
   std::optional<OffsetPolicy> offset;  // spawned-ray origins; nothing: the tier's own
 };
 
-// The two lengths the precision budget compares (stability.md §1.1).
+// The two lengths the precision budget compares (docs/reference/stability.md §1.1).
 struct SceneScale {
   // The largest coordinate or ray length, at least 1; ray lengths are bounded by the diagonal of the box
   // around the camera and the objects.
@@ -50,8 +50,8 @@ double precisionBudget(const SceneDesc& scene);
 constexpr double kCourseMinFeature = 2 * kCourseEpsilon;
 constexpr double kCourseMaxExtent = 1e3;
 
-// The cheapest arithmetic that keeps a scene's pixels exact (stability.md §1.1): no ray may flip between hit
-// and miss, and no sphere t error may exceed 1e-2 of the smallest feature. Measured over 20k rays per cell
+// The cheapest arithmetic that keeps a scene's pixels exact (docs/reference/stability.md §1.1): no ray may flip between
+// hit and miss, and no sphere t error may exceed 1e-2 of the smallest feature. Measured over 20k rays per cell
 // (tests/test_stability_sphere.cpp), |Δt|/r at p99 / max:
 //   textbook float  R = 20: 1.8e-4 / 7e-4;  R = 50: 1.1–1.3e-3 / 4–6e-3 (rays at 0.999·r);  R = 100: 5e-3 / 2e-2
 //   robust float    R = 1e3: 1.5e-4 / 5e-4;  R = 2e3: 2.9e-4 / 1.3e-3;  R = 1e4: 1.8e-3 / 6e-3
