@@ -82,7 +82,7 @@ double precisionBudget(const SceneScale& s) {
 SceneScale sceneScale(const SceneDesc& scene) {
   // Two lengths set the error: coordinates, whose rounding is ε relative to their magnitude, and the distance
   // a ray travels from its origin (the camera or a surface) to what it hits, which the sphere's t error
-  // scales with (stability.md F1). The box around the camera and every bounded object bounds the second by
+  // scales with (docs/reference/stability.md F1). The box around the camera and every bounded object bounds the second by
   // its diagonal. Lights are only targets of rays, so they do not count.
   double largest = maxAbs(scene.camera.location);
   glm::dvec3 lo = scene.camera.location, hi = scene.camera.location;

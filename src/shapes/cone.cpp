@@ -9,7 +9,7 @@ namespace rt {
 //   a = dp·dp − (k·dy)²,  b = op·dp − R0·k·dy,  c = op·op − R0²,  R0 = r1 + k·oy,
 // solved by the q-form (Numerical Recipes §5.6). Squaring adds the mirror cone beyond the apex; the apex lies
 // outside (0, h) or on an end, so the height test removes it. a = 0 (ray parallel to a generator line) leaves
-// the single root c/q = −c/2b; dy = 0 skips the disks (stability.md F8). Near the apex R0 → 0 and both b² and
+// the single root c/q = −c/2b; dy = 0 skips the disks (docs/reference/stability.md F8). Near the apex R0 → 0 and both b² and
 // a·c are tiny differences of nearly equal terms, which float loses (t off by 2e-3 at t ≈ 7, docs/accuracy.md):
 // the coefficients are formed in double, where the products of float inputs are exact and the cancellation
 // leaves 29 more bits.
@@ -43,7 +43,7 @@ std::optional<Hit<T>> Cone<T>::intersect(const Ray<T>& ray, Interval<T> range) c
     const T len = glm::length(radial);
     const Vec3<T> u = len > T(0) ? radial / len : Vec3<T>(0);
     hit.normal = glm::normalize(u - slope_ * frame_.axis());
-    // Re-projected onto the side (stability.md F4): at the radius of its height, between the ends.
+    // Re-projected onto the side (docs/reference/stability.md F4): at the radius of its height, between the ends.
     const T y = frame_.heightAt(s, t, std::max(baseRadius_, capRadius_));
     hit.point = frame_.at(y, (baseRadius_ + slope_ * y) * u);
   } else {

@@ -1,5 +1,5 @@
-// Whole-render stability checks (stability.md §2): T10 translation invariance, the far-sphere silhouette,
-// T11 recursion against the closed form, T12 determinism, and finite pixels throughout.
+// Whole-render stability checks (docs/reference/stability.md §2): T10 translation invariance, the far-sphere
+// silhouette, T11 recursion against the closed form, T12 determinism, and finite pixels throughout.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // The precision budget R = (largest coordinate or ray length) ÷ smallest feature and the arithmetic chosen
-// from it (stability.md §1.1), on small scenes built here.
+// from it (docs/reference/stability.md §1.1), on small scenes built here.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -52,7 +52,7 @@ TEST_CASE("rotate <a, b, c> is the course's Rx·Ry·Rz, which turns about z firs
   checkNear(apply(worldFromObject("rotate <0, 0, 90>"), glm::dvec3(1, 0, 0)), glm::dvec3(0, 1, 0), 1e-12);
 }
 
-// csc473-course.md §a.4/§c.10: valentine2's sphere #2 (radius 2, scale <1,2,1> rotate <0,0,−25>
+// docs/reference/csc473.md §a.4/§c.10: valentine2's sphere #2 (radius 2, scale <1,2,1> rotate <0,0,−25>
 // translate <1.2,0,0>) seen through pixel [399, 280] of 640×480, as printed by the course's p4/test1.
 TEMPLATE_TEST_CASE("the course's transformed-ray check", "[transformed]", float, double) {
   using T = TestType;
