@@ -86,7 +86,7 @@ template <class T> Ray<T> spawnRay(const Hit<T>& hit, const Vec3<T>& dir, Offset
 // direction from the hit point picks the side to leave by. The course reference then aims from its offset
 // origin, so its ray reaches the target itself; the other policies keep that direction, a ray parallel to the
 // one from the hit point: aimed from its origin at a target nearer the surface than the origin, it would
-// run back down to the surface, and scale-aware offsets are too small for that (tests/test_stability_spawn.cpp
+// run back down to the surface, and scale-aware offsets are too small for that (tests/geometry/test_stability_spawn.cpp
 // counts it). `dir` is normalize(target − hit.point) and `side` a vector on the side of the surface to leave
 // by: `dir` itself, or a shading normal already known to face the target, which lets the origin be found
 // without waiting for dir's square root. The ray and segment are written in place: the tracer makes one for
