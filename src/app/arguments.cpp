@@ -28,8 +28,8 @@ namespace {
 
 template <class E> using Names = std::initializer_list<std::pair<const char*, E>>;
 
-const Names<Precision> kPrecisions = {{"float", Precision::Float}, {"double", Precision::Double},
-                                      {"course", Precision::Course}, {"auto", Precision::Auto}};
+const Names<Tier> kPrecisions = {{"float", Tier::Float}, {"double", Tier::Double},
+                                      {"course", Tier::Course}, {"auto", Tier::Auto}};
 const Names<SphereMethod> kSpheres = {{"textbook", SphereMethod::Textbook}, {"robust", SphereMethod::Robust},
                                       {"auto", SphereMethod::Auto}};
 const Names<OffsetPolicy> kOffsets = {{"relative", OffsetPolicy::Relative}, {"course", OffsetPolicy::Course},
@@ -64,8 +64,8 @@ std::string pixelFlags(const RenderOptions& o) {
   const auto add = [&](bool differs, const std::string& flag) {
     if (differs) flags += (flags.empty() ? "" : " ") + flag;
   };
-  add(o.arithmetic.precision != defaults.arithmetic.precision,
-      "--precision=" + nameOf(kPrecisions, o.arithmetic.precision));
+  add(o.arithmetic.tier != defaults.arithmetic.tier,
+      "--precision=" + nameOf(kPrecisions, o.arithmetic.tier));
   add(o.arithmetic.sphere != defaults.arithmetic.sphere, "--sphere=" + nameOf(kSpheres, o.arithmetic.sphere));
   add(o.arithmetic.offset.has_value(), "--offset=" + nameOf(kOffsets, o.arithmetic.offset.value_or(OffsetPolicy())));
   add(o.depth.has_value(), "--depth=" + std::to_string(o.depth.value_or(0)));
@@ -83,7 +83,7 @@ RenderOptions parseFlag(const std::string& flag, RenderOptions o) {
   };
   if (flag == "-sds") return o;  // the course's "use a hierarchy": ours decides per scene (Scene, Hierarchy)
   if (const char* p = value("--precision")) {
-    o.arithmetic.precision = choice("--precision", p, kPrecisions);
+    o.arithmetic.tier = choice("--precision", p, kPrecisions);
     return o;
   }
   if (const char* p = value("--sphere")) {

@@ -19,7 +19,7 @@ namespace rt {
 namespace {
 
 constexpr int kMaxImageSide = 32768;  // per side; larger is certainly a typo
-constexpr int kDefaultSide = 300;     // the CS 3451 starter's size(300, 300) (cs3451-course.md §A.2)
+constexpr int kDefaultSide = 300;     // the CS 3451 starter's size(300, 300) (docs/reference/cs3451.md §A.2)
 
 struct Command {
   const char* name;

@@ -23,8 +23,9 @@ constexpr int kTile = 32;
 template <class Store>
 void renderRows(const SceneDesc& desc, int width, int height, const Region& region, const RenderOptions& options,
                 const RenderMonitor& monitor, const Store& store) {
-  const Arithmetic arithmetic = chooseArithmetic(desc, options.arithmetic);
-  withPrecision(arithmetic.precision, [&](auto tag) {
+  const Arithmetic arithmetic =
+      chooseArithmetic(desc, options.arithmetic, View{width * options.samples, height * options.samples});
+  withPrecision(arithmetic.tier, [&](auto tag) {
     using T = decltype(tag);
     Stopwatch watch;
     const Scene<T> scene(desc, arithmetic, options.hierarchy, options.threads);
@@ -35,8 +36,8 @@ void renderRows(const SceneDesc& desc, int width, int height, const Region& regi
     // tests, never an answer), so the image is the same for any thread count. One tracer per tile: a tile's
     // shadow rays are coherent, and its cache is its own. Tiles go column by column, so that threads work on
     // tiles one above another, whose rows lie on pages of their own: side by side, they would take the same
-    // fresh pages of the image at once, and the kernel would fault each twice (the small bench scene at
-    // 1280×960 on two threads: 1350-1860 page faults in all instead of 1240).
+    // fresh pages of the image at once, and the kernel would fault each twice (docs/performance-notes.md,
+    // "Tile order").
     // Every pixel's colour depends on its (x, y) alone, so a region's pixels are those of the whole picture.
     const int left = region.x0, bottom = height - region.y1, right = region.x1, top = height - region.y0;
     const int tilesX = (right - left + kTile - 1) / kTile, tilesY = (top - bottom + kTile - 1) / kTile;
