@@ -9,6 +9,7 @@
 #include "raytrace/app/invocation.hpp"
 #include "raytrace/parse/scene_file.hpp"
 #include "raytrace/util/error.hpp"
+#include "raytrace/util/message.hpp"
 #include "raytrace/util/parallel.hpp"
 #include "raytrace/util/stopwatch.hpp"
 
@@ -61,7 +62,9 @@ std::string usage() {
       "                                  spawned-ray origins (default: the arithmetic's): relative normal\n"
       "                                  offset, the course's 0.001 along the normal, a fixed 1e-4 along\n"
       "                                  the normal, or Waechter-Binder's ulp offset\n"
-      "  --depth=N                       deepest reflection/refraction level (default: the scene language's)\n"
+      "  --depth=N                       deepest reflection/refraction level, 0 to 64 (default: the scene\n"
+      "                                  language's); a ray is traced only while it can still change its\n"
+      "                                  pixel, and past depth 12 an eye ray's tree stops at 8191 rays\n"
       "  -altbrdf                        Cook-Torrance (GGX) instead of Blinn-Phong\n"
       "  -fresnel                        Schlick-weighted reflection and refraction\n"
       "  -beers                          Beer's-law absorption inside transparent objects\n"
@@ -73,12 +76,14 @@ std::string usage() {
       "  --stats                         after render, how long loading, building, tracing and writing the\n"
       "                                  PNG took (stderr)\n"
       "  -sds                            accepted for the course; a hierarchy is used whenever it pays\n"
-      "  --hierarchy=auto|always|never   force the bounding volume hierarchy on or off (same image)\n";
+      "  --hierarchy=auto|always|never   force the bounding volume hierarchy on or off (same image)\n"
+      "  --allow-write-anywhere          let a .cli scene's 'write' name an absolute path or go up with '..'\n"
+      "                                  (by default it may only write into the current folder and below)\n";
   return text;
 }
 
 int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  if (args.empty()) throw Error("no command given\n" + usage());
+  if (args.empty()) throw Error("no command given (see raytrace --help)");
   if (args[0] == "--help" || args[0] == "-h") {
     out << usage();
     return 0;
@@ -87,17 +92,21 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   for (const Command& c : commands()) {
     if (args[0] == c.name) command = &c;
   }
-  if (!command) throw Error("unknown command '" + args[0] + "'\n" + usage());
+  if (!command) throw Error("unknown command " + quote(args[0]) + " (see raytrace --help)");
 
   // Flags start with '-' and a letter; anything else (a negative number too) is positional.
   std::vector<std::string> positional;
   RenderOptions options;
-  bool stats = false;
+  bool stats = false, writeAnywhere = false;
   if (isatty(STDERR_FILENO)) options.progress = &err;  // only render() shows it, and only to a person
   for (size_t i = 1; i < args.size(); ++i) {
     std::string a = args[i];
     if (a == "--stats") {  // not a render option: the command line reports it
       stats = true;
+      continue;
+    }
+    if (a == "--allow-write-anywhere") {  // not a render option either: it is about the files render makes
+      writeAnywhere = true;
       continue;
     }
     if (a == "--threads") {  // also written --threads=N
@@ -114,12 +123,14 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (positional.size() != size_t(1 + command->numbers) && !defaultSize) {
     throw Error(std::string(command->name) + " takes " + (command->sizeOptional ? "1 or " : "") +
                 std::to_string(1 + command->numbers) + " arguments, found " + std::to_string(positional.size()) +
-                "\nusage: " + commandUsage(*command));
+                " (usage: " + commandUsage(*command) + ")");
   }
   if (stats && std::string(command->name) != "render") throw Error("--stats is for the render command only");
   Invocation inv;
   inv.options = options;
   if (stats) inv.stats = &err;
+  inv.errors = &err;
+  inv.writeAnywhere = writeAnywhere;
   if (defaultSize) {
     inv.width = inv.height = kDefaultSide;
   } else if (command->numbers >= 2) {
@@ -135,7 +146,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   Stopwatch watch;
   inv.scene = loadScene(positional[0], options.threads);
   inv.loadSeconds = watch.lap();
-  for (const std::string& w : inv.scene.warnings) err << w << "\n";
+  for (const std::string& w : collapseRepeats(inv.scene.warnings)) err << w << "\n";
   return command->run(inv, out);
 }
 

@@ -1,10 +1,13 @@
 // The commands that write images: raycast (Program 1) and render.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
 #include "raytrace/app/invocation.hpp"
 #include "raytrace/image/image.hpp"
 #include "raytrace/image/png.hpp"
+#include "raytrace/util/error.hpp"
+#include "raytrace/util/message.hpp"
 #include "raytrace/util/stopwatch.hpp"
 
 namespace rt {
@@ -25,9 +28,32 @@ int raycast(const Invocation& inv, std::ostream&) {
   return 0;
 }
 
+namespace {
+
+// Whether a path a scene file names stays in the folder it is rendered into: it is relative and never goes
+// up. A scene from someone else must not create or replace files elsewhere unless the user says so.
+bool staysInFolder(const std::string& path) {
+  if (path.empty() || path[0] == '/') return false;
+  for (size_t start = 0; start <= path.size();) {
+    const size_t end = std::min(path.find('/', start), path.size());
+    if (path.compare(start, end - start, "..") == 0) return false;
+    start = end + 1;
+  }
+  return true;
+}
+
+}  // namespace
+
 // The Whitted render of Programs 2-4, written to output.png; a file that names its own images (.cli `write`)
-// gets each of them instead, in file order, each showing the scene as it stood at its command.
+// gets each of them instead, in file order, each showing the scene as it stood at its command. A write that
+// fails is reported where the file asks for it and the others are still made; the exit status tells.
 int renderImage(const Invocation& inv, std::ostream&) {
+  for (const WriteDesc& w : inv.scene.writes) {
+    if (!inv.writeAnywhere && !staysInFolder(w.path)) {
+      throw ParseError(w.loc, "'write' may only name a file in the folder the scene is rendered into and below, "
+                              "found " + quote(w.path) + " (--allow-write-anywhere allows it)");
+    }
+  }
   RenderTimes times;
   RenderOptions options = inv.options;
   options.times = &times;
@@ -39,7 +65,18 @@ int renderImage(const Invocation& inv, std::ostream&) {
     png += watch.lap();
   };
   if (inv.scene.writes.empty()) renderTo(inv.scene, "output.png");
-  for (const WriteDesc& w : inv.scene.writes) renderTo(w.scene, w.path);
+  int status = 0;
+  for (const WriteDesc& w : inv.scene.writes) {
+    try {
+      renderTo(sceneAt(inv.scene, w), w.path);
+    } catch (const ParseError& e) {
+      *inv.errors << e.what() << "\n";
+      status = 1;
+    } catch (const Error& e) {
+      *inv.errors << ParseError(w.loc, e.what()).what() << "\n";
+      status = 1;
+    }
+  }
   if (inv.stats) {
     const auto ms = [](double seconds) {
       char text[32];
@@ -52,7 +89,7 @@ int renderImage(const Invocation& inv, std::ostream&) {
                << ", " << options.samples * options.samples << (options.samples == 1 ? " eye ray" : " eye rays")
                << " per pixel, " << options.threads << (options.threads == 1 ? " thread)\n" : " threads)\n");
   }
-  return 0;
+  return status;
 }
 
 }  // namespace rt
