@@ -138,8 +138,8 @@ class CliParser {
       const auto v = numbers(words, 5);
       const double r = positive(words, 1, v, "radius");
       if (!(v[3] < v[4])) {
-        throw ParseError(words[4].loc, "'cylinder' ymin must be less than ymax, found ymin " + printable(words[4].text) +
-                                           " and ymax " + printable(words[5].text));
+        throw ParseError(words[4].loc, "'cylinder' ymin must be less than ymax, found ymin " +
+                                           printable(words[4].text) + " and ymax " + printable(words[5].text));
       }
       addObject(command, CylinderDesc{{v[1], v[3], v[2]}, {v[1], v[4], v[2]}, r});
     } else if (name == "write") {
@@ -178,7 +178,8 @@ class CliParser {
                          const std::string& what) {
     if (!(v[i - 1] > 0)) {
       throw ParseError(words[i].loc,
-                       "'" + words[0].text + "' " + what + " must be greater than 0, found " + printable(words[i].text));
+                       "'" + words[0].text + "' " + what + " must be greater than 0, found " +
+                           printable(words[i].text));
     }
     return v[i - 1];
   }
@@ -204,7 +205,9 @@ class CliParser {
   // written: C = Ca + Σ (Cd·Lc·N·L + Cs·Lc·(N·H)^P) + Krefl·C_refl (§A.4.5).
   void surface(const std::vector<Word>& words) {
     const auto v = numbers(words, 11);
-    if (v[9] < 0) throw ParseError(words[10].loc, "'surface' power P must not be negative, found " + printable(words[10].text));
+    if (v[9] < 0) {
+      throw ParseError(words[10].loc, "'surface' power P must not be negative, found " + printable(words[10].text));
+    }
     Material m;
     m.ambient = color(v, 0);
     m.diffuse = color(v, 3);
