@@ -42,12 +42,11 @@ std::string thousands(std::size_t n) {
 
 namespace {
 
-// The part of "file:line:col: warning: text" after the location: the first ": " followed by a word that
-// is not a number ends it.
+// The part of "file:line:col: warning: text" from its kind on ("warning: text"), or the whole line.
 std::string_view what(std::string_view line) {
-  for (size_t at = line.find(": "); at != std::string_view::npos; at = line.find(": ", at + 1)) {
-    const std::string_view rest = line.substr(at + 2);
-    if (!rest.empty() && !(rest[0] >= '0' && rest[0] <= '9')) return rest;
+  for (const std::string_view kind : {": warning: ", ": error: "}) {
+    const size_t at = line.find(kind);
+    if (at != std::string_view::npos) return line.substr(at + 2);
   }
   return line;
 }

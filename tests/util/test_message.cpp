@@ -37,5 +37,7 @@ TEST_CASE("message: repeated messages are counted once, at their first place") {
                                                            "s.pov:7:1: warning: other"});
   CHECK(collapseRepeats({"a.pov:1:1: warning: x", "b.pov:2:2: warning: y"}) ==
         std::vector<std::string>{"a.pov:1:1: warning: x", "b.pov:2:2: warning: y"});
+  CHECK(collapseRepeats({"a: 1.pov:1:1: warning: x", "a: 1.pov:9:3: warning: x"}) ==
+        std::vector<std::string>{"a: 1.pov:1:1: warning: x (and 1 more like it)"});
   CHECK(collapseRepeats({}).empty());
 }

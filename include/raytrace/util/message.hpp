@@ -23,8 +23,8 @@ std::string quote(std::string_view text, std::size_t most = kMaxQuoted);
 // A count with thousands separators: "299,999".
 std::string thousands(std::size_t n);
 
-// Message lines "<where>: <what>" with each repeated <what> (the text after the location's "file:line:col: ")
-// kept once, at its first place, followed by " (and N more like it)": 300,000 identical warnings are one line.
+// Message lines "file:line:col: warning: text" with each repeated "warning: text" kept once, at its first
+// place, followed by " (and N more like it)": 300,000 identical warnings are one line.
 std::vector<std::string> collapseRepeats(const std::vector<std::string>& lines);
 
 }  // namespace rt
