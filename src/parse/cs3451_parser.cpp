@@ -1,5 +1,6 @@
 #include "raytrace/parse/cs3451_parser.hpp"
 
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -242,6 +243,10 @@ class CliParser {
       throw ParseError(words[2].loc, "'write' takes one file name, found another word " + quote(words[2].text));
     }
     const std::string& path = words[1].text;
+    if (path.size() > PATH_MAX) {  // no system opens it, and its message would quote all of it
+      throw ParseError(words[1].loc, "'write' file name is longer than " + std::to_string(PATH_MAX) +
+                                         " bytes: " + quote(path));
+    }
     if (extension(path) != "png") {
       throw ParseError(words[1].loc, "'write' makes PNG files: the name must end in .png, found " + quote(path));
     }
