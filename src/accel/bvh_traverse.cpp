@@ -104,8 +104,8 @@ void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::opti
 }
 
 template <class T>
-void Bvh<T>::blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active,
-                      const Object<T>** blockers) const {
+void Bvh<T>::occluders(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active,
+                       const Object<T>** found) const {
   if (nodes_.empty()) return;
   Packet& packet = scratchPacket<T>();
   // Every ray has its own tMin; the smallest, tested against all, only admits more boxes, whose objects are
@@ -124,7 +124,7 @@ void Bvh<T>::blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t ac
   stack[size++] = {0, active};
   while (size > 0) {
     const Pending p = stack[--size];
-    const uint32_t live = p.rays & active;  // those not blocked yet
+    const uint32_t live = p.rays & active;  // those not occluded yet
     if (!live) continue;
     const Node& node = nodes_[p.node];
     uint32_t childRays[kWidth];
@@ -137,7 +137,7 @@ void Bvh<T>::blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t ac
         continue;
       }
       for (uint32_t o = node.first[k]; o < node.first[k] + node.count[k]; ++o) {
-        active &= ~objects_[o]->block(rays, ranges, childRays[k] & active, blockers);
+        active &= ~objects_[o]->noteOccluder(rays, ranges, childRays[k] & active, found);
         if (!active) return;
       }
     }
@@ -150,8 +150,9 @@ template void Bvh<double>::entries(const Node&, const Packet&, double, uint32_t,
                                    double (&)[kWidth]);
 template void Bvh<float>::closestHits(const Ray<float>*, int, Interval<float>, std::optional<Hit<float>>*) const;
 template void Bvh<double>::closestHits(const Ray<double>*, int, Interval<double>, std::optional<Hit<double>>*) const;
-template void Bvh<float>::blockers(const Ray<float>*, const Interval<float>*, uint32_t, const Object<float>**) const;
-template void Bvh<double>::blockers(const Ray<double>*, const Interval<double>*, uint32_t,
-                                    const Object<double>**) const;
+template void Bvh<float>::occluders(const Ray<float>*, const Interval<float>*, uint32_t,
+                                    const Object<float>**) const;
+template void Bvh<double>::occluders(const Ray<double>*, const Interval<double>*, uint32_t,
+                                     const Object<double>**) const;
 
 }  // namespace rt

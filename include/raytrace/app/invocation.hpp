@@ -16,9 +16,10 @@ struct Invocation {
   SceneDesc scene;
   int width = 0, height = 0, x = 0, y = 0;
   RenderOptions options;
-  std::ostream* stats = nullptr;   // --stats: where render reports how long each step took
-  std::ostream* errors = nullptr;  // where a command reports a failure it carries on after (a .cli write)
-  bool writeAnywhere = false;      // --allow-write-anywhere: a .cli write may leave the current folder
+  std::ostream* progress = nullptr;  // where render shows its progress line (not with --quiet)
+  std::ostream* stats = nullptr;     // --stats: where render reports how long each step took
+  std::ostream* errors = nullptr;    // where a command reports a failure it carries on after (a .cli write)
+  bool writeAnywhere = false;        // --allow-write-anywhere: a .cli write may leave the current folder
   double loadSeconds = 0;         // the reading of the scene file
 };
 

@@ -67,7 +67,7 @@ struct Conventions {
   bool shadeDeepest = true;      // .cli: a ray at maxDepth that hits returns black (cs3451 §A.4)
 };
 
-enum class SceneLanguage { Pov, Cli };
+enum class SceneLanguage { Pov, Cs3451 };
 
 // An image the file itself asks for (.cli `write`), showing the scene as it stood at that command. A .cli file
 // only adds lights and objects and changes its camera and background, so the scene then is the first `lights`
