@@ -188,7 +188,7 @@ TEMPLATE_TEST_CASE("sphere: the shadow test of a packet occludes exactly the ray
     }
     const uint32_t open = uint32_t(rng());
     const uint32_t mine = s.occludes(rays, ranges, open);
-    CHECK(mine == s.rt::Object<T>::occludes(rays, ranges, open));  // intersect() ray by ray
+    CHECK(mine == s.rt::template Object<T>::occludes(rays, ranges, open));  // intersect() ray by ray
     occluded += __builtin_popcount(mine);
   }
   CHECK(occluded > 1000);  // the sweep really has rays of both kinds
