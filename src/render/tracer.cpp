@@ -28,7 +28,7 @@ float specularBound(const Material& m, Brdf brdf) {
 
 }  // namespace
 
-// Recursion cutoff (stability.md F12). A secondary ray is skipped when its accumulated weight w (the product
+// Recursion cutoff (docs/reference/stability.md F12). A secondary ray is skipped when its accumulated weight w (the product
 // of the weights and tints from the eye down to it) times the brightest colour its subtree could return,
 // bound_[levels left], is below cutoff_ = (½/255) / 2^(D+1), D = min(maxDepth, kFullTreeDepth), or when its
 // eye ray's tree already has 2^(D+1) − 1 rays. A tree of depth D has no more, and fewer than 2^(D+1) rays are
@@ -189,7 +189,7 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float we
     record->normal = glm::dvec3(hit.normal);
     record->t = double(hit.t);
   }
-  // The .cli rule: the deepest ray that hits returns black (cs3451-course.md §A.4).
+  // The .cli rule: the deepest ray that hits returns black (docs/reference/cs3451.md §A.4).
   if (depth == conventions_.maxDepth && !conventions_.shadeDeepest) return Color(0);
   if (options_.normals) return Color(hit.normal) * 0.5f + 0.5f;
 

@@ -62,11 +62,11 @@ template <class T> class Tracer {
                const std::optional<ShadowRay>* shadows);
   // The shadow ray toward `light`, or false when the light cannot light the point from the viewer's side `n`:
   // a light behind the surface as the viewer sees it, or on the point itself.
-  // It is written into `out` in place (it is made for every hit and light, and a returned copy would be
-  // read back before its bytes have settled: a store-forwarding stall per ray).
+  // It is written into `out` in place: it is made for every hit and light, and a returned copy would stall
+  // (docs/performance-notes.md, "Shadow rays built in place").
   bool shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, ShadowRay& out) const;
   // Whether a secondary ray of accumulated weight `weight` at `depth` is worth tracing and its eye ray's tree
-  // has room for it (stability.md F12; tracer.cpp); a ray it says yes to is counted against that room.
+  // has room for it (docs/reference/stability.md F12); a ray it says yes to is counted against that room.
   bool matters(float weight, int depth);
 
   const Scene<T>& scene_;
