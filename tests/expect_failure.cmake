@@ -5,11 +5,11 @@
 file(REMOVE_RECURSE "${WORK}")
 file(COPY "${SOURCE}/" DESTINATION "${WORK}")
 file(WRITE "${WORK}/output.png" "previous render")
-# A scene too big to keep in the repository is made here: SCENE_HEAD, then SCENE_BODY SCENE_TIMES times, with
-# ';' between lines.
+# A scene too big to keep in the repository is made here: SCENE_HEAD, then SCENE_BODY SCENE_TIMES times, then
+# SCENE_TAIL, with ';' between lines.
 if(DEFINED SCENE_NAME)
   string(REPEAT "${SCENE_BODY};" ${SCENE_TIMES} body)
-  string(REPLACE ";" "\n" text "${SCENE_HEAD};${body}")
+  string(REPLACE ";" "\n" text "${SCENE_HEAD};${body}${SCENE_TAIL}")
   file(WRITE "${WORK}/${SCENE_NAME}" "${text}")
 endif()
 file(GLOB before RELATIVE "${WORK}" "${WORK}/*")

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "raytrace/util/error.hpp"
+#include "raytrace/util/message.hpp"
 
 namespace rt {
 
@@ -14,12 +15,12 @@ int parseInt(const std::string& s, const char* what, int lo, int hi) {
   char* end = nullptr;
   const long v = std::strtol(s.c_str(), &end, 10);
   if (s.empty() || *end != '\0') {
-    throw Error(std::string(what) + " must be a whole number, found '" + s + "'");
+    throw Error(std::string(what) + " must be a whole number, found " + quote(s));
   }
   // A number too long for a long (ERANGE) is still a whole number, just out of range.
   if (errno == ERANGE || v < lo || v > hi) {
     throw Error(std::string(what) + " must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
-                ", found " + s);
+                ", found " + printable(s));
   }
   return int(v);
 }
@@ -46,7 +47,7 @@ template <class E> E choice(const char* flag, const std::string& value, Names<E>
     list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + std::string(name);
     ++i;
   }
-  throw Error(std::string(flag) + " must be " + list + ", found '" + value + "'");
+  throw Error(std::string(flag) + " must be " + list + ", found " + quote(value));
 }
 
 template <class E> std::string nameOf(Names<E> names, E value) {
@@ -114,7 +115,7 @@ RenderOptions parseFlag(const std::string& flag, RenderOptions o) {
   else if (flag == "-fresnel") o.fresnel = true;
   else if (flag == "-beers") o.beers = true;
   else if (flag == "-normals") o.normals = true;
-  else throw Error("unknown option '" + flag + "' (see raytrace --help)");
+  else throw Error("unknown option " + quote(flag) + " (see raytrace --help)");
   return o;
 }
 

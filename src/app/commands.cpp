@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <functional>
+#include <optional>
 
 #include <unistd.h>
 
@@ -11,6 +12,7 @@
 #include "raytrace/app/merge.hpp"
 #include "raytrace/parse/scene_file.hpp"
 #include "raytrace/util/error.hpp"
+#include "raytrace/util/message.hpp"
 #include "raytrace/util/parallel.hpp"
 #include "raytrace/util/stopwatch.hpp"
 
@@ -65,7 +67,9 @@ const char* const kRenderOptions =
     "                                  spawned-ray origins (default: the arithmetic's): relative normal\n"
     "                                  offset, the course's 0.001 along the normal, a fixed 1e-4 along\n"
     "                                  the normal, or Waechter-Binder's ulp offset\n"
-    "  --depth=N                       deepest reflection/refraction level (default: the scene language's)\n"
+    "  --depth=N                       deepest reflection/refraction level, 0 to 64 (default: the scene\n"
+    "                                  language's); a ray is traced only while it can still change its\n"
+    "                                  pixel, and past depth 12 an eye ray's tree stops at 8191 rays\n"
     "  -altbrdf                        Cook-Torrance (GGX) instead of Blinn-Phong\n"
     "  -fresnel                        Schlick-weighted reflection and refraction\n"
     "  -beers                          Beer's-law absorption inside transparent objects\n"
@@ -85,6 +89,8 @@ const char* const kImageOptions =
     "                                  .png (8-bit), .hdr (Radiance RGBE) or .exr (OpenEXR, 32-bit float),\n"
     "                                  the last two the linear radiance before clamping. For a .cli scene\n"
     "                                  that writes its own images, the folder to write them into\n"
+    "  --allow-write-anywhere          let a .cli scene's 'write' name an absolute path or go up with '..'\n"
+    "                                  (by default it may only write into the current folder and below)\n"
     "  --tile I/N                      render only the I-th of N bands of rows (0 <= I < N), written to\n"
     "                                  -o NAME.exr as a tile for merge\n"
     "  --region X0,Y0,X1,Y1            render only columns X0 to X1-1 and rows Y0 to Y1-1, rows counted\n"
@@ -118,7 +124,7 @@ const char* nearestCommand(const std::string& word) {
   return best;
 }
 
-const Command* findCommand(const std::string& name) {
+const Command* commandNamed(const std::string& name) {
   for (const Command& c : commands()) {
     if (name == c.name) return &c;
   }
@@ -127,17 +133,50 @@ const Command* findCommand(const std::string& name) {
 
 [[noreturn]] void unknownCommand(const std::string& name) {
   const char* near = nearestCommand(name);
-  throw Error("unknown command '" + name + "'" + (near ? " (did you mean '" + std::string(near) + "'?)" : "") +
-              "; raytrace --help lists the commands");
+  throw Error("unknown command " + quote(name) + (near ? ": did you mean " + quote(near) + "?" : "") +
+              " (see raytrace --help)");
+}
+
+const Command& findCommand(const std::vector<std::string>& args) {
+  if (args.empty()) throw Error("no command given (see raytrace --help)");
+  const Command* command = commandNamed(args[0]);
+  if (!command) unknownCommand(args[0]);
+  return *command;
 }
 
 // `raytrace help <command>` and `raytrace <command> --help`.
 std::string commandHelp(const std::string& name) {
   if (name == "merge") return std::string("usage: ") + kMergeUsage + "\n" + kMergeSummary + "\n";
-  const Command* c = findCommand(name);
+  const Command* c = commandNamed(name);
   if (!c) unknownCommand(name);
   return "usage: " + commandUsage(*c) + " [options]\n" + c->summary + "\n" + kRenderOptions +
          (c->writesImage ? kImageOptions : "");
+}
+
+}  // namespace
+
+std::string usage() {
+  std::string text = "usage:\n";
+  for (const Command& c : commands()) text += "  " + commandUsage(c) + " [options]\n";
+  text += std::string("  ") + kMergeUsage + "\n  raytrace help <command>\n  raytrace --version\n";
+  return text + kRenderOptions + kImageOptions;
+}
+
+namespace {
+
+// The text --help, --version, `help <command>` or `<command> --help` asks for; nothing when the arguments ask
+// for a run.
+std::optional<std::string> helpText(const std::vector<std::string>& args) {
+  if (args.empty()) return std::nullopt;
+  if (args[0] == "--help" || args[0] == "-h") return usage();
+  if (args[0] == "--version") return std::string("raytrace ") + RAYTRACE_VERSION + "\n";
+  if (args[0] == "help") {
+    if (args.size() != 2) throw Error("help takes one command, as in: raytrace help render");
+    return commandHelp(args[1]);
+  }
+  const bool known = args[0] == "merge" || commandNamed(args[0]);
+  if (known && std::find(args.begin() + 1, args.end(), "--help") != args.end()) return commandHelp(args[0]);
+  return std::nullopt;
 }
 
 // The value of an option written `--name VALUE` or `--name=VALUE` at args[i], moving i past it; nothing if
@@ -155,10 +194,64 @@ std::optional<std::string> optionValue(const std::vector<std::string>& args, siz
   return std::nullopt;
 }
 
+// The words after the command: flags, which start with '-' and a letter, and the positional arguments
+// (a negative number too).
+struct Words {
+  std::vector<std::string> positional;
+  RenderOptions options;
+  bool stats = false, quiet = false;  // not render options: they say how a run is watched
+  bool writeAnywhere = false;         // nor these: they are about the files render makes
+  std::string output, outputWord;     // -o's value and the word that gave it, as written; "" without -o
+  std::string tile, region;           // --tile's and --region's values; "" without them
+};
+
+Words readWords(const std::vector<std::string>& args) {
+  Words words;
+  for (size_t i = 1; i < args.size(); ++i) {
+    std::string a = args[i];
+    if (a == "--stats") {
+      words.stats = true;
+      continue;
+    }
+    if (a == "--quiet") {
+      words.quiet = true;
+      continue;
+    }
+    if (a == "--allow-write-anywhere") {
+      words.writeAnywhere = true;
+      continue;
+    }
+    if (const auto v = optionValue(args, i, {"-o", "--output"})) {
+      if (v->empty()) throw Error(a + " needs a file name");
+      words.outputWord = a;
+      words.output = *v;
+      continue;
+    }
+    if (const auto v = optionValue(args, i, {"--tile"})) {
+      words.tile = *v;
+      continue;
+    }
+    if (const auto v = optionValue(args, i, {"--region"})) {
+      words.region = *v;
+      continue;
+    }
+    if (a == "--threads") {  // also written --threads=N
+      if (i + 1 == args.size()) throw Error("--threads needs a number of threads");
+      a += "=" + args[++i];
+    }
+    if (a.size() > 1 && a[0] == '-' && (std::isalpha(static_cast<unsigned char>(a[1])) || a[1] == '-')) {
+      words.options = parseFlag(a, words.options);
+    } else {
+      words.positional.push_back(a);
+    }
+  }
+  return words;
+}
+
 // "I/N" of --tile: the I-th of N row bands of a picture `height` rows high.
 Region parseTile(const std::string& value, int width, int height) {
   const size_t slash = value.find('/');
-  if (slash == std::string::npos) throw Error("--tile must be I/N, as 0/4, found '" + value + "'");
+  if (slash == std::string::npos) throw Error("--tile must be I/N, as 0/4, found " + quote(value));
   const int n = parseInt(value.substr(slash + 1), "--tile's N", 1, height);
   const int i = parseInt(value.substr(0, slash), "--tile's I", 0, n - 1);
   return rowBand(i, n, width, height);
@@ -171,7 +264,7 @@ Region parseRegion(const std::string& value, int width, int height) {
     if (c == ',') parts.emplace_back();
     else parts.back() += c;
   }
-  if (parts.size() != 4) throw Error("--region must be X0,Y0,X1,Y1, as 0,0,64,48, found '" + value + "'");
+  if (parts.size() != 4) throw Error("--region must be X0,Y0,X1,Y1, as 0,0,64,48, found " + quote(value));
   Region r;
   r.x0 = parseInt(parts[0], "--region's X0", 0, width - 1);
   r.y0 = parseInt(parts[1], "--region's Y0", 0, height - 1);
@@ -180,116 +273,68 @@ Region parseRegion(const std::string& value, int width, int height) {
   return r;
 }
 
-}  // namespace
-
-std::string usage() {
-  std::string text = "usage:\n";
-  for (const Command& c : commands()) text += "  " + commandUsage(c) + " [options]\n";
-  text += std::string("  ") + kMergeUsage + "\n  raytrace help <command>\n  raytrace --version\n";
-  return text + kRenderOptions + kImageOptions;
-}
-
-int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  if (args.empty()) throw Error("no command given; raytrace --help lists the commands");
-  if (args[0] == "--help" || args[0] == "-h") {
-    out << usage();
-    return 0;
+// The invocation the words make, all but the scene, checked before the scene is read.
+Invocation invocation(const Command& command, const Words& words, std::ostream& err) {
+  if (!command.writesImage) {
+    const char* const forImages = " is for the commands that write images (raycast, render)";
+    if (!words.outputWord.empty()) throw Error(words.outputWord + forImages);
+    if (!words.tile.empty()) throw Error(std::string("--tile") + forImages);
+    if (!words.region.empty()) throw Error(std::string("--region") + forImages);
   }
-  if (args[0] == "--version") {
-    out << "raytrace " << RAYTRACE_VERSION << "\n";
-    return 0;
+  const std::vector<std::string>& positional = words.positional;
+  const bool defaultSize = command.sizeOptional && positional.size() == 1;
+  if (positional.size() != size_t(1 + command.numbers) && !defaultSize) {
+    throw Error(std::string(command.name) + " takes " + (command.sizeOptional ? "1 or " : "") +
+                std::to_string(1 + command.numbers) + " arguments, found " + std::to_string(positional.size()) +
+                " (usage: " + commandUsage(command) + ")");
   }
-  if (args[0] == "help") {
-    if (args.size() != 2) throw Error("help takes one command, as in: raytrace help render");
-    out << commandHelp(args[1]);
-    return 0;
+  if (words.stats && std::string(command.name) != "render") throw Error("--stats is for the render command only");
+  if (!words.tile.empty() && !words.region.empty()) {
+    throw Error("--tile and --region both name the part to render: give one");
   }
-  const bool help = std::find(args.begin() + 1, args.end(), "--help") != args.end();
-  if (args[0] == "merge" || findCommand(args[0])) {
-    if (help) {
-      out << commandHelp(args[0]);
-      return 0;
-    }
-  }
-  if (args[0] == "merge") return merge(std::vector<std::string>(args.begin() + 1, args.end()));
-  const Command* command = findCommand(args[0]);
-  if (!command) unknownCommand(args[0]);
-
-  // Flags start with '-' and a letter; anything else (a negative number too) is positional.
-  std::vector<std::string> positional;
-  RenderOptions options;
-  bool stats = false, quiet = false;
-  std::string tile, region;
   Invocation inv;
-  for (size_t i = 1; i < args.size(); ++i) {
-    std::string a = args[i];
-    if (a == "--stats") {  // not render options: they say how a run is watched
-      stats = true;
-      continue;
-    }
-    if (const auto v = optionValue(args, i, {"-o", "--output"})) {
-      if (!command->writesImage) throw Error(a + " is for the commands that write images (raycast, render)");
-      if (v->empty()) throw Error(a + " needs a file name");
-      inv.output = *v;
-      continue;
-    }
-    if (const auto v = optionValue(args, i, {"--tile"})) {
-      if (!command->writesImage) throw Error("--tile is for the commands that write images (raycast, render)");
-      tile = *v;
-      continue;
-    }
-    if (const auto v = optionValue(args, i, {"--region"})) {
-      if (!command->writesImage) throw Error("--region is for the commands that write images (raycast, render)");
-      region = *v;
-      continue;
-    }
-    if (a == "--quiet") {
-      quiet = true;
-      continue;
-    }
-    if (a == "--threads") {  // also written --threads=N
-      if (i + 1 == args.size()) throw Error("--threads needs a number of threads");
-      a += "=" + args[++i];
-    }
-    if (a.size() > 1 && a[0] == '-' && (std::isalpha(static_cast<unsigned char>(a[1])) || a[1] == '-')) {
-      options = parseFlag(a, options);
-    } else {
-      positional.push_back(a);
-    }
-  }
-  const bool defaultSize = command->sizeOptional && positional.size() == 1;
-  if (positional.size() != size_t(1 + command->numbers) && !defaultSize) {
-    throw Error(std::string(command->name) + " takes " + (command->sizeOptional ? "1 or " : "") +
-                std::to_string(1 + command->numbers) + " arguments, found " + std::to_string(positional.size()) +
-                "\nusage: " + commandUsage(*command));
-  }
-  if (stats && std::string(command->name) != "render") throw Error("--stats is for the render command only");
-  if (!tile.empty() && !region.empty()) throw Error("--tile and --region both name the part to render: give one");
   inv.scenePath = positional[0];
-  inv.options = options;
-  if (!quiet && isatty(STDERR_FILENO)) inv.progress = &err;  // only render() shows it, and only to a person
-  if (stats) inv.stats = &err;
+  inv.options = words.options;
+  if (!words.quiet && isatty(STDERR_FILENO)) inv.progress = &err;  // only render() shows it, and only to a person
+  if (words.stats) inv.stats = &err;
+  inv.errors = &err;
+  inv.writeAnywhere = words.writeAnywhere;
+  inv.output = words.output;
   if (defaultSize) {
     inv.width = inv.height = kDefaultSide;
-  } else if (command->numbers >= 2) {
+  } else if (command.numbers >= 2) {
     inv.width = parseInt(positional[1], "width", 1, kMaxImageSide);
     inv.height = parseInt(positional[2], "height", 1, kMaxImageSide);
   }
-  if (command->numbers == 4) {
+  if (command.numbers == 4) {
     inv.x = parseInt(positional[3], "pixel x", 0, inv.width - 1);
     inv.y = parseInt(positional[4], "pixel y", 0, inv.height - 1);
   }
-  if (!tile.empty()) inv.region = parseTile(tile, inv.width, inv.height);
-  if (!region.empty()) inv.region = parseRegion(region, inv.width, inv.height);
-  inv.tile = tile;
-  if (command->writesImage) checkOutput(inv);
+  if (!words.tile.empty()) inv.region = parseTile(words.tile, inv.width, inv.height);
+  if (!words.region.empty()) inv.region = parseRegion(words.region, inv.width, inv.height);
+  inv.tile = words.tile;
+  return inv;
+}
+
+}  // namespace
+
+int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  if (const auto text = helpText(args)) {
+    out << *text;
+    return 0;
+  }
+  if (!args.empty() && args[0] == "merge") return merge(std::vector<std::string>(args.begin() + 1, args.end()));
+  const Command& command = findCommand(args);
+  const Words words = readWords(args);
+  Invocation inv = invocation(command, words, err);
+  if (command.writesImage) checkOutput(inv);
   // The image commands render on all their threads: the helpers start while the file is read.
-  if (command->numbers == 2) startHelpers(options.threads);
+  if (command.numbers == 2) startHelpers(inv.options.threads);
   Stopwatch watch;
-  inv.scene = loadScene(inv.scenePath, options.threads);
+  inv.scene = loadScene(inv.scenePath, inv.options.threads);
   inv.loadSeconds = watch.lap();
-  for (const std::string& w : inv.scene.warnings) err << w << "\n";
-  return command->run(inv, out);
+  for (const std::string& w : collapseRepeats(inv.scene.warnings)) err << w << "\n";
+  return command.run(inv, out);
 }
 
 }  // namespace rt

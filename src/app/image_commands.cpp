@@ -1,4 +1,5 @@
 // The commands that write images: raycast (Program 1) and render, whole or one tile of the picture.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "raytrace/image/image_file.hpp"
 #include "raytrace/image/png_file.hpp"
 #include "raytrace/util/error.hpp"
+#include "raytrace/util/message.hpp"
 #include "raytrace/util/stopwatch.hpp"
 
 namespace rt {
@@ -25,37 +27,52 @@ bool isFolder(const std::string& path) {
   return stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
 }
 
-// One image a command makes: the scene it shows and the file it goes to.
+// Whether a path a scene file names stays in the folder it is rendered into: it is relative and never goes
+// up. A scene from someone else must not create or replace files elsewhere unless the user says so.
+bool staysInFolder(const std::string& path) {
+  if (path.empty() || path[0] == '/') return false;
+  for (size_t start = 0; start <= path.size();) {
+    const size_t end = std::min(path.find('/', start), path.size());
+    if (path.compare(start, end - start, "..") == 0) return false;
+    start = end + 1;
+  }
+  return true;
+}
+
+// One image a command makes: the file it goes to and the .cli `write` that asks for it (none: the whole scene).
 struct Target {
-  const SceneDesc* scene;
   std::string path;
+  const WriteDesc* write = nullptr;
 };
 
 // Where the images go: -o or output.png; for a .cli scene with `write`s (when `sceneWrites`), each to its own
-// name, inside the -o folder if there is one, or to the -o file if the scene writes one image. Each is checked
-// before anything is rendered.
+// name, inside the -o folder if there is one, or to the -o file if the scene writes one image. A name the
+// scene gives must stay in the folder (staysInFolder) unless --allow-write-anywhere.
 std::vector<Target> targets(const Invocation& inv, bool sceneWrites) {
   const std::vector<WriteDesc>& writes = inv.scene.writes;
   const bool folder = !inv.output.empty() && isFolder(inv.output);
   std::vector<Target> out;
   if (!sceneWrites || writes.empty()) {
     if (folder) {
-      throw Error("-o '" + inv.output + "' is a folder, but '" + inv.scenePath +
-                  "' names no images of its own: give -o the image's file name");
+      throw Error("-o " + quote(inv.output, kMaxQuotedPath) + " is a folder, but " +
+                  quote(inv.scenePath, kMaxQuotedPath) + " names no images of its own: give -o the image's file name");
     }
-    out.push_back({&inv.scene, inv.output.empty() ? kDefaultOutput : inv.output});
+    out.push_back({inv.output.empty() ? kDefaultOutput : inv.output});
   } else if (!inv.output.empty() && !folder) {
     if (writes.size() != 1) {
-      throw Error("'" + inv.scenePath + "' writes " + std::to_string(writes.size()) +
+      throw Error(quote(inv.scenePath, kMaxQuotedPath) + " writes " + std::to_string(writes.size()) +
                   " images: -o must name a folder to write them into");
     }
-    out.push_back({&writes[0].scene, inv.output});
+    out.push_back({inv.output, &writes[0]});
   } else {
     for (const WriteDesc& w : writes) {
-      out.push_back({&w.scene, folder && w.path[0] != '/' ? inv.output + "/" + w.path : w.path});
+      if (!inv.writeAnywhere && !staysInFolder(w.path)) {
+        throw ParseError(w.loc, "'write' may only name a file in the folder the scene is rendered into and below, "
+                                "found " + quote(w.path) + " (--allow-write-anywhere allows it)");
+      }
+      out.push_back({folder && w.path[0] != '/' ? inv.output + "/" + w.path : w.path, &w});
     }
   }
-  for (const Target& t : out) checkImagePath(t.path);
   return out;
 }
 
@@ -74,7 +91,8 @@ void checkOutput(const Invocation& inv) {
   if (inv.region) {
     if (inv.output.empty()) throw Error("a tile is written as OpenEXR: name it with -o NAME.exr");
     if (imageFormat(inv.output) != ImageFormat::Exr) {
-      throw Error("cannot write '" + inv.output + "': a tile is written as OpenEXR (name it .exr)");
+      throw Error("cannot write " + quote(inv.output, kMaxQuotedPath) +
+                  ": a tile is written as OpenEXR (name it .exr)");
     }
   }
   if (!inv.output.empty() && !isFolder(inv.output)) checkImagePath(inv.output);
@@ -83,6 +101,7 @@ void checkOutput(const Invocation& inv) {
 // Each pixel gets the pigment of the closest object, or the background (Program 1's ray cast).
 int raycast(const Invocation& inv, std::ostream&) {
   const Target target = targets(inv, false).front();
+  checkImagePath(target.path);
   const Region region = inv.region.value_or(wholeImage(inv.width, inv.height));
   Image image(region.width(), region.height());
   // Image::at counts rows upward from the bottom; the region's rows counted from the top.
@@ -101,28 +120,56 @@ int raycast(const Invocation& inv, std::ostream&) {
 }
 
 // The Whitted render of Programs 2-4; a .cli file that names its own images (`write`) gets each of them, in
-// file order, each showing the scene as it stood at its command.
+// file order, each showing the scene as it stood at its command. Every path is checked before anything is
+// rendered; a write that fails is reported where the file asks for it and the others are still made, the exit
+// status tells.
 int renderImage(const Invocation& inv, std::ostream&) {
   RenderTimes times;
   const RenderOptions& options = inv.options;
   const RenderMonitor monitor{inv.progress, &times};
   const std::vector<Target> all = targets(inv, true);
   if (inv.region && all.size() != 1) throw Error("a tile is of one image, but the scene writes several");
-  double writing = 0;
+  int status = 0;
+  // Runs `step` for target t. The Error of a scene's own write is reported at the write and the others go on.
+  const auto attempt = [&](const Target& t, const auto& step) {
+    try {
+      step();
+      return true;
+    } catch (const ParseError& e) {
+      if (!t.write) throw;
+      *inv.errors << e.what() << "\n";
+    } catch (const Error& e) {
+      if (!t.write) throw;
+      *inv.errors << ParseError(t.write->loc, e.what()).what() << "\n";
+    }
+    status = 1;
+    return false;
+  };
+  std::vector<const Target*> writable;
   for (const Target& t : all) {
+    if (attempt(t, [&] { checkImagePath(t.path); })) writable.push_back(&t);
+  }
+  double writing = 0;
+  const auto renderTo = [&](const SceneDesc& scene, const std::string& path) {
     // A whole PNG is rendered straight to bytes; everything else keeps the floats.
-    if (!inv.region && imageFormat(t.path) == ImageFormat::Png) {
-      const Rgb8Image image = renderRgb8(*t.scene, inv.width, inv.height, options, monitor);
+    if (!inv.region && imageFormat(path) == ImageFormat::Png) {
+      const Rgb8Image image = renderRgb8(scene, inv.width, inv.height, options, monitor);
       Stopwatch watch;
-      writePng(image, t.path);
+      writePng(image, path);
       writing += watch.lap();
     } else {
-      Image image = render(*t.scene, inv.width, inv.height, inv.region.value_or(wholeImage(inv.width, inv.height)),
+      Image image = render(scene, inv.width, inv.height, inv.region.value_or(wholeImage(inv.width, inv.height)),
                            options, monitor);
       Stopwatch watch;
-      write(inv, "render", std::move(image), t.path, t.scene->conventions.toByte);
+      write(inv, "render", std::move(image), path, scene.conventions.toByte);
       writing += watch.lap();
     }
+  };
+  for (const Target* t : writable) {
+    attempt(*t, [&] {
+      if (t->write) renderTo(sceneAt(inv.scene, *t->write), t->path);
+      else renderTo(inv.scene, t->path);
+    });
   }
   if (inv.stats) {
     const auto ms = [](double seconds) {
@@ -136,7 +183,7 @@ int renderImage(const Invocation& inv, std::ostream&) {
                << ", " << options.samples * options.samples << (options.samples == 1 ? " eye ray" : " eye rays")
                << " per pixel, " << options.threads << (options.threads == 1 ? " thread)\n" : " threads)\n");
   }
-  return 0;
+  return status;
 }
 
 }  // namespace rt

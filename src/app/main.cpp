@@ -1,12 +1,33 @@
 // raytrace: the command-line entry point. The only place errors are caught.
+#include <cerrno>
 #include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <new>
 
 #include <malloc.h>
+#include <unistd.h>
 
 #include "raytrace/app/commands.hpp"
 #include "raytrace/util/error.hpp"
+
+namespace {
+
+// Standard output flushed and closed, so that its last write error is seen too: output to a full disk or
+// /dev/full is one message and exit 1, never a truncated file and exit 0.
+void finishStandardOutput() {
+  const auto fail = [](int error) {
+    throw rt::Error(std::string("cannot write to standard output: ") + std::strerror(error ? error : EIO));
+  };
+  std::cout.flush();
+  if (std::cout.fail()) fail(errno);
+  if (std::fflush(stdout) != 0) fail(errno);
+  // A standard output closed from the start (>&-) had nothing written to it: nothing was lost.
+  if (close(STDOUT_FILENO) != 0 && errno != EBADF) fail(errno);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   std::ios::sync_with_stdio(false);
@@ -19,7 +40,9 @@ int main(int argc, char** argv) {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 32 << 20);
   try {
-    return rt::runCommand(std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
+    const int status = rt::runCommand(std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
+    finishStandardOutput();
+    return status;
   } catch (const rt::ParseError& e) {
     std::cerr << e.what() << "\n";
   } catch (const rt::Error& e) {

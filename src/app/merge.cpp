@@ -8,11 +8,14 @@
 #include "raytrace/image/exr_file.hpp"
 #include "raytrace/image/image_file.hpp"
 #include "raytrace/util/error.hpp"
+#include "raytrace/util/message.hpp"
 #include "raytrace/util/parallel.hpp"
 
 namespace rt {
 
 namespace {
+
+constexpr const char* kSeeHelp = " (see raytrace help merge)";
 
 struct MergeArguments {
   std::string output;
@@ -30,7 +33,7 @@ MergeArguments parseMerge(const std::vector<std::string>& args) {
     else if (a.rfind("--output=", 0) == 0) m.output = a.substr(9);
     else if (a == "--threads") m.threads = parseInt(args[++i], "--threads", 1, kMaxThreads);
     else if (a.rfind("--threads=", 0) == 0) m.threads = parseInt(a.substr(10), "--threads", 1, kMaxThreads);
-    else if (a.size() > 1 && a[0] == '-') throw Error("unknown option '" + a + "' for merge (see raytrace help merge)");
+    else if (a.size() > 1 && a[0] == '-') throw Error("unknown option " + quote(a) + " for merge" + kSeeHelp);
     else m.tiles.push_back(a);
   }
   if (m.output.empty()) throw Error("merge needs -o OUTPUT, the image to write");
@@ -45,8 +48,8 @@ std::string difference(const ExrImage& tile, const ExrImage& first) {
   for (const auto& [key, ignored] : keys) {
     if (key == kTilePartAttribute) continue;
     const auto a = tile.attributes.find(key), b = first.attributes.find(key);
-    const std::string mine = a == tile.attributes.end() ? "none" : "'" + a->second + "'";
-    const std::string theirs = b == first.attributes.end() ? "none" : "'" + b->second + "'";
+    const std::string mine = a == tile.attributes.end() ? "none" : quote(a->second);
+    const std::string theirs = b == first.attributes.end() ? "none" : quote(b->second);
     if (mine != theirs) return "its " + key + " is " + mine + ", not " + theirs;
   }
   return "";
@@ -66,7 +69,7 @@ int merge(const std::vector<std::string>& args) {
     const std::string& name = m.tiles[t];
     ExrImage tile = readExr(name);
     if (!tile.attributes.count("raytrace.command")) {
-      throw Error("'" + name + "' is not a raytrace tile: it has no raytrace.command attribute");
+      throw Error(quote(name, kMaxQuotedPath) + " is not a raytrace tile: it has no raytrace.command attribute");
     }
     if (!first) {
       toByteOf(tile.attributes, name);
@@ -75,16 +78,22 @@ int merge(const std::vector<std::string>& args) {
     } else {
       std::string why = difference(tile, *first);
       if (why.empty() && (tile.width != first->width || tile.height != first->height)) why = "its size differs";
-      if (!why.empty()) throw Error("'" + name + "' is a tile of another render than '" + m.tiles[0] + "': " + why);
+      if (!why.empty()) {
+        throw Error(quote(name, kMaxQuotedPath) + " is a tile of another render than " +
+                    quote(m.tiles[0], kMaxQuotedPath) + ": " + why);
+      }
     }
     const Region& r = tile.window;
     if (r.x0 < 0 || r.y0 < 0 || r.x1 > tile.width || r.y1 > tile.height) {
-      throw Error("'" + name + "' holds pixels outside its picture");
+      throw Error(quote(name, kMaxQuotedPath) + " holds pixels outside its picture");
     }
     for (int y = r.y0; y < r.y1; ++y) {
       for (int x = r.x0; x < r.x1; ++x) {
         int& o = owner[size_t(y) * size_t(tile.width) + size_t(x)];
-        if (o) throw Error("'" + name + "' overlaps '" + m.tiles[size_t(o - 1)] + "' at " + pixel(x, y));
+        if (o) {
+          throw Error(quote(name, kMaxQuotedPath) + " overlaps " + quote(m.tiles[size_t(o - 1)], kMaxQuotedPath) +
+                      " at " + pixel(x, y));
+        }
         o = int(t) + 1;
       }
       std::copy(tile.pixels.data() + size_t(y - r.y0) * size_t(r.width()),

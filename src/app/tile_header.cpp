@@ -6,6 +6,7 @@
 #include "raytrace/app/arguments.hpp"
 #include "raytrace/parse/scene_file.hpp"
 #include "raytrace/util/error.hpp"
+#include "raytrace/util/message.hpp"
 
 namespace rt {
 
@@ -49,7 +50,8 @@ Conventions::ToByte toByteOf(const std::map<std::string, std::string>& header, c
   const auto it = header.find(kToByteAttribute);
   if (it != header.end() && it->second == "round") return Conventions::ToByte::Round;
   if (it != header.end() && it->second == "truncate") return Conventions::ToByte::Truncate;
-  throw Error("'" + file + "' is not a raytrace tile: it has no " + kToByteAttribute + " of round or truncate");
+  throw Error(quote(file, kMaxQuotedPath) + " is not a raytrace tile: it has no " + kToByteAttribute +
+              " of round or truncate");
 }
 
 }  // namespace rt

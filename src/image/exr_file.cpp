@@ -13,6 +13,7 @@
 
 #include "raytrace/image/output_file.hpp"
 #include "raytrace/util/error.hpp"
+#include "raytrace/util/message.hpp"
 
 namespace rt {
 
@@ -64,7 +65,7 @@ void writeExr(const Image& pixels, const Region& window, int width, int height,
     file.setFrameBuffer(frameBuffer(pixels, window));
     file.writePixels(window.height());
   } catch (const std::exception& e) {
-    throw Error("cannot write '" + path + "': " + e.what());
+    throw Error("cannot write " + quote(path, kMaxQuotedPath) + ": " + e.what());
   }
   writeFile(path, stream.bytes());
 }
@@ -109,7 +110,7 @@ ExrImage readExr(const std::string& path) {
     file.readPixels(data.min.y, data.max.y);
     return ExrImage{width, height, window, std::move(pixels), std::move(attributes)};
   } catch (const std::exception& e) {
-    throw Error("cannot read '" + path + "': " + e.what());
+    throw Error("cannot read " + quote(path, kMaxQuotedPath) + ": " + e.what());
   }
 }
 

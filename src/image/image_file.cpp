@@ -7,6 +7,7 @@
 #include "raytrace/image/output_file.hpp"
 #include "raytrace/image/png_file.hpp"
 #include "raytrace/util/error.hpp"
+#include "raytrace/util/message.hpp"
 #include "raytrace/util/parallel.hpp"
 #include "raytrace/util/path.hpp"
 
@@ -17,8 +18,8 @@ ImageFormat imageFormat(const std::string& path) {
   if (ext == "png") return ImageFormat::Png;
   if (ext == "hdr") return ImageFormat::Hdr;
   if (ext == "exr") return ImageFormat::Exr;
-  throw Error("cannot write '" + path + "': " +
-              (ext.empty() ? std::string("no image format") : "unknown image format '." + ext + "'") +
+  throw Error("cannot write " + quote(path, kMaxQuotedPath) + ": " +
+              (ext.empty() ? std::string("no image format") : "unknown image format " + quote("." + ext)) +
               " (name it .png, .hdr or .exr)");
 }
 

@@ -11,6 +11,7 @@
 
 #include "raytrace/image/interrupt_cleanup.hpp"
 #include "raytrace/util/error.hpp"
+#include "raytrace/util/message.hpp"
 
 namespace rt {
 
@@ -32,7 +33,7 @@ std::string randomName() {
 }
 
 [[noreturn]] void cannotWrite(const std::string& path, int error) {
-  throw Error("cannot write '" + path + "': " + std::strerror(error));
+  throw Error("cannot write " + quote(path, kMaxQuotedPath) + ": " + std::strerror(error));
 }
 
 }  // namespace

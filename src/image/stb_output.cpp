@@ -4,6 +4,7 @@
 
 #include "raytrace/image/output_file.hpp"
 #include "raytrace/util/error.hpp"
+#include "raytrace/util/message.hpp"
 
 namespace rt {
 
@@ -33,7 +34,7 @@ void writeWithStb(const std::string& path, const std::function<int(StbWriteFunc*
   const bool encoded = encode(toFile, &sink) != 0;
   if (sink.failure) std::rethrow_exception(sink.failure);
   // stb fails only where an allocation does.
-  if (!encoded) throw Error("cannot write '" + path + "': out of memory to encode it");
+  if (!encoded) throw Error("cannot write " + quote(path, kMaxQuotedPath) + ": out of memory to encode it");
   file.commit();
 }
 

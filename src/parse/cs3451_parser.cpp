@@ -1,11 +1,13 @@
 #include "raytrace/parse/cs3451_parser.hpp"
 
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
 
 #include "raytrace/util/limits.hpp"
+#include "raytrace/util/message.hpp"
 #include "raytrace/util/path.hpp"
 
 namespace rt {
@@ -119,9 +121,9 @@ class CliParser {
     if (name == "fov") {
       const auto v = numbers(words, 1);
       if (!(v[0] > 0 && v[0] < 180)) {
-        throw ParseError(words[1].loc, "'fov' must be between 0 and 180 degrees, found " + words[1].text);
+        throw ParseError(words[1].loc, "'fov' must be between 0 and 180 degrees, found " + printable(words[1].text));
       }
-      setFov(v[0]);
+      setFov(v[0], command.loc);
     } else if (name == "background") {
       scene_.conventions.background = color(numbers(words, 3), 0);
     } else if (name == "light") {
@@ -137,8 +139,8 @@ class CliParser {
       const auto v = numbers(words, 5);
       const double r = positive(words, 1, v, "radius");
       if (!(v[3] < v[4])) {
-        throw ParseError(words[4].loc, "'cylinder' ymin must be less than ymax, found ymin " + words[4].text +
-                                           " and ymax " + words[5].text);
+        throw ParseError(words[4].loc, "'cylinder' ymin must be less than ymax, found ymin " +
+                                           printable(words[4].text) + " and ymax " + printable(words[5].text));
       }
       addObject(command, CylinderDesc{{v[1], v[3], v[2]}, {v[1], v[4], v[2]}, r});
     } else if (name == "write") {
@@ -146,7 +148,7 @@ class CliParser {
     } else {
       std::string known;
       for (const char* c : kCommands) known += std::string(known.empty() ? "" : ", ") + c;
-      throw ParseError(command.loc, "unknown command '" + name + "' (the commands are " + known + ")");
+      throw ParseError(command.loc, "unknown command " + quote(name) + " (the commands are " + known + ")");
     }
   }
 
@@ -156,9 +158,9 @@ class CliParser {
     for (size_t i = 1; i < words.size(); ++i) {
       double x = 0;
       if (!parseNumber(words[i].text, x)) {
-        throw ParseError(words[i].loc, "'" + words[0].text + "' takes numbers, found '" + words[i].text + "'");
+        throw ParseError(words[i].loc, "'" + words[0].text + "' takes numbers, found " + quote(words[i].text));
       }
-      if (!std::isfinite(x)) throw ParseError(words[i].loc, "number '" + words[i].text + "' is out of range");
+      if (!std::isfinite(x)) throw ParseError(words[i].loc, "number " + quote(words[i].text) + " is out of range");
       v.push_back(x);
     }
     if (v.size() != n) {
@@ -177,7 +179,8 @@ class CliParser {
                          const std::string& what) {
     if (!(v[i - 1] > 0)) {
       throw ParseError(words[i].loc,
-                       "'" + words[0].text + "' " + what + " must be greater than 0, found " + words[i].text);
+                       "'" + words[0].text + "' " + what + " must be greater than 0, found " +
+                           printable(words[i].text));
     }
     return v[i - 1];
   }
@@ -186,7 +189,7 @@ class CliParser {
   // spans ±tan(fov/2) (§A.4.1). No half-pixel offset: pixel (i, j), row j from the top, looks through
   // x = (i − W/2)·2k/W, y = −(j − H/2)·2k/H. In the camera's pixel units (y up, pixel y = H−1−j) that is the
   // pixel's upper-left corner, offset (0, 1) from its lower-left one.
-  void setFov(double degrees) {
+  void setFov(double degrees, const SourceLoc& loc) {
     const double k = std::tan(glm::radians(degrees) / 2);
     CameraDesc& cam = scene_.camera;
     cam.location = glm::dvec3(0);
@@ -195,6 +198,7 @@ class CliParser {
     cam.right = glm::dvec3(2 * k, 0, 0);
     cam.rightFollowsImage = true;
     cam.pixelOffset = glm::dvec2(0, 1);
+    cam.loc = loc;
     haveFov_ = true;
   }
 
@@ -202,7 +206,9 @@ class CliParser {
   // written: C = Ca + Σ (Cd·Lc·N·L + Cs·Lc·(N·H)^P) + Krefl·C_refl (§A.4.5).
   void surface(const std::vector<Word>& words) {
     const auto v = numbers(words, 11);
-    if (v[9] < 0) throw ParseError(words[10].loc, "'surface' power P must not be negative, found " + words[10].text);
+    if (v[9] < 0) {
+      throw ParseError(words[10].loc, "'surface' power P must not be negative, found " + printable(words[10].text));
+    }
     Material m;
     m.ambient = color(v, 0);
     m.diffuse = color(v, 3);
@@ -234,26 +240,25 @@ class CliParser {
     const Word& command = words[0];
     if (words.size() == 1) throw ParseError(command.loc, "'write' needs a file name");
     if (words.size() > 2) {
-      throw ParseError(words[2].loc, "'write' takes one file name, found another word '" + words[2].text + "'");
+      throw ParseError(words[2].loc, "'write' takes one file name, found another word " + quote(words[2].text));
     }
     const std::string& path = words[1].text;
+    if (path.size() > PATH_MAX) {  // no system opens it, and its message would quote all of it
+      throw ParseError(words[1].loc, "'write' file name is longer than " + std::to_string(PATH_MAX) +
+                                         " bytes: " + quote(path));
+    }
     if (extension(path) != "png") {
-      throw ParseError(words[1].loc, "'write' makes PNG files: the name must end in .png, found '" + path + "'");
+      throw ParseError(words[1].loc, "'write' makes PNG files: the name must end in .png, found " + quote(path));
     }
     if (!haveFov_) throw ParseError(command.loc, "'write' comes before any 'fov', so there is no camera");
-    // Each write keeps its own copy of the scene so far: many objects times many writes could fill memory.
-    const std::string shortage =
-        objectMemoryShortage(keptObjects_, keptObjects_ + scene_.objects.size(), "keeping the scene of each 'write'");
-    if (!shortage.empty()) throw ParseError(command.loc, shortage);
-    keptObjects_ += scene_.objects.size();
-    writes_.push_back(WriteDesc{path, command.loc, scene_});
+    writes_.push_back(WriteDesc{path, command.loc, scene_.lights.size(), scene_.objects.size(), scene_.camera,
+                                scene_.conventions.background});
   }
 
   LineSplitter lines_;
   SceneDesc scene_;
   std::vector<WriteDesc> writes_;
   Material material_;
-  size_t keptObjects_ = 0;  // objects in all the writes' scenes
   bool haveSurface_ = false;
   bool haveFov_ = false;
 };

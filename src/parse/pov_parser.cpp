@@ -168,6 +168,7 @@ class PovParser {
   void parseCamera(const Token& keyword) {
     expect('{', "after 'camera'");
     CameraDesc& cam = scene_.camera;
+    cam.loc = keyword.loc;
     for (;;) {
       const Token& t = next();
       if (isPunct(t, '}')) break;

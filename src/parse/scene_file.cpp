@@ -11,6 +11,7 @@
 
 #include "raytrace/parse/cs3451_parser.hpp"
 #include "raytrace/util/limits.hpp"
+#include "raytrace/util/message.hpp"
 #include "raytrace/util/parallel.hpp"
 #include "raytrace/util/path.hpp"
 #include "raytrace/parse/pov_parser.hpp"
@@ -33,14 +34,15 @@ struct FileDescriptor {
 // POSIX calls rather than a stream, so that every failure has its errno and a FIFO or a device is refused
 // instead of read forever (O_NONBLOCK keeps the open of a FIFO without a writer from hanging).
 FileText readFile(const std::string& path, int threads) {
+  const std::string name = quote(path, kMaxQuotedPath);  // made first: it could change errno
   const FileDescriptor file{open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
-  if (file.fd < 0) throw Error("cannot open '" + path + "': " + std::strerror(errno));
+  if (file.fd < 0) throw Error("cannot open " + name + ": " + std::strerror(errno));
   struct stat st;
-  if (fstat(file.fd, &st) != 0) throw Error("cannot read '" + path + "': " + std::strerror(errno));
-  if (S_ISDIR(st.st_mode)) throw Error("cannot read '" + path + "': it is a directory, not a scene file");
-  if (!S_ISREG(st.st_mode)) throw Error("cannot read '" + path + "': it is not a regular file");
+  if (fstat(file.fd, &st) != 0) throw Error("cannot read " + name + ": " + std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) throw Error("cannot read " + name + ": it is a directory, not a scene file");
+  if (!S_ISREG(st.st_mode)) throw Error("cannot read " + name + ": it is not a regular file");
   if (std::uint64_t(st.st_size) > kMaxSceneFileBytes) {
-    throw Error("cannot read '" + path + "': it is larger than " + std::to_string(kMaxSceneFileBytes >> 20) +
+    throw Error("cannot read " + name + ": it is larger than " + std::to_string(kMaxSceneFileBytes >> 20) +
                 " MiB, the most a scene file may have");
   }
   const size_t size = size_t(st.st_size);
@@ -53,7 +55,7 @@ FileText readFile(const std::string& path, int threads) {
     while (begin + done < end) {
       const ssize_t n = pread(file.fd, text.data() + begin + done, end - begin - done, off_t(begin + done));
       if (n < 0 && errno == EINTR) continue;
-      if (n < 0) throw Error("cannot read '" + path + "': " + std::strerror(errno));
+      if (n < 0) throw Error("cannot read " + name + ": " + std::strerror(errno));
       if (n == 0) break;  // the file shrank since fstat: what is there is read
       done += size_t(n);
     }
@@ -77,7 +79,10 @@ SceneLanguage sceneLanguage(const std::string& path, std::string_view text) {
 
 SceneDesc loadScene(const std::string& path, int threads) {
   const FileText file = readFile(path, threads);
-  const std::string_view text = file.view();
+  std::string_view text = file.view();
+  // A UTF-8 byte-order mark, which some editors put first, is no part of the scene in either language.
+  constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+  if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark) text.remove_prefix(kByteOrderMark.size());
   return sceneLanguage(path, text) == SceneLanguage::Cs3451 ? parseCs3451(text, path) : parsePov(text, path, threads);
 }
 

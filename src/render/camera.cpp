@@ -1,6 +1,16 @@
 #include "raytrace/render/camera.hpp"
 
+#include <cmath>
+
+#include "raytrace/util/error.hpp"
+
 namespace rt {
+
+namespace {
+
+template <class T> bool finite(const Vec3<T>& v) { return std::isfinite(v.x + v.y + v.z); }
+
+}  // namespace
 
 template <class T>
 Camera<T>::Camera(const CameraDesc& desc, int width, int height)
@@ -10,7 +20,27 @@ Camera<T>::Camera(const CameraDesc& desc, int width, int height)
       forward_(glm::normalize(Vec3<T>(desc.lookAt - desc.location))),
       offset_(desc.pixelOffset),
       width_(width),
-      height_(height) {}
+      height_(height) {
+  // Every eye ray must be finite: its origin, and d = Us·right + Vs·up + forward (|Us|, |Vs| ≤ 1) normalized,
+  // which needs |d|² finite, and |d| away from 0, which needs forward well out of the plane of right and up.
+  const char* problem = nullptr;
+  const T reach = glm::length(right_) + glm::length(up_) + T(1);
+  if (!finite(origin_)) {
+    problem = "its location is too large for the arithmetic";
+  } else if (!finite(forward_)) {
+    problem = "its look_at is too close to or too far from its location to give a direction";
+  } else if (!std::isfinite(reach * reach)) {
+    problem = "its up or right vector is too long";
+  } else {
+    const glm::dvec3 right = glm::normalize(glm::dvec3(right_)), up = glm::normalize(glm::dvec3(up_));
+    const double across = std::abs(glm::dot(glm::cross(right, up), glm::dvec3(forward_)));
+    if (!(across > 1e-9)) {
+      problem = finite(right) && finite(up) ? "it looks along the plane of its up and right vectors"
+                                            : "its up or right vector is too short";
+    }
+  }
+  if (problem) throw ParseError(desc.loc, std::string("the camera gives no image: ") + problem);
+}
 
 template class Camera<float>;
 template class Camera<double>;

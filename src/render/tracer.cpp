@@ -28,11 +28,14 @@ float specularBound(const Material& m, Brdf brdf) {
 
 }  // namespace
 
-// Recursion cutoff (docs/reference/stability.md F12). A secondary ray is skipped when its accumulated weight w (the
-// product of the weights and tints from the eye down to it) times the brightest colour its subtree could return,
-// bound_[levels left], is below cutoff_ = (½/255) / 2^(maxDepth+1). A tree has fewer than 2^(maxDepth+1) rays,
-// so all the skipped subtrees of one eye ray together move its colour by less than half an 8-bit step: the
-// byte changes only if the exact value lay within that distance of a rounding boundary. bound_ is built
+// Recursion cutoff (docs/reference/stability.md F12). A secondary ray is skipped when its accumulated weight w (the product
+// of the weights and tints from the eye down to it) times the brightest colour its subtree could return,
+// bound_[levels left], is below cutoff_ = (½/255) / 2^(D+1), D = min(maxDepth, kFullTreeDepth), or when its
+// eye ray's tree already has 2^(D+1) − 1 rays. A tree of depth D has no more, and fewer than 2^(D+1) rays are
+// skipped beside its traced ones, so all the skipped subtrees of one eye ray together move its colour by less
+// than half an 8-bit step: the byte changes only if the exact value lay within that distance of a rounding
+// boundary. Only deeper trees can reach the ray budget (scenes/depth_bomb.pov would take ~10^11 rays at
+// --depth=64): it bounds an eye ray's work whatever the depth, at the price of that guarantee. bound_ is built
 // bottom-up: a ray returns the background or wl·local + Σ weight·tint·(child colour) with wl ≤ 1, local ≤
 // Lmax and Σ weight·tint ≤ G, the largest ((1−f)k + f)·max(1, C) of the scene's materials.
 template <class T>
@@ -59,11 +62,15 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
   };
   bound_.push_back(level(0));
   for (int r = 1; r <= conventions_.maxDepth; ++r) bound_.push_back(level(bound_.back()));
-  cutoff_ = std::ldexp(0.5f / 255.0f, -(conventions_.maxDepth + 1));
+  const int fullDepth = std::min(conventions_.maxDepth, kFullTreeDepth);
+  cutoff_ = std::ldexp(0.5f / 255.0f, -(fullDepth + 1));
+  treeRays_ = (1 << (fullDepth + 1)) - 1;
 }
 
-template <class T> bool Tracer<T>::matters(float weight, int depth) const {
-  return weight * bound_[size_t(conventions_.maxDepth - depth)] >= cutoff_;
+template <class T> bool Tracer<T>::matters(float weight, int depth) {
+  if (raysLeft_ == 0 || weight * bound_[size_t(conventions_.maxDepth - depth)] < cutoff_) return false;
+  --raysLeft_;
+  return true;
 }
 
 template <class T>
@@ -73,6 +80,7 @@ Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRec
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
       RayRecord* record = trees ? &trees->emplace_back() : nullptr;
+      raysLeft_ = treeRays_ - 1;
       sum += trace(camera.sampleRay(x, y, i, j, n), RayRecord::Kind::Primary, 0, 1.0f, record).color;
     }
   }
@@ -128,6 +136,7 @@ template <class T> const Color* Tracer<T>::block(const Camera<T>& camera, int x0
       for (int k = 0; k < m; ++k) shadows[size_t(index[k]) * lights + l]->blocked = answers[k];
     }
     for (int i = 0; i < count; ++i) {
+      raysLeft_ = treeRays_ - 1;
       colors[first + size_t(i)] =
           follow(packet[i], hits[i], RayRecord::Kind::Primary, 0, 1.0f, nullptr, shadows.data() + size_t(i) * lights)
               .color;

@@ -8,4 +8,16 @@ const char* shapeName(const ShapeDesc& shape) {
   return names[shape.index()];
 }
 
+SceneDesc sceneAt(const SceneDesc& whole, const WriteDesc& write) {
+  SceneDesc scene;
+  scene.file = whole.file;
+  scene.language = whole.language;
+  scene.camera = write.camera;
+  scene.lights.assign(whole.lights.begin(), whole.lights.begin() + std::ptrdiff_t(write.lights));
+  scene.objects.assign(whole.objects.begin(), whole.objects.begin() + std::ptrdiff_t(write.objects));
+  scene.conventions = whole.conventions;
+  scene.conventions.background = write.background;
+  return scene;
+}
+
 }  // namespace rt

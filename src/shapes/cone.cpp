@@ -43,6 +43,7 @@ std::optional<Hit<T>> Cone<T>::intersect(const Ray<T>& ray, Interval<T> range) c
     const T len = glm::length(radial);
     const Vec3<T> u = len > T(0) ? radial / len : Vec3<T>(0);
     hit.normal = glm::normalize(u - slope_ * frame_.axis());
+    if (!hit.hasNormal()) return std::nullopt;
     // Re-projected onto the side (docs/reference/stability.md F4): at the radius of its height, between the ends.
     const T y = frame_.heightAt(s, t, std::max(baseRadius_, capRadius_));
     hit.point = frame_.at(y, (baseRadius_ + slope_ * y) * u);

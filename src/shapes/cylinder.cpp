@@ -26,6 +26,7 @@ std::optional<Hit<T>> Cylinder<T>::intersect(const Ray<T>& ray, Interval<T> rang
   if (*nearest.part == Part::Side) {
     hit.t = t;
     hit.normal = glm::normalize(s.op + t * s.dp);
+    if (!hit.hasNormal()) return std::nullopt;
     // Re-projected onto the side (docs/reference/stability.md F4): at the radius, between the ends.
     hit.point = frame_.at(frame_.heightAt(s, t, radius_), radius_ * hit.normal);
   } else {

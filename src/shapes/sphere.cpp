@@ -38,6 +38,7 @@ std::optional<Hit<T>> Sphere<T>::intersect(const Ray<T>& ray, Interval<T> range)
   Hit<T> hit;
   hit.t = t;
   hit.normal = glm::normalize(ray.at(t) - center_);
+  if (!hit.hasNormal()) return std::nullopt;
   hit.point = center_ + radius_ * hit.normal;  // re-projected onto the surface (docs/reference/stability.md F4)
   hit.object = this;
   return hit;

@@ -5,7 +5,8 @@
 namespace rt {
 
 std::string fixed4(double v) {
-  char buf[64];
+  // The longest: a sign, DBL_MAX's 309 integer digits, the point, 4 decimals and the terminating zero.
+  char buf[316];
   std::snprintf(buf, sizeof buf, "%.4f", v);
   return buf;
 }

@@ -6,6 +6,7 @@
 
 #include "raytrace/app/commands.hpp"
 #include "raytrace/util/error.hpp"
+#include "raytrace/util/message.hpp"
 #include "temp_dir.hpp"
 
 namespace {
@@ -55,26 +56,25 @@ TEST_CASE("cli: usage lists every Program 1 command") {
 }
 
 TEST_CASE("cli: no command, an unknown command, an unknown option") {
-  CHECK(errorOf({}) == "no command given; raytrace --help lists the commands");
-  CHECK(errorOf({"render2", "a.pov"}) ==
-        "unknown command 'render2' (did you mean 'render'?); raytrace --help lists the commands");
-  CHECK(errorOf({"frobnicate", "a.pov"}) == "unknown command 'frobnicate'; raytrace --help lists the commands");
-  CHECK(errorOf({"help", "frobnicate"}) == "unknown command 'frobnicate'; raytrace --help lists the commands");
+  CHECK(errorOf({}) == "no command given (see raytrace --help)");
+  CHECK(errorOf({"render2", "a.pov"}) == "unknown command 'render2': did you mean 'render'? (see raytrace --help)");
+  CHECK(errorOf({"frobnicate", "a.pov"}) == "unknown command 'frobnicate' (see raytrace --help)");
+  CHECK(errorOf({"help", "frobnicate"}) == "unknown command 'frobnicate' (see raytrace --help)");
   CHECK(errorOf({"sceneinfo", "a.pov", "--fast"}) == "unknown option '--fast' (see raytrace --help)");
   CHECK(errorOf({"sceneinfo", "a.pov", "--precision=quad"}) == "--precision must be float, double, course or auto, found 'quad'");
   CHECK(errorOf({"sceneinfo", "a.pov", "--sphere=fast"}) == "--sphere must be textbook, robust or auto, found 'fast'");
 }
 
 TEST_CASE("cli: wrong argument counts") {
-  CHECK(errorOf({"sceneinfo"}) == "sceneinfo takes 1 arguments, found 0\nusage: raytrace sceneinfo <scene>");
+  CHECK(errorOf({"sceneinfo"}) == "sceneinfo takes 1 arguments, found 0 (usage: raytrace sceneinfo <scene>)");
   CHECK(errorOf({"sceneinfo", "a.pov", "640"}) ==
-        "sceneinfo takes 1 arguments, found 2\nusage: raytrace sceneinfo <scene>");
+        "sceneinfo takes 1 arguments, found 2 (usage: raytrace sceneinfo <scene>)");
   CHECK(errorOf({"raycast", "a.pov", "640"}) ==
-        "raycast takes 3 arguments, found 2\nusage: raytrace raycast <scene> <width> <height>");
+        "raycast takes 3 arguments, found 2 (usage: raytrace raycast <scene> <width> <height>)");
   CHECK(errorOf({"pixelray", "a.pov", "640", "480"}) ==
-        "pixelray takes 5 arguments, found 3\nusage: raytrace pixelray <scene> <width> <height> <x> <y>");
+        "pixelray takes 5 arguments, found 3 (usage: raytrace pixelray <scene> <width> <height> <x> <y>)");
   CHECK(errorOf({"firsthit", "a.pov", "640", "480", "1", "2", "3"}) ==
-        "firsthit takes 5 arguments, found 6\nusage: raytrace firsthit <scene> <width> <height> <x> <y>");
+        "firsthit takes 5 arguments, found 6 (usage: raytrace firsthit <scene> <width> <height> <x> <y>)");
 }
 
 TEST_CASE("cli: width and height must be whole numbers in range, checked before the scene is read") {
@@ -143,11 +143,12 @@ TEST_CASE("cli: pixelray and firsthit give the course's p1 answers, whatever the
 
 TEST_CASE("cli: --stats reports render's steps on the error stream, and only for render") {
   const rt::test::TempDir dir;
-  // A .cli file names its images, so nothing is written outside the test's directory.
+  // A .cli file names its images, so nothing is written outside the test's directory: by absolute paths, which
+  // the user must allow.
   const std::string scene = dir.write("s.cli", "fov 60\nwrite " + dir.file("a.png") + "\n"
                                       "surface 1 1 1  0 0 0  0 0 0  1 0\nsphere 0 0 -3 1\n"
                                       "write " + dir.file("b.png") + "\n");
-  const Run r = run({"render", scene, "8", "6", "-ss=2", "--threads", "1", "--stats"});
+  const Run r = run({"render", scene, "8", "6", "-ss=2", "--threads", "1", "--stats", "--allow-write-anywhere"});
   CHECK(r.status == 0);
   CHECK(r.out.empty());
   // The times vary; the line's shape does not: one line for the file, however many images it writes.
@@ -155,7 +156,58 @@ TEST_CASE("cli: --stats reports render's steps on the error stream, and only for
   CHECK_THAT(r.err, Catch::Matches("raytrace: load " + ms + ", build " + ms + ", trace " + ms + ", png " + ms +
                                    ", total " + ms + " \\(8x6, 4 eye rays per pixel, 1 thread\\)\n"));
   CHECK(dir.names() == std::vector<std::string>{"a.png", "b.png", "s.cli"});
-  CHECK(run({"render", scene, "8", "6", "--threads", "1"}).err.empty());
+  CHECK(run({"render", scene, "8", "6", "--threads", "1", "--allow-write-anywhere"}).err.empty());
   CHECK(errorOf({"sceneinfo", scene, "--stats"}) == "--stats is for the render command only");
   CHECK(errorOf({"pixelcolor", scene, "8", "6", "1", "1", "--stats"}) == "--stats is for the render command only");
+}
+
+TEST_CASE("cli: 30,000 identical warnings are one line with their count") {
+  const rt::test::TempDir dir;
+  std::string text = "camera { location <0,0,5> look_at <0,0,0> }\n";
+  for (int i = 0; i < 30000; ++i) text += "sphere { <0,0,0>, 1 pigment { rgb <1,0,0,0.5> } }\n";
+  const std::string scene = dir.write("w.pov", text);
+  const Run r = run({"sceneinfo", scene, "--threads", "2"});
+  CHECK(r.status == 0);
+  CHECK(r.err == scene + ":2:35: warning: 'rgb' with 4 values; the fourth is read as the filter "
+                         "(and 29,999 more like it)\n");
+}
+
+TEST_CASE("cli: a UTF-8 byte-order mark is skipped in both languages") {
+  const rt::test::TempDir dir;
+  const std::string bom = "\xEF\xBB\xBF";
+  const std::string pov = dir.write("b.pov", bom + kScene);
+  CHECK(run({"sceneinfo", pov}).out == run({"sceneinfo", dir.write("plain.pov", kScene)}).out);
+  const std::string cli = dir.write("b.cli", bom + "fov 60\nsurface 0 0 0 1 1 1 0 0 0 1 0\nsphere 0 0 -4 1\n");
+  const Run r = run({"sceneinfo", cli});
+  CHECK(r.status == 0);
+  CHECK(r.out.find("1 object(s)") != std::string::npos);
+  // Only at the very start: elsewhere it is bytes no scene may hold.
+  const std::string late = dir.write("late.pov", "\n" + bom + kScene);
+  CHECK(errorOf({"sceneinfo", late}) == late + ":2:1: error: unexpected byte 0xEF (is this a text scene file?)");
+}
+
+TEST_CASE("cli: a 10 MB word and a 100 KB argument are quoted cut, on one line") {
+  const rt::test::TempDir dir;
+  const std::string word(10'000'000, 'w');
+  const std::string pov = dir.write("w.pov", "camera { location <0,0,5> look_at <0,0,0> }\n" + word + "\n");
+  CHECK(errorOf({"sceneinfo", pov}) ==
+        pov + ":2:1: error: unknown keyword '" + std::string(60, 'w') + "...'");
+  const std::string cli = dir.write("w.cli", "fov 60\n" + word + "\n");
+  CHECK(errorOf({"sceneinfo", cli}) == cli + ":2:1: error: unknown command '" + std::string(60, 'w') +
+                                           "...' (the commands are fov, background, light, surface, sphere, "
+                                           "cylinder, write)");
+  CHECK(errorOf({"raycast", pov, std::string(100'000, '9'), "4"}) ==
+        "width must be between 1 and 32768, found " + std::string(60, '9') + "...");
+}
+
+TEST_CASE("cli: a .cli write outside the current folder needs --allow-write-anywhere") {
+  const rt::test::TempDir dir;
+  const std::string target = dir.file("out.png");
+  const std::string scene = dir.write("s.cli", "fov 60\nwrite " + target + "\n");
+  CHECK(errorOf({"render", scene, "4", "4"}) ==
+        scene + ":2:1: error: 'write' may only name a file in the folder the scene is rendered into and below, "
+                "found " + rt::quote(target) + " (--allow-write-anywhere allows it)");
+  CHECK(dir.names() == std::vector<std::string>{"s.cli"});
+  CHECK(run({"render", scene, "4", "4", "--allow-write-anywhere"}).status == 0);
+  CHECK(dir.names() == std::vector<std::string>{"out.png", "s.cli"});
 }

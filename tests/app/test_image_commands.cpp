@@ -106,6 +106,22 @@ TEST_CASE("image commands: -o and a .cli scene's own images") {
         "-o '" + dir.path() + "' is a folder, but '" + pov + "' names no images of its own: give -o the image's file name");
 }
 
+TEST_CASE("image commands: -o's folder keeps a .cli scene's writes in it, and a failed write does not stop the others") {
+  const rt::test::TempDir dir, outDir;
+  const std::string out = outDir.path();
+  const std::string up = dir.write("up.cli", "fov 60\nwrite ../escaped.png\n");
+  CHECK(errorOf({"render", up, "8", "6", "-o", out}) ==
+        up + ":2:1: error: 'write' may only name a file in the folder the scene is rendered into and below, "
+             "found '../escaped.png' (--allow-write-anywhere allows it)");
+  CHECK(outDir.names().empty());
+  CHECK(dir.names() == std::vector<std::string>{"up.cli"});
+  const std::string three = dir.write("three.cli", "fov 60\nwrite first.png\nwrite no/second.png\nwrite third.png\n");
+  std::ostringstream stdoutText, errors;
+  CHECK(rt::runCommand({"render", three, "8", "6", "-o", out}, stdoutText, errors) == 1);
+  CHECK(errors.str() == three + ":3:1: error: cannot write '" + out + "/no/second.png': No such file or directory\n");
+  CHECK(outDir.names() == std::vector<std::string>{"first.png", "third.png"});
+}
+
 TEST_CASE("image commands: tiles of any count and thread count merge into the one-machine bytes, with -ss") {
   const rt::test::TempDir dir;
   const std::string scene = dir.write("s.pov", kScene);

@@ -104,8 +104,8 @@ TEST_CASE("cs3451_parser: every command, in the course's argument orders (cs3451
   REQUIRE(s.writes.size() == 1);
   CHECK(s.writes[0].path == "out.png");
   CHECK(s.writes[0].loc.str() == "t.cli:7:1");
-  CHECK(s.writes[0].scene.objects.size() == 2);
-  CHECK(s.writes[0].scene.writes.empty());
+  CHECK(sceneAt(s, s.writes[0]).objects.size() == 2);
+  CHECK(sceneAt(s, s.writes[0]).writes.empty());
 }
 
 TEST_CASE("cs3451_parser: the language's conventions are set for every scene (cs3451 A.4)") {
@@ -130,12 +130,12 @@ TEST_CASE("cs3451_parser: commands run in order; each write keeps the scene as i
                             "sphere 0 0 -8 1\n"
                             "write b.PNG\n");
   REQUIRE(s.writes.size() == 2);
-  const SceneDesc& a = s.writes[0].scene;
+  const SceneDesc a = sceneAt(s, s.writes[0]);
   CHECK(a.objects.size() == 1);
   CHECK(a.lights.empty());
   CHECK(a.conventions.background == Color(0));
   CHECK(a.camera.up.y == Approx(2 * std::tan(glm::radians(30.0))));
-  const SceneDesc& b = s.writes[1].scene;
+  const SceneDesc b = sceneAt(s, s.writes[1]);
   CHECK(s.writes[1].path == "b.PNG");
   CHECK(b.objects.size() == 2);
   CHECK(b.lights.size() == 1);
@@ -146,6 +146,18 @@ TEST_CASE("cs3451_parser: commands run in order; each write keeps the scene as i
   CHECK(b.objects[1].material.diffuse == Color(1));
   // The scene itself is the state at the end of the file.
   CHECK(s.objects.size() == 2);
+}
+
+// Each write records where the scene stood, not a copy of it: 2,000 writes of a 1,000-object scene keep 2,000
+// counts, not two million objects (the memory a .cli file takes is proportional to its scene).
+TEST_CASE("cs3451_parser: a write keeps counts, not a copy of the scene") {
+  std::string text = kHeader;
+  for (int i = 0; i < 1000; ++i) text += "sphere 0 0 -4 1\nwrite a.png\nwrite b.png\n";
+  const SceneDesc s = parse(text);
+  REQUIRE(s.writes.size() == 2000);
+  CHECK(s.writes[1999].objects == 1000);
+  CHECK(s.writes[0].objects == 1);
+  CHECK(sceneAt(s, s.writes[1234]).objects.size() == 618);
 }
 
 TEST_CASE("cs3451_parser: CRLF, comments, blank lines, tabs and number spellings") {
@@ -286,7 +298,7 @@ TEST_CASE("cs3451_parser: render makes each write's PNG from the scene as it sto
                                       "sphere 0 0 -3 2\n"
                                       "write " + dir.file("sphere.png") + "\n");
   std::ostringstream out, err;
-  REQUIRE(runCommand({"render", scene, "3", "3"}, out, err) == 0);
+  REQUIRE(runCommand({"render", scene, "3", "3", "--allow-write-anywhere"}, out, err) == 0);
   CHECK(dir.names() == std::vector<std::string>{"empty.png", "s.cli", "sphere.png"});  // no output.png
   // Truncation, not rounding (cs3451 §A.4.2): .2 .5 .8 → 51 127 204 and .3 .6 .9 → 76 153 229.
   const Png empty = readPng(dir.file("empty.png"));
@@ -306,7 +318,7 @@ TEST_CASE("cs3451_parser: render without a size makes the course's 300 x 300 ima
   const test::TempDir dir;
   const std::string scene = dir.write("s.cli", "fov 60\nwrite " + dir.file("out.png") + "\n");
   std::ostringstream out, err;
-  REQUIRE(runCommand({"render", scene}, out, err) == 0);
+  REQUIRE(runCommand({"render", scene, "--allow-write-anywhere"}, out, err) == 0);
   const Png png = readPng(dir.file("out.png"));
   CHECK(png.width == 300);
   CHECK(png.height == 300);

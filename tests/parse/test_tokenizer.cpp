@@ -123,7 +123,9 @@ TEST_CASE("tokenizer: located errors") {
   CHECK_THROWS_WITH(tokenize("\x89PNG", "s.pov"), "s.pov:1:1: error: unexpected byte 0x89 (is this a text scene file?)");
   CHECK_THROWS_AS(tokenize("\x7f", "s.pov"), rt::ParseError);
   const std::string digits = "1" + std::string(400, '0') + ".5";
-  CHECK_THROWS_WITH(tokenize(digits, "s.pov"), "s.pov:1:1: error: number '" + digits + "' is out of range");
+  // Quoted cut, as every long piece of input is (message.hpp).
+  CHECK_THROWS_WITH(tokenize(digits, "s.pov"),
+                    "s.pov:1:1: error: number '" + digits.substr(0, 60) + "...' is out of range");
 }
 
 TEST_CASE("tokenizer: bytes inside comments are never inspected") {

@@ -100,3 +100,42 @@ TEMPLATE_TEST_CASE("camera: pixelRay passes through the pixel's sample point", "
   // The image centre looks straight down the viewing direction.
   CHECK(centre.ray(T(320), T(240)).dir == rt::Vec3<T>(0, 0, -1));
 }
+
+// A camera that gives no finite eye rays is refused where the file sets it, in the arithmetic that renders it:
+// never NaN rays and a blank image.
+TEMPLATE_TEST_CASE("camera: degenerate cameras are a located error", "", float, double) {
+  using T = TestType;
+  rt::CameraDesc c = kSimple;
+  c.loc = rt::SourceLoc{std::string("s.pov"), 3, 1};
+  const auto message = [&](const rt::CameraDesc& desc) -> std::string {
+    try {
+      rt::Camera<T>(desc, 4, 4);
+    } catch (const rt::ParseError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CHECK(message(c).empty());
+  rt::CameraDesc close = c;
+  close.location = {0, 0, 0};
+  close.lookAt = {1e-300, 0, 0};
+  CHECK(message(close) == "s.pov:3:1: error: the camera gives no image: its look_at is too close to or too far "
+                          "from its location to give a direction");
+  rt::CameraDesc far = c;
+  far.location = {-1e308, 0, 0};
+  far.lookAt = {1e308, 0, 0};
+  CHECK(message(far) == std::string("s.pov:3:1: error: the camera gives no image: ") +
+                            (std::is_same_v<T, float> ? "its location is too large for the arithmetic"
+                                                      : "its look_at is too close to or too far from its location "
+                                                        "to give a direction"));
+  rt::CameraDesc along = c;
+  along.up = {0, 0, -1};  // the view direction
+  CHECK(message(along) == "s.pov:3:1: error: the camera gives no image: it looks along the plane of its up and "
+                          "right vectors");
+  rt::CameraDesc tiny = c;
+  tiny.up = {0, 1e-300, 0};
+  CHECK(message(tiny) == "s.pov:3:1: error: the camera gives no image: its up or right vector is too short");
+  rt::CameraDesc huge = c;
+  huge.right = {1e200, 0, 0};
+  CHECK(message(huge) == "s.pov:3:1: error: the camera gives no image: its up or right vector is too long");
+}

@@ -302,3 +302,37 @@ TEST_CASE("Bad shading flags are reported with the accepted values", "[render]")
   CHECK(error({"pixelcolor", "scene.pov", "4", "4", "0", "0", "-altbrdff"}) ==
         "unknown option '-altbrdff' (see raytrace --help)");
 }
+
+namespace {
+
+size_t raysIn(const RayRecord& tree) {
+  size_t n = 1;
+  for (const RayRecord& child : tree.children) n += raysIn(child);
+  return n;
+}
+
+}  // namespace
+
+// A glass sphere inside a mirror sphere (scenes/depth_bomb.pov) at the highest depth accepted: a full tree
+// would have 2^65 rays and took minutes a pixel. Up to depth kFullTreeDepth every ray that can change the pixel
+// is traced; deeper, an eye ray's tree stops at 2^13 − 1 rays, as the guarantee of the cutoff allows.
+TEST_CASE("The depth bomb at --depth=64: an eye ray's tree stays within 8191 rays", "[render]") {
+  const SceneDesc desc = loadScene(sourceDir() + "/scenes/depth_bomb.pov");
+  const Scene<double> scene(desc, chooseArithmetic(desc));
+  const Camera<double> camera(desc.camera, 40, 30);
+  const auto rays = [&](int depth) {
+    RenderOptions options;
+    options.depth = depth;
+    Tracer<double> tracer(scene, options);
+    std::vector<RayRecord> trees;
+    tracer.pixel(camera, 20, 15, &trees);
+    REQUIRE(trees.size() == 1);
+    return raysIn(trees[0]);
+  };
+  CHECK(kFullTreeDepth == 12);
+  CHECK(rays(64) == 8191);
+  CHECK(rays(40) == 8191);
+  // Up to that depth the tree is what the cutoff leaves, far below the budget.
+  CHECK(rays(12) == 528);
+  CHECK(rays(8) == 116);
+}

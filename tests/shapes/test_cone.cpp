@@ -163,3 +163,12 @@ TEMPLATE_TEST_CASE("cone sweep against the inside/outside oracle", "[cone]", flo
   const auto seed = GENERATE(1u, 2u);
   test::sweep<T>(c, depth, bounds->min, bounds->max, seed);
 }
+
+// Radii whose squares vanish in the arithmetic: the side's normal has no direction, so the side is missed
+// (never a NaN point or normal).
+TEMPLATE_TEST_CASE("cone: radii below the arithmetic's resolution give no NaN hit", "", float, double) {
+  using T = TestType;
+  const T tiny = std::is_same_v<T, float> ? T(1e-40) : T(1e-320);
+  const Cone<T> c(Vec3<T>(0, -1, 0), tiny, Vec3<T>(0, 1, 0), T(0), Material{}, 1);
+  CHECK_FALSE(shoot(c, Vec3<T>(0, 0, 5), Vec3<T>(0, 0, -1)));
+}

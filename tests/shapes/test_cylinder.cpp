@@ -174,3 +174,12 @@ TEMPLATE_TEST_CASE("cylinder sweep against the inside/outside oracle", "[cylinde
   const auto seed = GENERATE(1u, 2u, 3u);
   test::sweep<T>(c, depth, bounds->min, bounds->max, seed);
 }
+
+// A radius whose square vanishes in the arithmetic: the side's normal has no direction, so the side is missed
+// (never a NaN point or normal).
+TEMPLATE_TEST_CASE("cylinder: a radius below the arithmetic's resolution gives no NaN hit", "", float, double) {
+  using T = TestType;
+  const T tiny = std::is_same_v<T, float> ? T(1e-40) : T(1e-320);
+  const Cylinder<T> c(Vec3<T>(0), Vec3<T>(0, 2, 0), tiny, Material{}, 1);
+  CHECK_FALSE(shoot(c, Vec3<T>(0, 1, 5), Vec3<T>(0, 0, -1)));
+}

@@ -107,7 +107,7 @@ TEMPLATE_TEST_CASE("plane: a packet's tests answer as its rays' own tests do", "
       if (unit(rng) < 0.5) mine[i] = theirs[i] = earlier.intersect(rays[i], {});
     }
     plane.closerHits(rays, kRays, {}, mine);
-    plane.rt::Object<T>::closerHits(rays, kRays, {}, theirs);  // intersect() ray by ray
+    plane.rt::template Object<T>::closerHits(rays, kRays, {}, theirs);  // intersect() ray by ray
     for (int i = 0; i < kRays; ++i) {
       CAPTURE(i);
       REQUIRE(bool(mine[i]) == bool(theirs[i]));
@@ -117,6 +117,6 @@ TEMPLATE_TEST_CASE("plane: a packet's tests answer as its rays' own tests do", "
       CHECK(mine[i]->point == theirs[i]->point);
     }
     const uint32_t open = uint32_t(rng());
-    CHECK(plane.occludes(rays, ranges, open) == plane.rt::Object<T>::occludes(rays, ranges, open));
+    CHECK(plane.occludes(rays, ranges, open) == plane.rt::template Object<T>::occludes(rays, ranges, open));
   }
 }

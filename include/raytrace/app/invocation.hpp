@@ -29,6 +29,8 @@ struct Invocation {
   RenderOptions options;
   std::ostream* progress = nullptr;  // where render shows its progress line (not with --quiet)
   std::ostream* stats = nullptr;     // --stats: where render reports how long each step took
+  std::ostream* errors = nullptr;    // where a command reports a failure it carries on after (a .cli write)
+  bool writeAnywhere = false;        // --allow-write-anywhere: a .cli write may leave the current folder
   double loadSeconds = 0;         // the reading of the scene file
 
   // The eye rays' grid the arithmetic is chosen for; commands without an image size get the default view.

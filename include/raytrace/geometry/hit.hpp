@@ -1,6 +1,8 @@
 // The record of a ray-object intersection, shared by eye, shadow, reflection and refraction rays.
 #pragma once
 
+#include <cmath>
+
 #include "raytrace/geometry/math.hpp"
 
 namespace rt {
@@ -13,6 +15,10 @@ template <class T> struct Hit {
                                     // course tier reports o + t·d instead (Scene::hitPoint)
   Vec3<T> normal{0};                // unit, geometric, pointing out of the object whatever side the ray is on
   const Object<T>* object = nullptr;
+
+  // False when the shape's size is below what the arithmetic resolves there (a sphere of radius 1e-320, whose
+  // hit point cannot be told from its centre): the normal has no direction. Such a shape is missed.
+  bool hasNormal() const { return std::isfinite(normal.x + normal.y + normal.z); }
 
   // True when the ray arrives from outside, i.e. against the outward normal.
   template <class D> bool frontFace(const D& rayDir) const { return glm::dot(rayDir, normal) < T(0); }

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "raytrace/util/error.hpp"
+#include "raytrace/util/message.hpp"
 
 namespace rt {
 
@@ -15,8 +16,8 @@ struct Token {
   double number = 0;      // the value of a Number
   SourceLoc loc;
 
-  // How a message quotes it: 'abc', or "end of file".
-  std::string quoted() const { return kind == Kind::End ? "end of file" : "'" + std::string(text) + "'"; }
+  // How a message quotes it: 'abc' (a long one cut, message.hpp), or "end of file".
+  std::string quoted() const { return kind == Kind::End ? "end of file" : quote(text); }
 };
 
 // Splits POV text into tokens, one at a time, so that a huge scene never holds more than one token in memory

@@ -13,6 +13,10 @@
 
 namespace rt {
 
+// The depth up to which an eye ray's tree is traced in full wherever its rays can change the pixel; deeper
+// recursion (--depth above it) stays within that many rays per eye ray, 2^13 − 1 (tracer.cpp).
+constexpr int kFullTreeDepth = 12;
+
 template <class T> class Tracer {
  public:
   // Reads the options and the scene's Conventions; `scene` must outlive the tracer. A tracer keeps a shadow
@@ -61,15 +65,17 @@ template <class T> class Tracer {
   // It is written into `out` in place: it is made for every hit and light, and a returned copy would stall
   // (docs/performance-notes.md, "Shadow rays built in place").
   bool shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, ShadowRay& out) const;
-  // Whether a secondary ray of accumulated weight `weight` at `depth` is worth tracing (docs/reference/stability.md
-  // F12).
-  bool matters(float weight, int depth) const;
+  // Whether a secondary ray of accumulated weight `weight` at `depth` is worth tracing and its eye ray's tree
+  // has room for it (docs/reference/stability.md F12); a ray it says yes to is counted against that room.
+  bool matters(float weight, int depth);
 
   const Scene<T>& scene_;
   RenderOptions options_;
   Conventions conventions_;
   std::vector<float> bound_;  // bound_[r]: the brightest colour a ray with r levels of recursion left can return
   float cutoff_;
+  int treeRays_;      // the most rays an eye ray's tree may have: a full tree of depth min(maxDepth, kFullTreeDepth)
+  int raysLeft_ = 0;  // the secondary rays the current eye ray's tree may still have
   std::vector<const Object<T>*> lastBlocker_;  // per light: what blocked its latest shadow ray (Scene::occluded)
   std::vector<Ray<T>> rays_;                   // block()'s eye rays and their colours, kept to reuse the memory
   std::vector<Color> colors_;

@@ -25,6 +25,7 @@ struct CameraDesc {
   // .cli: `right` is written for a square image and is stretched by width/height when the image is made, so
   // pixels stay square at any size and `fov` stays the vertical angle (docs/reference/cs3451.md §A.4 leaves this open).
   bool rightFollowsImage = false;
+  SourceLoc loc;  // the `camera` statement (POV) or the `fov` command (.cli) that set it, for messages
 };
 
 struct LightDesc {
@@ -68,7 +69,16 @@ struct Conventions {
 
 enum class SceneLanguage { Pov, Cs3451 };
 
-struct WriteDesc;
+// An image the file itself asks for (.cli `write`), showing the scene as it stood at that command. A .cli file
+// only adds lights and objects and changes its camera and background, so the scene then is the first `lights`
+// lights and `objects` objects of the whole file's with that camera and background: a write keeps no copy.
+struct WriteDesc {
+  std::string path;  // as written, relative to the working directory
+  SourceLoc loc;
+  size_t lights = 0, objects = 0;
+  CameraDesc camera;
+  Color background{0};
+};
 
 struct SceneDesc {
   std::string file;
@@ -78,16 +88,12 @@ struct SceneDesc {
   std::vector<ObjectDesc> objects;
   Conventions conventions;
   std::vector<std::string> warnings;  // "file:line:col: warning: …", printed before any output
-  // The images the file itself asks for, in order (.cli `write`); empty for POV, whose `render` writes
-  // output.png. Each holds the scene as it stood at that command.
+  // The images the file asks for, in order; empty for POV, whose `render` writes output.png.
   std::vector<WriteDesc> writes;
 };
 
-struct WriteDesc {
-  std::string path;  // as written, relative to the working directory
-  SourceLoc loc;
-  SceneDesc scene;   // its own `writes` are empty
-};
+// The scene `write` shows (see WriteDesc), without the writes.
+SceneDesc sceneAt(const SceneDesc& whole, const WriteDesc& write);
 
 // The type name the course prints ("Sphere", "Plane", …).
 const char* shapeName(const ShapeDesc& shape);

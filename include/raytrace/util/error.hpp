@@ -5,6 +5,8 @@
 #include <string>
 #include <utility>
 
+#include "raytrace/util/message.hpp"
+
 namespace rt {
 
 // The name of a scene file, shared by every location in it. A scene has a location per token, so a location
@@ -27,7 +29,10 @@ struct SourceLoc {
   int line = 0;
   int col = 0;
 
-  std::string str() const { return file.str() + ":" + std::to_string(line) + ":" + std::to_string(col); }
+  // As messages show it: the file name printable (message.hpp), so a newline in it cannot split the line.
+  std::string str() const {
+    return printable(file.str(), kMaxQuotedPath) + ":" + std::to_string(line) + ":" + std::to_string(col);
+  }
 };
 
 // Any error the user can fix: bad arguments, unreadable files, impossible values.
