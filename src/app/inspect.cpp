@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "raytrace/app/hierarchy_report.hpp"
 #include "raytrace/app/invocation.hpp"
 #include "raytrace/app/report.hpp"
 #include "raytrace/image/image.hpp"
@@ -98,7 +99,7 @@ int printbvh(const Invocation& inv, std::ostream& out) {
         << scene.objects().size() - bounded << " unbounded (tested one by one). Renders use the hierarchy from "
         << kHierarchyMinObjects << " bounded objects on: " << (bounded >= kHierarchyMinObjects ? "yes" : "no")
         << ".\n";
-    scene.hierarchy()->print(out);
+    printHierarchy(out, *scene.hierarchy());
     return 0;
   });
 }

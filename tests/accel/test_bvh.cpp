@@ -10,6 +10,7 @@
 
 #include "raytrace/accel/bvh.hpp"
 #include "raytrace/accel/scene.hpp"
+#include "raytrace/app/hierarchy_report.hpp"
 
 namespace {
 
@@ -71,7 +72,7 @@ template <class T> rt::Arithmetic robustArithmetic() {
 std::string printedTree(const rt::SceneDesc& desc) {
   const rt::Scene<double> scene(desc, robustArithmetic<double>(), Hierarchy::Always);
   std::ostringstream out;
-  scene.hierarchy()->print(out);
+  rt::printHierarchy(out, *scene.hierarchy());
   return out.str();
 }
 
@@ -258,7 +259,7 @@ TEST_CASE("the tree is the same, node for node, for any number of threads", "[bv
   const auto printed = [&](int threads) {
     const rt::Scene<float> scene(desc, arithmetic, Hierarchy::Always, threads);
     std::ostringstream out;
-    scene.hierarchy()->print(out);
+    rt::printHierarchy(out, *scene.hierarchy());
     return out.str();
   };
   const std::string one = printed(1);
@@ -316,7 +317,7 @@ TEST_CASE("an empty hierarchy answers nothing", "[bvh]") {
   empty.blockers(&ray, &range, 1u, &blocker);
   CHECK(!blocker);
   std::ostringstream out;
-  empty.print(out);
+  rt::printHierarchy(out, empty);
   CHECK(out.str() == "BVH: 0 objects, 0 nodes of up to 4 children, 0 leaves, largest leaf 0\n");
 }
 
