@@ -2,7 +2,7 @@
 """Our traversal against Embree 3 on the same rays: the table of docs/performance.md ("Against Embree").
 
     cmake -S . -B build -DRAYTRACE_EMBREE=ON && cmake --build build --target raytrace_embree
-    bench/embree.py [--runs 5] [--size 1280x960] [--threads 1,2] [--scenes small spheres1k ...]
+    bench/embree.py [--runs 5] [--size 1280x960] [--threads 1,2] [--sphere robust] [--scenes small ...]
 
 Scenes: small, spheres1k and spheres20k of ../shared/bench, the course's bunny (10k triangles, from
 ../shared/scenes), and two generated into the work directory (never committed): spheres1M (bench/scaling.py's
@@ -50,6 +50,7 @@ def main():
     ap.add_argument("--size", default="1280x960")
     ap.add_argument("--threads", default="1,2")
     ap.add_argument("--quality", default="high", choices=("high", "medium"))
+    ap.add_argument("--sphere", choices=("robust", "textbook"), help="the sphere formula (default: the scene's)")
     ap.add_argument("--shared", default=os.path.join(HERE, "..", "..", "shared"), help="the shared directory")
     ap.add_argument("--work", default="build/bench-embree", help="directory for the generated scenes")
     ap.add_argument("--scenes", nargs="*", default=list(SCENES))
@@ -58,7 +59,8 @@ def main():
     for name in args.scenes:
         path = scene_path(name, args.shared, args.work)
         done = subprocess.run([args.bin, path, "--name", name, "--runs", str(args.runs), "--size", args.size,
-                               "--threads", args.threads, "--quality", args.quality],
+                               "--threads", args.threads, "--quality", args.quality]
+                              + (["--sphere", args.sphere] if args.sphere else []),
                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         if done.returncode == 1:
             sys.exit(done.stderr)
