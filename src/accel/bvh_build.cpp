@@ -317,6 +317,8 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects, int
   const std::vector<BinaryNode<T>> binary = buildBinary(objects, order, threads);
   objects_.reserve(objects.size());
   for (uint32_t i : order) objects_.push_back(objects[i]);
+  primitives_.reserve(objects_.size());
+  for (const Object<T>* o : objects_) primitives_.push_back(Primitive<T>::of(*o));
   nodes_ = collapse(binary);
 }
 

@@ -1,4 +1,4 @@
-// The robust quadratic shared by the round shapes (sphere, cylinder side): the roots of |f + t·d|² = r².
+// The quadratics of the round shapes (sphere, cylinder side): the roots of |f + t·d|² = r².
 #pragma once
 
 #include <cmath>
@@ -7,6 +7,21 @@
 #include "raytrace/geometry/math.hpp"
 
 namespace rt {
+
+// The textbook quadratic (lecture 3; Shirley, Fundamentals of Computer Graphics §4.4.1): a·t² + b·t + c = 0 with
+// b = 2 d·f, Δ = b² − 4ac. Its error grows as ε·R² (stability.md F1), so chooseArithmetic() uses it only where
+// R is small.
+template <class T> bool textbookRoots(const Vec3<T>& f, const Vec3<T>& d, T radius, T& t0, T& t1) {
+  const T a = glm::dot(d, d);
+  const T b = T(2) * glm::dot(d, f);
+  const T c = glm::dot(f, f) - radius * radius;
+  const T disc = b * b - T(4) * a * c;
+  if (disc < T(0)) return false;
+  const T root = std::sqrt(disc);
+  t0 = (-b - root) / (T(2) * a);
+  t1 = (-b + root) / (T(2) * a);
+  return true;
+}
 
 // Ray-sphere with the two robust steps of Ray Tracing Gems ch. 7 (Haines et al. 2019), also used by pbrt-v4:
 //  - the discriminant from the perpendicular distance l of the centre to the ray, r² − |l|², which loses
