@@ -3,7 +3,7 @@
 // benchmark scenes.
 //
 //   raytrace_embree SCENE [--size 1280x960] [--runs 5] [--threads 1,2] [--quality high|medium] [--sphere robust|textbook]
-//                   [--name NAME]
+//                   [--kinds "eye 1,mirror"] [--name NAME]
 
 #include <algorithm>
 #include <cstdio>
@@ -32,6 +32,7 @@ struct Options {
   std::vector<int> threads{1, 2};
   bool high = true;
   SphereMethod sphere = SphereMethod::Auto;  // the scene's own unless asked
+  std::vector<std::string> kinds;            // the ray sets to trace; empty: all
 };
 
 // Rays per task handed to a thread, as many as in one of the renderer's 32×32 tiles.
@@ -185,7 +186,12 @@ template <class T> int run(const Options& options, const SceneDesc& desc, const 
   const int most = *std::max_element(options.threads.begin(), options.threads.end());
   const Scene<T> scene(desc, arithmetic, Hierarchy::Auto, most);
   const Camera<T> camera(desc.camera, options.width, options.height);
-  const std::vector<RaySet<T>> sets = makeRaySets(scene, camera, kSeed);
+  std::vector<RaySet<T>> sets = makeRaySets(scene, camera, kSeed);
+  if (!options.kinds.empty()) {
+    sets.erase(std::remove_if(sets.begin(), sets.end(), [&](const RaySet<T>& set) {
+      return std::find(options.kinds.begin(), options.kinds.end(), set.kind) == options.kinds.end();
+    }), sets.end());
+  }
   std::vector<const Object<T>*> bounded;
   for (const auto& o : scene.objects()) {
     if (o->bounds()) bounded.push_back(o.get());
@@ -275,6 +281,13 @@ Options parse(int argc, char** argv) {
       const std::string v = value();
       if (v != "high" && v != "medium") throw std::runtime_error("--quality is high or medium, not " + v);
       o.high = v == "high";
+    } else if (a == "--kinds") {
+      const std::string v = value();
+      for (size_t p = 0; p < v.size();) {
+        const size_t comma = std::min(v.find(',', p), v.size());
+        o.kinds.push_back(v.substr(p, comma - p));
+        p = comma + 1;
+      }
     } else if (a == "--name") {
       o.name = value();
     } else if (o.scene.empty() && a[0] != '-') {
@@ -285,7 +298,7 @@ Options parse(int argc, char** argv) {
   }
   if (o.scene.empty()) {
     throw std::runtime_error("usage: raytrace_embree SCENE [--size WxH] [--runs N] [--threads 1,2] "
-                             "[--quality high|medium] [--sphere robust|textbook] [--name NAME]");
+                             "[--quality high|medium] [--sphere robust|textbook] [--kinds K1,K2] [--name NAME]");
   }
   if (o.name.empty()) {
     const size_t slash = o.scene.find_last_of('/') + 1, dot = o.scene.find_last_of('.');

@@ -7,6 +7,10 @@
 #include <cstring>
 #include <limits>
 
+#if defined(__SSE__)
+#include <immintrin.h>
+#endif
+
 namespace rt {
 
 namespace {
@@ -16,30 +20,39 @@ template <class T> struct Slabs {
   static constexpr int W = Bvh<T>::kWidth;
   typedef T Quad __attribute__((vector_size(W * sizeof(T))));
 
+  using Node = typename Bvh<T>::Node;
+
   Quad origin[3], invDir[3];
 
   explicit Slabs(const Ray<T>& ray) {
     for (int a = 0; a < 3; ++a) origin[a] = Quad{} + ray.origin[a], invDir[a] = Quad{} + T(1) / ray.dir[a];
   }
 
-  // entry[k]: the distance at which the ray enters child k of the node within [tMin, tMax], +∞ if it misses:
-  // the packet kernels' slab test (bvh_kernels.cpp, the same operations) for one ray.
-  void entries(const typename Bvh<T>::Node& node, T tMin, T tMax, T (&entry)[W]) const {
+  // The children of the node the ray enters within [tMin, tMax], as bit k for child k, and in entry[k] the
+  // distance at which it enters them: the packet kernels' slab test (bvh_kernels.cpp, the same operations)
+  // for one ray.
+  uint32_t entries(const Node& node, T tMin, T tMax, T (&entry)[W]) const {
     constexpr T inf = std::numeric_limits<T>::infinity();
-    Quad near = Quad{} + tMin, far = Quad{} + tMax;
+    Quad enter = Quad{} + tMin, leave = Quad{} + tMax;
     for (int a = 0; a < 3; ++a) {
       Quad lo, hi;
       std::memcpy(&lo, node.lo[a], sizeof lo);
       std::memcpy(&hi, node.hi[a], sizeof hi);
       const Quad t0 = (lo - origin[a]) * invDir[a], t1 = (hi - origin[a]) * invDir[a];
-      // min and max written so that a NaN from 0·∞ in t0 or t1 never replaces near or far.
+      // min and max written so that a NaN from 0·∞ in t0 or t1 never replaces enter or leave.
       const Quad tNear = t1 < t0 ? t1 : t0, tFar = t0 < t1 ? t1 : t0;
-      near = near < tNear ? tNear : near;
-      far = tFar < far ? tFar : far;
+      enter = enter < tNear ? tNear : enter;
+      leave = tFar < leave ? tFar : leave;
     }
-    const auto enters = (near <= far * kFarScale<T>) & (near < inf);
-    const Quad out = enters ? near : Quad{} + inf;
-    std::memcpy(entry, &out, sizeof out);
+    const auto enters = (enter <= leave * kFarScale<T>) & (enter < inf);
+    std::memcpy(entry, &enter, sizeof enter);
+    const uint32_t used = (1u << node.size) - 1;
+#if defined(__SSE__)
+    if constexpr (sizeof(T) == 4) return uint32_t(_mm_movemask_ps(reinterpret_cast<const __m128&>(enters))) & used;
+#endif
+    uint32_t bits = 0;
+    for (int k = 0; k < W; ++k) bits |= uint32_t(enters[k] & 1) << k;
+    return bits & used;
   }
 };
 
@@ -47,7 +60,6 @@ template <class T> struct Slabs {
 
 template <class T>
 void Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>>& best) const {
-  constexpr T inf = std::numeric_limits<T>::infinity();
   const Slabs<T> slabs(ray);
   ClosestSoFar<T> closest(best);
   // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
@@ -69,11 +81,16 @@ void Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<
     } else {
       const Node& node = nodes_[current.first];
       T entry[kWidth];
-      slabs.entries(node, range.min, tMax, entry);
+      uint32_t enters = slabs.entries(node, range.min, tMax, entry);
+      if (enters && !(enters & (enters - 1))) {  // one child, the most common case below the top
+        const int k = __builtin_ctz(enters);
+        current = {entry[k], node.first[k], node.count[k]};
+        continue;
+      }
       const int base = size;
       int nearest = -1;
-      for (int k = 0; k < node.size; ++k) {
-        if (!(entry[k] < inf)) continue;
+      for (; enters; enters &= enters - 1) {
+        const int k = __builtin_ctz(enters);
         int later = k;
         if (nearest < 0 || entry[k] < entry[nearest]) std::swap(later, nearest);
         if (later < 0) continue;
@@ -95,7 +112,6 @@ void Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<
 }
 
 template <class T> const Object<T>* Bvh<T>::blocker(const Ray<T>& ray, Interval<T> range) const {
-  constexpr T inf = std::numeric_limits<T>::infinity();
   const Slabs<T> slabs(ray);
   std::array<uint32_t, kMaxDepth * kWidth> stack;
   int size = 0;
@@ -103,9 +119,8 @@ template <class T> const Object<T>* Bvh<T>::blocker(const Ray<T>& ray, Interval<
   while (size > 0) {
     const Node& node = nodes_[stack[--size]];
     T entry[kWidth];
-    slabs.entries(node, range.min, range.max, entry);
-    for (int k = 0; k < node.size; ++k) {
-      if (!(entry[k] < inf)) continue;
+    for (uint32_t enters = slabs.entries(node, range.min, range.max, entry); enters; enters &= enters - 1) {
+      const int k = __builtin_ctz(enters);
       if (!node.count[k]) {
         stack[size++] = node.first[k];
         continue;
