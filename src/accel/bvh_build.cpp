@@ -232,7 +232,7 @@ std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& obje
   const size_t n = objects.size();
   std::vector<Aabb<T>> boxes(n);
   std::vector<Vec3<T>> centroids(n);
-  parallelForBlocks(n, kObjectBlock, threads, [&](size_t begin, size_t end) {
+  parallelForChunks(n, kObjectChunk, threads, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       boxes[i] = paddedBounds(*objects[i]);
       centroids[i] = centroid(boxes[i]);
@@ -318,7 +318,7 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects, int
   objects_.reserve(objects.size());
   for (uint32_t i : order) objects_.push_back(objects[i]);
   primitives_.resize(objects_.size());
-  parallelForBlocks(objects_.size(), kObjectBlock, threads, [&](size_t begin, size_t end) {
+  parallelForChunks(objects_.size(), kObjectChunk, threads, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) primitives_[i] = Primitive<T>::of(*objects_[i]);
   });
   nodes_ = collapse(binary);

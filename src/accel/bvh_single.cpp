@@ -111,7 +111,7 @@ void Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<
   }
 }
 
-template <class T> const Object<T>* Bvh<T>::blocker(const Ray<T>& ray, Interval<T> range) const {
+template <class T> const Object<T>* Bvh<T>::occluder(const Ray<T>& ray, Interval<T> range) const {
   const Slabs<T> slabs(ray);
   std::array<uint32_t, kMaxDepth * kWidth> stack;
   int size = 0;
@@ -127,7 +127,7 @@ template <class T> const Object<T>* Bvh<T>::blocker(const Ray<T>& ray, Interval<
       }
       for (uint32_t o = node.first[k]; o < node.first[k] + node.count[k]; ++o) {
         const Primitive<T>& p = primitives_[o];
-        const bool met = p.kind == Primitive<T>::Kind::Other ? objects_[o]->blocking(&ray, &range, 1) != 0
+        const bool met = p.kind == Primitive<T>::Kind::Other ? objects_[o]->occludes(&ray, &range, 1) != 0
                                                                : p.meets(ray, range);
         if (met) return objects_[o];
       }
@@ -138,7 +138,7 @@ template <class T> const Object<T>* Bvh<T>::blocker(const Ray<T>& ray, Interval<
 
 template void Bvh<float>::closestHit(const Ray<float>&, Interval<float>, std::optional<Hit<float>>&) const;
 template void Bvh<double>::closestHit(const Ray<double>&, Interval<double>, std::optional<Hit<double>>&) const;
-template const Object<float>* Bvh<float>::blocker(const Ray<float>&, Interval<float>) const;
-template const Object<double>* Bvh<double>::blocker(const Ray<double>&, Interval<double>) const;
+template const Object<float>* Bvh<float>::occluder(const Ray<float>&, Interval<float>) const;
+template const Object<double>* Bvh<double>::occluder(const Ray<double>&, Interval<double>) const;
 
 }  // namespace rt

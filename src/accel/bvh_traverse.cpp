@@ -94,12 +94,12 @@ void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::opti
 }
 
 template <class T>
-void Bvh<T>::blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active,
-                      const Object<T>** blockers) const {
+void Bvh<T>::occluders(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active,
+                       const Object<T>** found) const {
   if (nodes_.empty() || !active) return;
   if (!(active & (active - 1))) {
     const int i = __builtin_ctz(active);
-    if (const Object<T>* b = blocker(rays[i], ranges[i])) blockers[i] = b;
+    if (const Object<T>* o = occluder(rays[i], ranges[i])) found[i] = o;
     return;
   }
   Packet& packet = scratchPacket<T>();
@@ -119,7 +119,7 @@ void Bvh<T>::blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t ac
   stack[size++] = {0, active};
   while (size > 0) {
     const Pending p = stack[--size];
-    const uint32_t live = p.rays & active;  // those not blocked yet
+    const uint32_t live = p.rays & active;  // those not occluded yet
     if (!live) continue;
     const Node& node = nodes_[p.node];
     uint32_t childRays[kWidth];
@@ -134,11 +134,11 @@ void Bvh<T>::blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t ac
       for (uint32_t o = node.first[k]; o < node.first[k] + node.count[k]; ++o) {
         const Primitive<T>& p = primitives_[o];
         if (p.kind == Primitive<T>::Kind::Other) {
-          active &= ~objects_[o]->block(rays, ranges, childRays[k] & active, blockers);
+          active &= ~objects_[o]->noteOccluder(rays, ranges, childRays[k] & active, found);
         } else {
           for (uint32_t mask = childRays[k] & active; mask; mask &= mask - 1) {
             const int i = __builtin_ctz(mask);
-            if (p.meets(rays[i], ranges[i])) blockers[i] = objects_[o], active &= ~(1u << i);
+            if (p.meets(rays[i], ranges[i])) found[i] = objects_[o], active &= ~(1u << i);
           }
         }
         if (!active) return;
@@ -153,8 +153,9 @@ template void Bvh<double>::entries(const Node&, const Packet&, double, uint32_t,
                                    double (&)[kWidth]);
 template void Bvh<float>::closestHits(const Ray<float>*, int, Interval<float>, std::optional<Hit<float>>*) const;
 template void Bvh<double>::closestHits(const Ray<double>*, int, Interval<double>, std::optional<Hit<double>>*) const;
-template void Bvh<float>::blockers(const Ray<float>*, const Interval<float>*, uint32_t, const Object<float>**) const;
-template void Bvh<double>::blockers(const Ray<double>*, const Interval<double>*, uint32_t,
-                                    const Object<double>**) const;
+template void Bvh<float>::occluders(const Ray<float>*, const Interval<float>*, uint32_t,
+                                    const Object<float>**) const;
+template void Bvh<double>::occluders(const Ray<double>*, const Interval<double>*, uint32_t,
+                                     const Object<double>**) const;
 
 }  // namespace rt

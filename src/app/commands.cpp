@@ -92,12 +92,15 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   // Flags start with '-' and a letter; anything else (a negative number too) is positional.
   std::vector<std::string> positional;
   RenderOptions options;
-  bool stats = false;
-  if (isatty(STDERR_FILENO)) options.progress = &err;  // only render() shows it, and only to a person
+  bool stats = false, quiet = false;
   for (size_t i = 1; i < args.size(); ++i) {
     std::string a = args[i];
-    if (a == "--stats") {  // not a render option: the command line reports it
+    if (a == "--stats") {  // not render options: they say how a run is watched
       stats = true;
+      continue;
+    }
+    if (a == "--quiet") {
+      quiet = true;
       continue;
     }
     if (a == "--threads") {  // also written --threads=N
@@ -119,6 +122,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (stats && std::string(command->name) != "render") throw Error("--stats is for the render command only");
   Invocation inv;
   inv.options = options;
+  if (!quiet && isatty(STDERR_FILENO)) inv.progress = &err;  // only render() shows it, and only to a person
   if (stats) inv.stats = &err;
   if (defaultSize) {
     inv.width = inv.height = kDefaultSide;

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "raytrace/app/report.hpp"
+#include "raytrace/util/format.hpp"
 
 namespace rt {
 

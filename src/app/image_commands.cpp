@@ -29,11 +29,10 @@ int raycast(const Invocation& inv, std::ostream&) {
 // gets each of them instead, in file order, each showing the scene as it stood at its command.
 int renderImage(const Invocation& inv, std::ostream&) {
   RenderTimes times;
-  RenderOptions options = inv.options;
-  options.times = &times;
+  const RenderOptions& options = inv.options;
   double png = 0;
   const auto renderTo = [&](const SceneDesc& scene, const std::string& path) {
-    const Rgb8Image image = renderRgb8(scene, inv.width, inv.height, options);
+    const Rgb8Image image = renderRgb8(scene, inv.width, inv.height, options, {inv.progress, &times});
     Stopwatch watch;
     writePng(image, path, options.threads);
     png += watch.lap();

@@ -9,6 +9,7 @@
 #include "raytrace/image/image.hpp"
 #include "raytrace/render/ray_tree.hpp"
 #include "raytrace/render/tracer.hpp"
+#include "raytrace/util/format.hpp"
 
 namespace rt {
 
@@ -82,8 +83,7 @@ int firsthit(const Invocation& inv, std::ostream& out) {
       out << "No Hit\n";
       return 0;
     }
-    const ObjectDesc& object = inv.scene.objects[size_t(hit->object->id() - 1)];
-    out << "T = " << fixed4(hit->t) << "\nObject Type: " << shapeName(object.shape)
+    out << "T = " << fixed4(hit->t) << "\nObject Type: " << hit->object->name()
         << "\nColor: " << bare(hit->object->material().pigment) << "\n";
     return 0;
   });

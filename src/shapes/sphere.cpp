@@ -18,13 +18,13 @@ std::optional<Hit<T>> Sphere<T>::intersect(const Ray<T>& ray, Interval<T> range)
 
 // A shadow ray needs no hit record: only whether a root lies inside its segment.
 template <class T>
-uint32_t Sphere<T>::blocking(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const {
-  uint32_t blocked = 0;
+uint32_t Sphere<T>::occludes(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const {
+  uint32_t occluded = 0;
   for (uint32_t mask = open; mask; mask &= mask - 1) {
     const int i = __builtin_ctz(mask);
-    if (meets(center_, radius_, robust_, rays[i], ranges[i])) blocked |= 1u << i;
+    if (meets(center_, radius_, robust_, rays[i], ranges[i])) occluded |= 1u << i;
   }
-  return blocked;
+  return occluded;
 }
 
 template <class T> Vec3<T> Sphere<T>::normalAt(const Vec3<T>& point, const Hit<T>&) const {

@@ -82,10 +82,10 @@ template <class T> class Bvh {
   // The two queries, for a packet of n ≤ kPacket rays (one ray is a packet of one); each ray gets the answer
   // it would get alone. best[i] becomes the closest hit of rays[i] strictly inside `range`, or stays when
   // nothing is closer; equal t resolve to the lower object id, so the answer is the one a scan in file order
-  // gives (Scene::closestHits). blockers[i] becomes an object with a hit strictly inside ranges[i] (the
+  // gives (Scene::closestHits). found[i] becomes an object with a hit strictly inside ranges[i] (the
   // any-hit query), for the rays whose bit is set in `active`; the others are left as they are.
   void closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const;
-  void blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active, const Object<T>** blockers) const;
+  void occluders(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active, const Object<T>** found) const;
 
   // The tree, for those who walk it: nodes()[0] is the root (none when there are no objects).
   const std::vector<Node>& nodes() const { return nodes_; }
@@ -93,9 +93,9 @@ template <class T> class Bvh {
 
  private:
   // The queries for one ray, which packets of one take (bvh_single.cpp): the ray's node test fills one
-  // register, without a packet's bookkeeping. blocker() returns an object with a hit strictly inside `range`.
+  // register, without a packet's bookkeeping. occluder() returns an object with a hit strictly inside `range`.
   void closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>>& best) const;
-  const Object<T>* blocker(const Ray<T>& ray, Interval<T> range) const;
+  const Object<T>* occluder(const Ray<T>& ray, Interval<T> range) const;
 
   std::vector<Node> nodes_;                  // nodes_[0] is the root; empty when there are no objects
   std::vector<const Object<T>*> objects_;    // in leaf order

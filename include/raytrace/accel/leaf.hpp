@@ -40,7 +40,7 @@ template <class T> struct Primitive {
   }
 
   // For spheres and triangles only: the t of the object's closest hit strictly inside `range`, if any (what
-  // intersect() would report), and whether it meets the ray there at all (blocking()).
+  // intersect() would report), and whether it meets the ray there at all (occludes()).
   bool hitT(const Ray<T>& ray, Interval<T> range, T& t) const {
     if (kind == Kind::Triangle) {
       T u, v;

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "raytrace/render/renderer.hpp"
+#include "raytrace/render/options.hpp"
 
 namespace rt {
 

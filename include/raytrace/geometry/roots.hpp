@@ -1,4 +1,5 @@
-// The quadratics of the round shapes (sphere, cylinder side): the roots of |f + t·d|² = r².
+// The quadratics of the round shapes (sphere, cylinder side): the roots of |f + t·d|² = r²; and the choice
+// of formula a sphere uses.
 #pragma once
 
 #include <cmath>
@@ -7,6 +8,10 @@
 #include "raytrace/geometry/math.hpp"
 
 namespace rt {
+
+// How a sphere solves its quadratic: the textbook formula (cheaper, exact enough for a small precision budget)
+// or robustRoots() below; Auto asks chooseArithmetic() to choose per scene.
+enum class SphereMethod { Auto, Textbook, Robust };
 
 // The textbook quadratic (lecture 3; Shirley, Fundamentals of Computer Graphics §4.4.1): a·t² + b·t + c = 0 with
 // b = 2 d·f, Δ = b² − 4ac. Its error grows as ε·R² (stability.md F1), so chooseArithmetic() uses it only where

@@ -2,7 +2,6 @@
 
 #include "raytrace/geometry/roots.hpp"
 #include "raytrace/shapes/object.hpp"
-#include "raytrace/scene/arithmetic.hpp"
 
 namespace rt {
 
@@ -12,11 +11,12 @@ template <class T> class Sphere final : public Object<T> {
       : Object<T>(material, id), center_(center), radius_(radius), robust_(method != SphereMethod::Textbook) {}
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
-  uint32_t blocking(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const override;
+  uint32_t occludes(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const override;
   Vec3<T> normalAt(const Vec3<T>& point, const Hit<T>& hit) const override;
   std::optional<Aabb<T>> bounds() const override;
+  const char* name() const override { return "Sphere"; }
 
-  // The tests of intersect() and blocking() on the sphere (center, radius) by the method chosen for the scene,
+  // The tests of intersect() and occludes() on the sphere (center, radius) by the method chosen for the scene,
   // inline so that a hierarchy testing spheres from arrays of its own (accel/) gets the same bits. nearestRoot:
   // the nearer root strictly inside `range`, if any; meets: whether either root lies strictly inside it.
   static bool roots(const Vec3<T>& center, T radius, bool robust, const Ray<T>& ray, T& t0, T& t1) {

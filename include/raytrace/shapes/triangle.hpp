@@ -12,6 +12,7 @@ template <class T> class Triangle final : public Object<T> {
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
   std::optional<Aabb<T>> bounds() const override;
+  const char* name() const override { return "Triangle"; }
 
   // Möller & Trumbore (1997), "Fast, minimum storage ray-triangle intersection": solves
   // o + t·d = a + u·(b − a) + v·(c − a) by Cramer's rule, which is the course's method (§c.11) with the
