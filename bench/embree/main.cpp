@@ -330,7 +330,7 @@ int main(int argc, char** argv) {
     rt::Arithmetic requested;
     requested.sphere = options.sphere;
     const rt::Arithmetic arithmetic = rt::chooseArithmetic(desc, requested);
-    return rt::withPrecision(arithmetic.precision, [&](auto tag) {
+    return rt::withPrecision(arithmetic.tier, [&](auto tag) {
       return rt::bench::run<decltype(tag)>(options, desc, arithmetic);
     });
   } catch (const std::exception& e) {

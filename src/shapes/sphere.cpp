@@ -11,7 +11,7 @@ std::optional<Hit<T>> Sphere<T>::intersect(const Ray<T>& ray, Interval<T> range)
   Hit<T> hit;
   hit.t = t;
   hit.normal = glm::normalize(ray.at(t) - center_);
-  hit.point = center_ + radius_ * hit.normal;  // re-projected onto the surface (stability.md F4)
+  hit.point = center_ + radius_ * hit.normal;  // re-projected onto the surface (docs/reference/stability.md F4)
   hit.object = this;
   return hit;
 }
