@@ -79,7 +79,7 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
   // Unbounded objects (planes, or boxes overflowing T) have no box to put in a hierarchy; they are always
   // tested in turn.
   std::vector<char> finite(n);  // not vector<bool>, whose neighbouring entries share words the threads write
-  parallelForBlocks(n, kObjectBlock, threads, [&](size_t begin, size_t end) {
+  parallelForChunks(n, kObjectChunk, threads, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       const int id = int(i) + 1;
       const std::optional<ObjectDesc> folded = course ? std::nullopt : foldSimilarityIntoSphere(desc.objects[i]);
@@ -117,11 +117,11 @@ std::optional<Hit<T>> Scene<T>::closestHit(const Ray<T>& ray, Interval<T> range)
 }
 
 template <class T>
-bool Scene<T>::occluded(const Ray<T>& ray, Interval<T> range, const Object<T>** lastBlocker) const {
+bool Scene<T>::occluded(const Ray<T>& ray, Interval<T> range, const Object<T>** lastOccluder) const {
   const Object<T>* none = nullptr;
-  bool blocked;
-  occluded(&ray, &range, 1, &blocked, lastBlocker ? lastBlocker : &none);
-  return blocked;
+  bool shadowed;
+  occluded(&ray, &range, 1, &shadowed, lastOccluder ? lastOccluder : &none);
+  return shadowed;
 }
 
 template <class T>
@@ -139,21 +139,21 @@ template <class T> Vec3<T> Scene<T>::hitPoint(const Ray<T>& ray, const Hit<T>& h
 }
 
 template <class T>
-void Scene<T>::occluded(const Ray<T>* rays, const Interval<T>* ranges, int n, bool* blocked,
-                        const Object<T>** lastBlocker) const {
-  const Object<T>* blockers[Bvh<T>::kPacket] = {};
-  uint32_t open = (uint32_t(1) << n) - 1;  // the rays that nothing blocks so far
-  // The cached blocker first, then the unbounded objects in file order, then the hierarchy: each ray's
-  // blocker is the first that meets it.
-  if (*lastBlocker) open &= ~(*lastBlocker)->block(rays, ranges, open, blockers);
+void Scene<T>::occluded(const Ray<T>* rays, const Interval<T>* ranges, int n, bool* shadowed,
+                        const Object<T>** lastOccluder) const {
+  const Object<T>* occluders[Bvh<T>::kPacket] = {};
+  uint32_t open = (uint32_t(1) << n) - 1;  // the rays that nothing occludes so far
+  // The cached occluder first, then the unbounded objects in file order, then the hierarchy: each ray's
+  // occluder is the first that meets it.
+  if (*lastOccluder) open &= ~(*lastOccluder)->noteOccluder(rays, ranges, open, occluders);
   for (const Object<T>* object : scanned_) {
     if (!open) break;
-    open &= ~object->block(rays, ranges, open, blockers);
+    open &= ~object->noteOccluder(rays, ranges, open, occluders);
   }
-  if (open && hierarchy_) hierarchy_->blockers(rays, ranges, open, blockers);
+  if (open && hierarchy_) hierarchy_->occluders(rays, ranges, open, occluders);
   for (int i = 0; i < n; ++i) {
-    blocked[i] = blockers[i] != nullptr;
-    if (blockers[i]) *lastBlocker = blockers[i];
+    shadowed[i] = occluders[i] != nullptr;
+    if (occluders[i]) *lastOccluder = occluders[i];
   }
 }
 

@@ -119,7 +119,6 @@ RenderOptions parseFlag(const std::string& flag, RenderOptions o) {
   else if (flag == "-fresnel") o.fresnel = true;
   else if (flag == "-beers") o.beers = true;
   else if (flag == "-normals") o.normals = true;
-  else if (flag == "--quiet") o.progress = nullptr;
   else throw Error("unknown option '" + flag + "' (see raytrace --help)");
   return o;
 }

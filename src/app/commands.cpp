@@ -77,7 +77,7 @@ std::string usage() {
       "                                  scene and image for any N\n"
       "  --quiet                         no progress line (shown only while rendering to a terminal)\n"
       "  --stats                         after render, how long loading, building, tracing and writing the\n"
-      "                                  PNG took (stderr)\n"
+      "                                  PNG took, and the rays traced by kind (stderr)\n"
       "  -sds                            accepted for the course; a hierarchy is used whenever it pays\n"
       "  --hierarchy=auto|always|never   force the bounding volume hierarchy on or off (same image)\n";
   return text;
@@ -98,12 +98,15 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   // Flags start with '-' and a letter; anything else (a negative number too) is positional.
   std::vector<std::string> positional;
   RenderOptions options;
-  bool stats = false;
-  if (isatty(STDERR_FILENO)) options.progress = &err;  // only render() shows it, and only to a person
+  bool stats = false, quiet = false;
   for (size_t i = 1; i < args.size(); ++i) {
     std::string a = args[i];
-    if (a == "--stats") {  // not a render option: the command line reports it
+    if (a == "--stats") {  // not render options: they say how a run is watched
       stats = true;
+      continue;
+    }
+    if (a == "--quiet") {
+      quiet = true;
       continue;
     }
     if (a == "--threads" || a == "--seed") {  // also written --threads=N, --seed=N
@@ -125,6 +128,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (stats && std::string(command->name) != "render") throw Error("--stats is for the render command only");
   Invocation inv;
   inv.options = options;
+  if (!quiet && isatty(STDERR_FILENO)) inv.progress = &err;  // only render() shows it, and only to a person
   if (stats) inv.stats = &err;
   if (defaultSize) {
     inv.width = inv.height = kDefaultSide;

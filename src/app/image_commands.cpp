@@ -30,12 +30,10 @@ int raycast(const Invocation& inv, std::ostream&) {
 int renderImage(const Invocation& inv, std::ostream&) {
   RenderTimes times;
   RayCounts rays;
-  RenderOptions options = inv.options;
-  options.times = &times;
-  options.rays = &rays;
+  const RenderOptions& options = inv.options;
   double png = 0;
   const auto renderTo = [&](const SceneDesc& scene, const std::string& path) {
-    const Rgb8Image image = renderRgb8(scene, inv.width, inv.height, options);
+    const Rgb8Image image = renderRgb8(scene, inv.width, inv.height, options, {inv.progress, &times, &rays});
     Stopwatch watch;
     writePng(image, path, options.threads);
     png += watch.lap();

@@ -3,11 +3,13 @@
 #include <string>
 #include <vector>
 
+#include "raytrace/app/hierarchy_report.hpp"
 #include "raytrace/app/invocation.hpp"
 #include "raytrace/app/report.hpp"
 #include "raytrace/image/image.hpp"
 #include "raytrace/render/ray_tree.hpp"
 #include "raytrace/render/tracer.hpp"
+#include "raytrace/util/format.hpp"
 
 namespace rt {
 
@@ -84,8 +86,7 @@ int firsthit(const Invocation& inv, std::ostream& out) {
       out << "No Hit\n";
       return 0;
     }
-    const ObjectDesc& object = inv.scene.objects[size_t(hit->object->id() - 1)];
-    out << "T = " << fixed4(hit->t) << "\nObject Type: " << shapeName(object.shape)
+    out << "T = " << fixed4(hit->t) << "\nObject Type: " << hit->object->name()
         << "\nColor: " << bare(hit->object->material().pigment) << "\n";
     return 0;
   });
@@ -101,7 +102,7 @@ int printbvh(const Invocation& inv, std::ostream& out) {
         << scene.objects().size() - bounded << " unbounded (tested one by one). Renders use the hierarchy from "
         << kHierarchyMinObjects << " bounded objects on: " << (bounded >= kHierarchyMinObjects ? "yes" : "no")
         << ".\n";
-    scene.hierarchy()->print(out);
+    printHierarchy(out, *scene.hierarchy());
     return 0;
   });
 }

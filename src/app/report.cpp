@@ -1,24 +1,10 @@
 #include "raytrace/app/report.hpp"
 
-#include <cstdio>
 #include <type_traits>
 
+#include "raytrace/util/format.hpp"
+
 namespace rt {
-
-std::string fixed4(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.4f", v);
-  return buf;
-}
-
-std::string bare(const glm::dvec3& v) { return fixed4(v.x) + " " + fixed4(v.y) + " " + fixed4(v.z); }
-std::string braces(const glm::dvec3& v) { return "{" + bare(v) + "}"; }
-
-const char* shapeName(const ShapeDesc& shape) {
-  static const char* const names[] = {"Sphere", "Plane", "Triangle", "Box", "Cone", "Cylinder"};
-  static_assert(std::variant_size_v<ShapeDesc> == 6);
-  return names[shape.index()];
-}
 
 namespace {
 
@@ -50,7 +36,7 @@ void printShape(std::ostream& out, const ShapeDesc& shape) {
 // which no scalar can stand for, with its power and reflection coefficient.
 void printMaterial(std::ostream& out, const ObjectDesc& o, SceneLanguage language) {
   const Material& m = o.material;
-  if (language == SceneLanguage::Cli) {
+  if (language == SceneLanguage::Cs3451) {
     out << "- Material:\n  - Ambient: " << braces(m.ambient) << "\n  - Diffuse: " << braces(m.diffuse)
         << "\n  - Specular: " << braces(m.specular) << "\n  - Power: " << fixed4(m.exponent)
         << "\n  - Reflection: " << fixed4(m.reflection) << "\n";

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "raytrace/util/limits.hpp"
-#include "raytrace/parse/scene_file.hpp"
+#include "raytrace/util/path.hpp"
 
 namespace rt {
 
@@ -91,7 +91,7 @@ class CliParser {
  public:
   CliParser(std::string_view text, const std::string& file) : lines_(text, file) {
     scene_.file = file;
-    scene_.language = SceneLanguage::Cli;
+    scene_.language = SceneLanguage::Cs3451;
     // The conventions that reproduce the course's reference images (cs3451-course.md §A.4).
     Conventions& c = scene_.conventions;
     c.toByte = Conventions::ToByte::Truncate;  // §A.4.2: (int)(255·c), Processing's colorCalc
@@ -260,9 +260,9 @@ class CliParser {
 
 }  // namespace
 
-SceneDesc parseCli(std::string_view text, const std::string& file) { return CliParser(text, file).parse(); }
+SceneDesc parseCs3451(std::string_view text, const std::string& file) { return CliParser(text, file).parse(); }
 
-bool looksLikeCli(std::string_view text) {
+bool looksLikeCs3451(std::string_view text) {
   size_t lineStart = 0;
   while (lineStart < text.size()) {
     const size_t newline = text.find('\n', lineStart);

@@ -392,14 +392,14 @@ class PovParser {
   int cameras_ = 0;
 };
 
-// Line ends (LF, CRLF, lone CR) in `text`, as the tokenizer counts them. LFs are counted in blocks of 255
+// Line ends (LF, CRLF, lone CR) in `text`, as the tokenizer counts them. LFs are counted in runs of 255
 // bytes, whose count fits in a byte: a loop the compiler vectorizes, 2.5 times as fast as std::count.
 int lineEnds(std::string_view text) {
   size_t n = 0;
-  for (size_t block = 0; block < text.size(); block += 255) {
-    const size_t end = std::min(text.size(), block + 255);
+  for (size_t run = 0; run < text.size(); run += 255) {
+    const size_t end = std::min(text.size(), run + 255);
     unsigned char lf = 0;
-    for (size_t i = block; i < end; ++i) lf += text[i] == '\n';
+    for (size_t i = run; i < end; ++i) lf += text[i] == '\n';
     n += lf;
   }
   for (size_t at = text.find('\r'); at != std::string_view::npos; at = text.find('\r', at + 1)) {

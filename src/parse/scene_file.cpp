@@ -1,6 +1,5 @@
 #include "raytrace/parse/scene_file.hpp"
 
-#include <cctype>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -13,6 +12,7 @@
 #include "raytrace/parse/cs3451_parser.hpp"
 #include "raytrace/util/limits.hpp"
 #include "raytrace/util/parallel.hpp"
+#include "raytrace/util/path.hpp"
 #include "raytrace/parse/pov_parser.hpp"
 
 namespace rt {
@@ -20,7 +20,7 @@ namespace rt {
 namespace {
 
 // The pieces a file is read in, handed out to the threads: a 3 MB file is shared out too.
-constexpr size_t kReadBlock = size_t(1) << 20;
+constexpr size_t kReadPiece = size_t(1) << 20;
 
 // Closes the descriptor however readFile() leaves.
 struct FileDescriptor {
@@ -45,11 +45,11 @@ FileText readFile(const std::string& path, int threads) {
   }
   const size_t size = size_t(st.st_size);
   FileText text(size);
-  // Blocks read on the threads at once. Most of a read's time is the kernel faulting in the fresh pages it
+  // Pieces read on the threads at once. Most of a read's time is the kernel faulting in the fresh pages it
   // copies into, one at a time per thread: 163 MB took 67-104 ms on one thread and 37-52 ms on two.
-  std::vector<size_t> got((size + kReadBlock - 1) / kReadBlock);
-  parallelForBlocks(size, kReadBlock, threads, [&](size_t begin, size_t end) {
-    size_t& done = got[begin / kReadBlock];
+  std::vector<size_t> got((size + kReadPiece - 1) / kReadPiece);
+  parallelForChunks(size, kReadPiece, threads, [&](size_t begin, size_t end) {
+    size_t& done = got[begin / kReadPiece];
     while (begin + done < end) {
       const ssize_t n = pread(file.fd, text.data() + begin + done, end - begin - done, off_t(begin + done));
       if (n < 0 && errno == EINTR) continue;
@@ -58,35 +58,27 @@ FileText readFile(const std::string& path, int threads) {
       done += size_t(n);
     }
   });
-  // Up to the first block that came short.
+  // Up to the first piece that came short.
   size_t length = 0;
   for (const size_t n : got) {
     length += n;
-    if (n < kReadBlock) break;
+    if (n < kReadPiece) break;
   }
   text.resize(length);
   return text;
 }
 
-std::string extension(const std::string& path) {
-  const size_t dot = path.find_last_of("./");
-  const bool named = dot != std::string::npos && dot > 0 && path[dot] == '.' && path[dot - 1] != '/';
-  std::string ext = named ? path.substr(dot + 1) : "";
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
 SceneLanguage sceneLanguage(const std::string& path, std::string_view text) {
   const std::string ext = extension(path);
   if (ext == "pov") return SceneLanguage::Pov;
-  if (ext == "cli") return SceneLanguage::Cli;
-  return looksLikeCli(text) ? SceneLanguage::Cli : SceneLanguage::Pov;
+  if (ext == "cli") return SceneLanguage::Cs3451;
+  return looksLikeCs3451(text) ? SceneLanguage::Cs3451 : SceneLanguage::Pov;
 }
 
 SceneDesc loadScene(const std::string& path, int threads) {
   const FileText file = readFile(path, threads);
   const std::string_view text = file.view();
-  return sceneLanguage(path, text) == SceneLanguage::Cli ? parseCli(text, path) : parsePov(text, path, threads);
+  return sceneLanguage(path, text) == SceneLanguage::Cs3451 ? parseCs3451(text, path) : parsePov(text, path, threads);
 }
 
 }  // namespace rt

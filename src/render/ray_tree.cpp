@@ -1,6 +1,6 @@
 #include "raytrace/render/ray_tree.hpp"
 
-#include "raytrace/app/report.hpp"
+#include "raytrace/util/format.hpp"
 
 namespace rt {
 
@@ -40,7 +40,7 @@ void printNode(std::ostream& out, const std::string& prefix, const RayRecord& r,
     if (decorated) {
       for (size_t i = 0; i < r.shadows.size(); ++i) {
         const ShadowRecord& s = r.shadows[i];
-        out << p << "   ShadowRay [" << i << "]: " << ray(s.origin, s.dir) << (s.blocked ? " (in shadow)" : "")
+        out << p << "   ShadowRay [" << i << "]: " << ray(s.origin, s.dir) << (s.occluded ? " (in shadow)" : "")
             << "\n";
       }
     }

@@ -21,7 +21,8 @@ constexpr int kTile = 32;
 // Renders the scene tile by tile on the threads and hands each finished row of a tile to
 // store(x0, y, x1, colours): the colours of pixels x0 … x1 − 1 of row y.
 template <class Store>
-void renderRows(const SceneDesc& desc, int width, int height, const RenderOptions& options, const Store& store) {
+void renderRows(const SceneDesc& desc, int width, int height, const RenderOptions& options,
+                const RenderMonitor& monitor, const Store& store) {
   const Arithmetic arithmetic = chooseArithmetic(desc, options.arithmetic);
   withPrecision(arithmetic.precision, [&](auto tag) {
     using T = decltype(tag);
@@ -38,7 +39,7 @@ void renderRows(const SceneDesc& desc, int width, int height, const RenderOption
     // 1280×960 on two threads: 1350-1860 page faults in all instead of 1240).
     const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
     std::mutex countsMutex;
-    ProgressMeter progress(options.progress, int64_t(width) * height, options.samples * options.samples);
+    ProgressMeter progress(monitor.progress, int64_t(width) * height, options.samples * options.samples);
     parallelFor(tilesX * tilesY, options.threads, [&](int tile) {
       const int x0 = tile / tilesY * kTile, y0 = tile % tilesY * kTile;
       const int x1 = std::min(width, x0 + kTile), y1 = std::min(height, y0 + kTile);
@@ -47,32 +48,34 @@ void renderRows(const SceneDesc& desc, int width, int height, const RenderOption
         store(x0, y, x1, tileTracer.block(camera, x0, y, x1, y + 1));
         progress.add(x1 - x0);  // row by row: a -gi tile takes seconds
       }
-      if (options.rays) {
+      if (monitor.rays) {
         const std::lock_guard<std::mutex> lock(countsMutex);
-        *options.rays += tileTracer.counts();
+        *monitor.rays += tileTracer.counts();
       }
     });
-    if (options.times) {
-      options.times->build += build;
-      options.times->trace += watch.lap();
+    if (monitor.times) {
+      monitor.times->build += build;
+      monitor.times->trace += watch.lap();
     }
   });
 }
 
 }  // namespace
 
-Image render(const SceneDesc& desc, int width, int height, const RenderOptions& options) {
+Image render(const SceneDesc& desc, int width, int height, const RenderOptions& options,
+             const RenderMonitor& monitor) {
   Image image(width, height);
-  renderRows(desc, width, height, options, [&](int x0, int y, int x1, const Color* colors) {
+  renderRows(desc, width, height, options, monitor, [&](int x0, int y, int x1, const Color* colors) {
     std::copy(colors, colors + (x1 - x0), &image.at(x0, y));
   });
   return image;
 }
 
-Rgb8Image renderRgb8(const SceneDesc& desc, int width, int height, const RenderOptions& options) {
+Rgb8Image renderRgb8(const SceneDesc& desc, int width, int height, const RenderOptions& options,
+                     const RenderMonitor& monitor) {
   Rgb8Image image(width, height);
   const Conventions::ToByte mode = desc.conventions.toByte;
-  renderRows(desc, width, height, options, [&](int x0, int y, int x1, const Color* colors) {
+  renderRows(desc, width, height, options, monitor, [&](int x0, int y, int x1, const Color* colors) {
     toBytes(glm::value_ptr(*colors), size_t(x1 - x0) * 3, image.at(x0, y), mode);
   });
   return image;

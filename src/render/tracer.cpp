@@ -199,7 +199,7 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
   if (record) {
     record->hit = true;
     record->objectId = hit.object->id();
-    record->objectType = shapeName(scene_.desc().objects[size_t(hit.object->id() - 1)].shape);
+    record->objectType = hit.object->name();
     record->point = glm::dvec3(hit.point);
     record->normal = glm::dvec3(hit.normal);
     record->t = double(hit.t);

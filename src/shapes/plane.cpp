@@ -19,13 +19,13 @@ void Plane<T>::closerHits(const Ray<T>* rays, int n, Interval<T> range, std::opt
   }
 }
 
-template <class T> uint32_t Plane<T>::blocking(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const {
-  uint32_t blocked = 0;
+template <class T> uint32_t Plane<T>::occludes(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const {
+  uint32_t occluded = 0;
   for (uint32_t mask = open; mask; mask &= mask - 1) {
     const int i = __builtin_ctz(mask);
-    blocked |= uint32_t(ranges[i].surrounds(distanceAlong(rays[i]))) << i;
+    occluded |= uint32_t(ranges[i].surrounds(distanceAlong(rays[i]))) << i;
   }
-  return blocked;
+  return occluded;
 }
 
 template <class T> Hit<T> Plane<T>::hitAt(const Ray<T>& ray, T t) const {

@@ -45,14 +45,14 @@ std::optional<Hit<T>> Sphere<T>::intersect(const Ray<T>& ray, Interval<T> range)
 
 // A shadow ray needs no hit record: only whether a root lies inside its segment.
 template <class T>
-uint32_t Sphere<T>::blocking(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const {
-  uint32_t blocked = 0;
+uint32_t Sphere<T>::occludes(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const {
+  uint32_t occluded = 0;
   for (uint32_t mask = open; mask; mask &= mask - 1) {
     const int i = __builtin_ctz(mask);
     T t0, t1;
-    if (roots(rays[i], t0, t1) && (ranges[i].surrounds(t0) || ranges[i].surrounds(t1))) blocked |= 1u << i;
+    if (roots(rays[i], t0, t1) && (ranges[i].surrounds(t0) || ranges[i].surrounds(t1))) occluded |= 1u << i;
   }
-  return blocked;
+  return occluded;
 }
 
 template <class T> Vec3<T> Sphere<T>::normalAt(const Vec3<T>& point, const Hit<T>&) const {

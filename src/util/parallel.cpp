@@ -140,9 +140,9 @@ void parallelFor(int count, int threads, const std::function<void(int)>& task) {
   if (error) std::rethrow_exception(error);
 }
 
-void parallelForBlocks(size_t count, size_t block, int threads, const std::function<void(size_t, size_t)>& task) {
-  parallelFor(int((count + block - 1) / block), threads,
-              [&](int b) { task(size_t(b) * block, std::min(count, size_t(b + 1) * block)); });
+void parallelForChunks(size_t count, size_t chunk, int threads, const std::function<void(size_t, size_t)>& task) {
+  parallelFor(int((count + chunk - 1) / chunk), threads,
+              [&](int c) { task(size_t(c) * chunk, std::min(count, size_t(c + 1) * chunk)); });
 }
 
 }  // namespace rt

@@ -10,6 +10,7 @@
 
 #include "raytrace/accel/bvh.hpp"
 #include "raytrace/accel/scene.hpp"
+#include "raytrace/app/hierarchy_report.hpp"
 
 namespace {
 
@@ -71,7 +72,7 @@ template <class T> rt::Arithmetic robustArithmetic() {
 std::string printedTree(const rt::SceneDesc& desc) {
   const rt::Scene<double> scene(desc, robustArithmetic<double>(), Hierarchy::Always);
   std::ostringstream out;
-  scene.hierarchy()->print(out);
+  rt::printHierarchy(out, *scene.hierarchy());
   return out.str();
 }
 
@@ -89,7 +90,7 @@ TEMPLATE_TEST_CASE("the hierarchy finds exactly the hit a scan in file order fin
     REQUIRE(!flat.hierarchy());
     REQUIRE(tree.hierarchy());
     std::uniform_real_distribution<double> pos(-15, 15), unit(0, 1);
-    const rt::Object<T>* lastBlocker = nullptr;
+    const rt::Object<T>* lastOccluder = nullptr;
     for (int i = 0; i < 2000; ++i) {
       CAPTURE(i);
       rt::Ray<T> ray{rt::Vec3<T>(pos(rng), pos(rng), pos(rng)), randomUnit<T>(rng)};
@@ -124,7 +125,7 @@ TEMPLATE_TEST_CASE("the hierarchy finds exactly the hit a scan in file order fin
       requireSame(flat.closestHit(ray, range), tree.closestHit(ray, range));
       REQUIRE(flat.occluded(ray, range) == tree.occluded(ray, range));
       // The shadow cache carried from ray to ray changes nothing but the order of the tests.
-      REQUIRE(flat.occluded(ray, range) == tree.occluded(ray, range, &lastBlocker));
+      REQUIRE(flat.occluded(ray, range) == tree.occluded(ray, range, &lastOccluder));
     }
   }
 }
@@ -140,7 +141,7 @@ TEMPLATE_TEST_CASE("a packet of rays gets the answers each ray gets alone", "[bv
     const rt::Scene<T> flat(desc, arithmetic, Hierarchy::Never);
     const rt::Scene<T> tree(desc, arithmetic, Hierarchy::Always);
     std::uniform_real_distribution<double> pos(-15, 15), spread(-0.05, 0.05), unit(0, 1);
-    const rt::Object<T>* lastBlocker = nullptr;
+    const rt::Object<T>* lastOccluder = nullptr;
     for (int p = 0; p < 200; ++p) {
       CAPTURE(p);
       // Odd packets are coherent (one origin, directions within a few degrees, as a pixel's eye rays), even
@@ -160,12 +161,12 @@ TEMPLATE_TEST_CASE("a packet of rays gets the answers each ray gets alone", "[bv
       }
       std::optional<rt::Hit<T>> hits[kPacket];
       tree.closestHits(rays, n, {}, hits);
-      bool blocked[kPacket];
-      tree.occluded(rays, ranges, n, blocked, &lastBlocker);
+      bool shadowed[kPacket];
+      tree.occluded(rays, ranges, n, shadowed, &lastOccluder);
       for (int i = 0; i < n; ++i) {
         CAPTURE(i);
         requireSame(hits[i], flat.closestHit(rays[i], {}));
-        REQUIRE(blocked[i] == flat.occluded(rays[i], ranges[i]));
+        REQUIRE(shadowed[i] == flat.occluded(rays[i], ranges[i]));
       }
     }
   }
@@ -258,7 +259,7 @@ TEST_CASE("the tree is the same, node for node, for any number of threads", "[bv
   const auto printed = [&](int threads) {
     const rt::Scene<float> scene(desc, arithmetic, Hierarchy::Always, threads);
     std::ostringstream out;
-    scene.hierarchy()->print(out);
+    rt::printHierarchy(out, *scene.hierarchy());
     return out.str();
   };
   const std::string one = printed(1);
@@ -268,7 +269,7 @@ TEST_CASE("the tree is the same, node for node, for any number of threads", "[bv
 }
 
 // Spheres near float's largest value: their boxes are finite, but the sum of two corners, and so their centres,
-// overflow to ∞ (found by fuzz_cli; the bins' arithmetic then gave NaN, and an out-of-range bin index).
+// overflow to ∞ (found by fuzz_cs3451; the bins' arithmetic then gave NaN, and an out-of-range bin index).
 TEST_CASE("objects near the top of the float range still make a tree that finds them", "[bvh]") {
   rt::SceneDesc desc;
   for (int i = 0; i < 12; ++i) desc.objects.push_back(sphereDesc({(i % 2 ? 3.3e38 : -3.3e38), i * 10.0, 0}, 1));
@@ -312,11 +313,11 @@ TEST_CASE("an empty hierarchy answers nothing", "[bvh]") {
   empty.closestHits(&ray, 1, {}, &hit);
   CHECK(!hit);
   const rt::Interval<float> range;
-  const rt::Object<float>* blocker = nullptr;
-  empty.blockers(&ray, &range, 1u, &blocker);
-  CHECK(!blocker);
+  const rt::Object<float>* occluder = nullptr;
+  empty.occluders(&ray, &range, 1u, &occluder);
+  CHECK(!occluder);
   std::ostringstream out;
-  empty.print(out);
+  rt::printHierarchy(out, empty);
   CHECK(out.str() == "BVH: 0 objects, 0 nodes of up to 4 children, 0 leaves, largest leaf 0\n");
 }
 

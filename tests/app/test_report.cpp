@@ -8,7 +8,7 @@
 using namespace rt;
 
 TEST_CASE("report: sceneinfo shows a .cli surface as its colours, power and reflection") {
-  const SceneDesc s = parseCli("fov 60\nsurface .1 .2 .3  .4 .5 .6  .7 .8 .9  20 .5\nsphere 0 0 -4 1\n", "t.cli");
+  const SceneDesc s = parseCs3451("fov 60\nsurface .1 .2 .3  .4 .5 .6  .7 .8 .9  20 .5\nsphere 0 0 -4 1\n", "t.cli");
   std::ostringstream out;
   printSceneInfo(out, s);
   const std::string text = out.str();

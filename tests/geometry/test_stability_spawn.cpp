@@ -80,7 +80,7 @@ struct Rehits {
   int leaving = 0;   // rays leaving by the outer side of a solid or either side of a plane that hit it again
   int entering = 0;  // rays into a solid that did not reach its far side first (re-hit near side or escaped);
                      // tried only if offsets (up to 256 ulps) fit inside it
-  int segments = 0;  // shadow segments to a point outside that the surface itself blocked
+  int segments = 0;  // shadow segments to a point outside that the surface itself occluded
 };
 
 // For each of `hits` surface points: one ray leaving, one entering (solids), one segment to a point outside.

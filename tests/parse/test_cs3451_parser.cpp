@@ -15,14 +15,14 @@ using namespace std::string_literals;
 
 namespace {
 
-SceneDesc parse(const std::string& text) { return parseCli(text, "t.cli"); }
+SceneDesc parse(const std::string& text) { return parseCs3451(text, "t.cli"); }
 
 const std::string kKnown = " (the commands are fov, background, light, surface, sphere, cylinder, write)";
 const std::string kHeader = "fov 60\nsurface .1 .2 .3  .4 .5 .6  .7 .8 .9  20 .5\n";
 
 }  // namespace
 
-TEST_CASE("cli_parser: fov gives the course camera at the origin looking down -z (cs3451 A.4.1)") {
+TEST_CASE("cs3451_parser: fov gives the course camera at the origin looking down -z (cs3451 A.4.1)") {
   const SceneDesc s = parse("fov 90\n");
   const CameraDesc& c = s.camera;
   CHECK(c.location == glm::dvec3(0));
@@ -36,7 +36,7 @@ TEST_CASE("cli_parser: fov gives the course camera at the origin looking down -z
   CHECK(c.rightFollowsImage);
 }
 
-TEST_CASE("cli_parser: pixel rays follow x = (i - W/2)2k/W, y = -(j - H/2)2k/H with no half-pixel offset") {
+TEST_CASE("cs3451_parser: pixel rays follow x = (i - W/2)2k/W, y = -(j - H/2)2k/H with no half-pixel offset") {
   const SceneDesc s = parse("fov 60\n");
   const double k = std::tan(glm::radians(30.0));
   const int w = 300, h = 300;
@@ -56,7 +56,7 @@ TEST_CASE("cli_parser: pixel rays follow x = (i - W/2)2k/W, y = -(j - H/2)2k/H w
   CHECK(camera.pixelRay(150, h - 1 - 150).dir == glm::dvec3(0, 0, -1));
 }
 
-TEST_CASE("cli_parser: a wide image keeps fov vertical and its pixels square") {
+TEST_CASE("cs3451_parser: a wide image keeps fov vertical and its pixels square") {
   const SceneDesc s = parse("fov 90\n");
   const Camera<double> camera(s.camera, 600, 300);
   // Top-left pixel: x spans ±2 (twice the height's ±1), y = 1.
@@ -67,7 +67,7 @@ TEST_CASE("cli_parser: a wide image keeps fov vertical and its pixels square") {
   CHECK(d.z == Approx(want.z).margin(1e-15));
 }
 
-TEST_CASE("cli_parser: every command, in the course's argument orders (cs3451 A.2)") {
+TEST_CASE("cs3451_parser: every command, in the course's argument orders (cs3451 A.2)") {
   const SceneDesc s = parse(
       "fov 60\n"
       "background .2 .3 1\n"
@@ -76,7 +76,7 @@ TEST_CASE("cli_parser: every command, in the course's argument orders (cs3451 A.
       "sphere -1.5 1 -6 .75\n"
       "cylinder 2  1.5 -6  -2.5 -0.5\n"
       "write out.png\n");
-  CHECK(s.language == SceneLanguage::Cli);
+  CHECK(s.language == SceneLanguage::Cs3451);
   CHECK(s.file == "t.cli");
   CHECK(s.conventions.background == Color(.2f, .3f, 1));
   REQUIRE(s.lights.size() == 1);
@@ -108,7 +108,7 @@ TEST_CASE("cli_parser: every command, in the course's argument orders (cs3451 A.
   CHECK(s.writes[0].scene.writes.empty());
 }
 
-TEST_CASE("cli_parser: the language's conventions are set for every scene (cs3451 A.4)") {
+TEST_CASE("cs3451_parser: the language's conventions are set for every scene (cs3451 A.4)") {
   const Conventions c = parse("fov 60\n").conventions;
   CHECK(c.background == Color(0));  // the starter's background(0,0,0)
   CHECK(c.toByte == Conventions::ToByte::Truncate);
@@ -119,7 +119,7 @@ TEST_CASE("cli_parser: the language's conventions are set for every scene (cs345
   CHECK_FALSE(c.shadeDeepest);
 }
 
-TEST_CASE("cli_parser: commands run in order; each write keeps the scene as it stood") {
+TEST_CASE("cs3451_parser: commands run in order; each write keeps the scene as it stood") {
   const SceneDesc s = parse(kHeader +
                             "sphere 0 0 -4 1\n"
                             "write a.png\n"
@@ -148,7 +148,7 @@ TEST_CASE("cli_parser: commands run in order; each write keeps the scene as it s
   CHECK(s.objects.size() == 2);
 }
 
-TEST_CASE("cli_parser: CRLF, comments, blank lines, tabs and number spellings") {
+TEST_CASE("cs3451_parser: CRLF, comments, blank lines, tabs and number spellings") {
   const SceneDesc s = parse(
       "# a comment\r\n"
       "\r\n"
@@ -167,14 +167,14 @@ TEST_CASE("cli_parser: CRLF, comments, blank lines, tabs and number spellings") 
   CHECK(s.writes[0].path == "x.png");
 }
 
-TEST_CASE("cli_parser: a file without objects or writes is a valid, empty scene") {
+TEST_CASE("cs3451_parser: a file without objects or writes is a valid, empty scene") {
   const SceneDesc s = parse("fov 45\n");
   CHECK(s.objects.empty());
   CHECK(s.lights.empty());
   CHECK(s.writes.empty());
 }
 
-TEST_CASE("cli_parser: errors are located and whole") {
+TEST_CASE("cs3451_parser: errors are located and whole") {
   const auto error = [](const std::string& text, const std::string& message) {
     CAPTURE(text);
     REQUIRE_THROWS_WITH(parse(text), message);
@@ -239,18 +239,18 @@ TEST_CASE("cli_parser: errors are located and whole") {
   }
 }
 
-TEST_CASE("cli_parser: looksLikeCli reads the first line that is not blank or a comment") {
-  CHECK(looksLikeCli("fov 60\n"));
-  CHECK(looksLikeCli("# colored lights\r\n\r\nfov 60\r\n"));
-  CHECK(looksLikeCli("  \n\tsphere 0 0 -4 1\n"));
-  CHECK(looksLikeCli("write x.png"));
-  CHECK_FALSE(looksLikeCli("sphere { <0,0,0>, 1 }\n"));
-  CHECK_FALSE(looksLikeCli("background { color rgb <0,0,0> }\n"));
-  CHECK_FALSE(looksLikeCli("// a POV comment\nfov 60\n"));
-  CHECK_FALSE(looksLikeCli("camera {\n"));
-  CHECK_FALSE(looksLikeCli("fovea 60\n"));
-  CHECK_FALSE(looksLikeCli("# just a comment\n"));
-  CHECK_FALSE(looksLikeCli(""));
+TEST_CASE("cs3451_parser: looksLikeCs3451 reads the first line that is not blank or a comment") {
+  CHECK(looksLikeCs3451("fov 60\n"));
+  CHECK(looksLikeCs3451("# colored lights\r\n\r\nfov 60\r\n"));
+  CHECK(looksLikeCs3451("  \n\tsphere 0 0 -4 1\n"));
+  CHECK(looksLikeCs3451("write x.png"));
+  CHECK_FALSE(looksLikeCs3451("sphere { <0,0,0>, 1 }\n"));
+  CHECK_FALSE(looksLikeCs3451("background { color rgb <0,0,0> }\n"));
+  CHECK_FALSE(looksLikeCs3451("// a POV comment\nfov 60\n"));
+  CHECK_FALSE(looksLikeCs3451("camera {\n"));
+  CHECK_FALSE(looksLikeCs3451("fovea 60\n"));
+  CHECK_FALSE(looksLikeCs3451("# just a comment\n"));
+  CHECK_FALSE(looksLikeCs3451(""));
 }
 
 namespace {
@@ -276,7 +276,7 @@ Png readPng(const std::string& path) {
 
 }  // namespace
 
-TEST_CASE("cli_parser: render makes each write's PNG from the scene as it stood, in truncated bytes") {
+TEST_CASE("cs3451_parser: render makes each write's PNG from the scene as it stood, in truncated bytes") {
   const test::TempDir dir;
   const std::string scene = dir.write("s.cli",
                                       "fov 90\n"
@@ -302,7 +302,7 @@ TEST_CASE("cli_parser: render makes each write's PNG from the scene as it stood,
   CHECK(sphere.at(0, 2) == glm::ivec3(51, 127, 204));
 }
 
-TEST_CASE("cli_parser: render without a size makes the course's 300 x 300 image") {
+TEST_CASE("cs3451_parser: render without a size makes the course's 300 x 300 image") {
   const test::TempDir dir;
   const std::string scene = dir.write("s.cli", "fov 60\nwrite " + dir.file("out.png") + "\n");
   std::ostringstream out, err;

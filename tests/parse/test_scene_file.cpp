@@ -14,28 +14,17 @@
 
 using namespace rt;
 
-TEST_CASE("loader: extension is the lower-cased suffix of the file name only") {
-  CHECK(extension("i1.cli") == "cli");
-  CHECK(extension("dir/Scene.POV") == "pov");
-  CHECK(extension("a.b/c.Png") == "png");
-  CHECK(extension("a.d/scene") == "");
-  CHECK(extension("scene") == "");
-  CHECK(extension(".png") == "");
-  CHECK(extension("out/.png") == "");
-  CHECK(extension("x.") == "");
-}
-
 TEST_CASE("loader: the extension names the language, whatever the text looks like") {
   const std::string cli = "fov 60\n", pov = "camera { location <0,0,1> }\n";
-  CHECK(sceneLanguage("a.cli", cli) == SceneLanguage::Cli);
-  CHECK(sceneLanguage("a.CLI", pov) == SceneLanguage::Cli);
+  CHECK(sceneLanguage("a.cli", cli) == SceneLanguage::Cs3451);
+  CHECK(sceneLanguage("a.CLI", pov) == SceneLanguage::Cs3451);
   CHECK(sceneLanguage("a.pov", cli) == SceneLanguage::Pov);
   CHECK(sceneLanguage("dir.cli/a.Pov", cli) == SceneLanguage::Pov);
 }
 
 TEST_CASE("loader: without a known extension the first meaningful line decides, POV by default") {
-  CHECK(sceneLanguage("scene", "# colored lights\r\n\r\nfov 60\r\n") == SceneLanguage::Cli);
-  CHECK(sceneLanguage("scene.txt", "sphere 0 0 -4 1\n") == SceneLanguage::Cli);
+  CHECK(sceneLanguage("scene", "# colored lights\r\n\r\nfov 60\r\n") == SceneLanguage::Cs3451);
+  CHECK(sceneLanguage("scene.txt", "sphere 0 0 -4 1\n") == SceneLanguage::Cs3451);
   CHECK(sceneLanguage("scene", "sphere { <0,0,-4>, 1 }\n") == SceneLanguage::Pov);
   CHECK(sceneLanguage("scene", "// POV\ncamera {}\n") == SceneLanguage::Pov);
   CHECK(sceneLanguage("scene", "") == SceneLanguage::Pov);
@@ -50,8 +39,8 @@ const std::string kCliScene = "fov 60\nsurface 0 0 0  .4 .5 .6  0 0 0  1 0\nsphe
 
 TEST_CASE("loader: loadScene parses each language by its extension or, without one, its text") {
   const test::TempDir dir;
-  CHECK(loadScene(dir.write("a.cli", kCliScene)).language == SceneLanguage::Cli);
-  CHECK(loadScene(dir.write("b", kCliScene)).language == SceneLanguage::Cli);
+  CHECK(loadScene(dir.write("a.cli", kCliScene)).language == SceneLanguage::Cs3451);
+  CHECK(loadScene(dir.write("b", kCliScene)).language == SceneLanguage::Cs3451);
   const std::string pov = "camera { location <0,0,0> up <0,1,0> right <1,0,0> look_at <0,0,-1> }\n";
   CHECK(loadScene(dir.write("c", pov)).language == SceneLanguage::Pov);
   const std::string wrong = dir.write("d.pov", kCliScene);
@@ -90,7 +79,7 @@ TEST_CASE("loader: readFile returns the bytes exactly, NUL bytes included") {
   CHECK(readFile(dir.write("x.pov", bytes)).view() == bytes);
 }
 
-// Blocks of 1 MiB read on several threads land where they belong: of random bytes, a block out of place or
+// Pieces of 1 MiB read on several threads land where they belong: of random bytes, a piece out of place or
 // a short one would not match.
 TEST_CASE("loader: a file read on several threads is the same as read on one") {
   const test::TempDir dir;

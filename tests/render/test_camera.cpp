@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "raytrace/render/camera.hpp"
-#include "raytrace/app/report.hpp"
+#include "raytrace/util/format.hpp"
 
 namespace {
 

@@ -66,9 +66,9 @@ TEST_CASE("Weights split a hit between local shading, reflection and transmissio
   CHECK_THAT(course.reflection, WithinAbs(0.8, 1e-6));
   CHECK(course.transmission == 0.0f);
   // The .cli rule adds the reflection on top of the whole local colour.
-  const Weights cli = weights(mirror, 0.0f, false);
-  CHECK(cli.local == 1.0f);
-  CHECK_THAT(cli.reflection, WithinAbs(0.8, 1e-6));
+  const Weights cs3451 = weights(mirror, 0.0f, false);
+  CHECK(cs3451.local == 1.0f);
+  CHECK_THAT(cs3451.reflection, WithinAbs(0.8, 1e-6));
 }
 
 TEST_CASE("Reflection mirrors the direction about the normal", "[shading]") {

@@ -22,8 +22,8 @@ rt::SceneDesc withCamera(glm::dvec3 location) {
 }
 
 // The same scene in the .cli language, which never gets the course tier: the budget tiers alone.
-rt::SceneDesc asCli(rt::SceneDesc s) {
-  s.language = rt::SceneLanguage::Cli;
+rt::SceneDesc asCs3451(rt::SceneDesc s) {
+  s.language = rt::SceneLanguage::Cs3451;
   return s;
 }
 
@@ -44,7 +44,7 @@ TEST_CASE("precision: budget of a simple.pov-like scene") {
   add(s, rt::PlaneDesc{{0, 1, 0}, -4});
   // Box (−2, −4, −2)…(2, 2, 14): diagonal √(4² + 6² + 16²) = √308, over radius 2.
   CHECK(rt::precisionBudget(s) == Approx(std::sqrt(308.0) / 2));
-  const Arithmetic a = rt::chooseArithmetic(asCli(s));
+  const Arithmetic a = rt::chooseArithmetic(asCs3451(s));
   CHECK(a.precision == Precision::Float);
   CHECK(a.sphere == SphereMethod::Textbook);
   CHECK(a.offset == OffsetPolicy::Relative);
@@ -93,7 +93,7 @@ TEST_CASE("precision: transforms scale both the extent and the features") {
 TEST_CASE("precision: the thresholds R = 50 and R = 10000") {
   // A unit sphere at the origin and the camera at (0, 0, z): box (−1, −1, −1)…(1, 1, z), so R = √(8 + (z+1)²).
   const auto choose = [](double R) {
-    rt::SceneDesc s = asCli(withCamera({0, 0, std::sqrt(R * R - 8) - 1}));
+    rt::SceneDesc s = asCs3451(withCamera({0, 0, std::sqrt(R * R - 8) - 1}));
     add(s, rt::SphereDesc{{0, 0, 0}, 1});
     CHECK(rt::precisionBudget(s) == Approx(R));
     return rt::chooseArithmetic(s);
@@ -109,12 +109,12 @@ TEST_CASE("precision: the thresholds R = 50 and R = 10000") {
 }
 
 TEST_CASE("precision: explicit requests win") {
-  rt::SceneDesc s = asCli(withCamera({0, 0, 1e4}));
+  rt::SceneDesc s = asCs3451(withCamera({0, 0, 1e4}));
   add(s, rt::SphereDesc{{0, 0, 0}, 1});
   const Arithmetic forced = rt::chooseArithmetic(s, {Precision::Float, SphereMethod::Textbook});
   CHECK(forced.precision == Precision::Float);
   CHECK(forced.sphere == SphereMethod::Textbook);
-  rt::SceneDesc small = asCli(withCamera({0, 0, 5}));
+  rt::SceneDesc small = asCs3451(withCamera({0, 0, 5}));
   add(small, rt::SphereDesc{{0, 0, 0}, 1});
   const Arithmetic dbl = rt::chooseArithmetic(small, {Precision::Double, SphereMethod::Auto});
   CHECK(dbl.precision == Precision::Double);
@@ -139,7 +139,7 @@ TEST_CASE("precision: the course tier for course-scale POV scenes only") {
   // Moved 1e5 away, the coordinates' rounding nears the offset: R ≈ 1e7 asks for double.
   CHECK(tier(scene(1, glm::dvec3(1e5, 0, 0))) == Precision::Double);
   // A .cli scene never gets it, at any scale.
-  CHECK(tier(asCli(scene(1, glm::dvec3(0)))) == Precision::Float);
+  CHECK(tier(asCs3451(scene(1, glm::dvec3(0)))) == Precision::Float);
   // The thresholds themselves: a feature of exactly 0.002 and an extent of exactly 1000 are inside.
   rt::SceneDesc thin = scene(1, glm::dvec3(0));
   thin.objects[1].shape = rt::SphereDesc{{3, 0, 0}, 0.002};
@@ -170,7 +170,7 @@ TEST_CASE("precision: explicit requests win over the course tier, each on its ow
   CHECK(dbl.sphere == SphereMethod::Robust);
   CHECK(dbl.offset == OffsetPolicy::Relative);
   // Asked for, the course tier applies outside its domain too (a .cli scene here), with its own offset.
-  const Arithmetic course = rt::chooseArithmetic(asCli(s), {Precision::Course});
+  const Arithmetic course = rt::chooseArithmetic(asCs3451(s), {Precision::Course});
   CHECK(course.precision == Precision::Course);
   CHECK(course.sphere == SphereMethod::Textbook);
   CHECK(course.offset == OffsetPolicy::Course);

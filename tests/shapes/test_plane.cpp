@@ -117,6 +117,6 @@ TEMPLATE_TEST_CASE("plane: a packet's tests answer as its rays' own tests do", "
       CHECK(mine[i]->point == theirs[i]->point);
     }
     const uint32_t open = uint32_t(rng());
-    CHECK(plane.blocking(rays, ranges, open) == plane.rt::Object<T>::blocking(rays, ranges, open));
+    CHECK(plane.occludes(rays, ranges, open) == plane.rt::Object<T>::occludes(rays, ranges, open));
   }
 }

@@ -168,13 +168,13 @@ TEST_CASE("sphere: far from a small sphere, the robust test stays exact in float
   CHECK((!textbook || std::abs(textbook->t - 9999.0f) > 0.5f));
 }
 
-TEMPLATE_TEST_CASE("sphere: the shadow test of a packet blocks exactly the rays intersect() hits", "", float, double) {
+TEMPLATE_TEST_CASE("sphere: the shadow test of a packet occludes exactly the rays intersect() hits", "", float, double) {
   BOTH_FORMULAS;
   constexpr int kRays = 32;
   const auto s = sphere<T>({1, -2, 0.5}, T(1.5), method);
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> pos(-4, 4), unit(0, 1);
-  int blocked = 0;
+  int occluded = 0;
   for (int round = 0; round < 300; ++round) {
     CAPTURE(round);
     rt::Ray<T> rays[kRays];
@@ -187,9 +187,9 @@ TEMPLATE_TEST_CASE("sphere: the shadow test of a packet blocks exactly the rays 
       ranges[i] = {T(unit(rng) < 0.2 ? unit(rng) : 0), T(unit(rng) < 0.7 ? 8 * unit(rng) : 1e30)};
     }
     const uint32_t open = uint32_t(rng());
-    const uint32_t mine = s.blocking(rays, ranges, open);
-    CHECK(mine == s.rt::Object<T>::blocking(rays, ranges, open));  // intersect() ray by ray
-    blocked += __builtin_popcount(mine);
+    const uint32_t mine = s.occludes(rays, ranges, open);
+    CHECK(mine == s.rt::Object<T>::occludes(rays, ranges, open));  // intersect() ray by ray
+    occluded += __builtin_popcount(mine);
   }
-  CHECK(blocked > 1000);  // the sweep really has rays of both kinds
+  CHECK(occluded > 1000);  // the sweep really has rays of both kinds
 }

@@ -80,7 +80,7 @@ template <class T> void checkRobustCell(double r, double D, uint64_t seed, bool 
 SphereErrors budgetErrors(const glm::dvec3& eye, const glm::dvec3& c, double r, int rays, std::mt19937_64& rng,
                           Arithmetic& chosen) {
   SceneDesc desc;
-  desc.language = SceneLanguage::Cli;
+  desc.language = SceneLanguage::Cs3451;
   desc.camera.location = eye;
   desc.camera.lookAt = c;
   desc.objects.push_back(ObjectDesc{SphereDesc{c, r}, Material{}});

@@ -146,6 +146,28 @@ TEST_CASE("the scene builds boxes, cones and cylinders, transformed or not", "[t
   CHECK(side->normal == glm::dvec3(1, 0, 0));
 }
 
+TEST_CASE("every object is named as its description's shape, plain, transformed or folded", "[transformed][scene]") {
+  const SceneDesc desc = parsePov(std::string(kCamera) +
+                                      "sphere { <0, 0, 0>, 1 }\n"
+                                      "sphere { <0, 0, 0>, 1 scale 2 }\n"
+                                      "sphere { <0, 0, 0>, 1 scale <2, 1, 1> }\n"
+                                      "plane { <0, 1, 0>, -1 }\n"
+                                      "triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> rotate <0, 0, 30> }\n"
+                                      "box { <1, 1, 1>, <-1, -1, -1> }\n"
+                                      "cone { <0, 0, 0>, 1, <0, 0, 2>, 0 translate <0, 0, -5> }\n"
+                                      "cylinder { <0, -1, 0>, <0, 1, 0>, 0.5 }\n",
+                                  "names.pov");
+  // The course tier keeps every transform; the others fold the uniformly scaled sphere into a plain one.
+  const Scene<double> folding(desc, Arithmetic{Precision::Double, SphereMethod::Robust});
+  const Scene<float> course(desc, Arithmetic{Precision::Course, SphereMethod::Textbook, OffsetPolicy::Course});
+  REQUIRE(folding.objects().size() == desc.objects.size());
+  REQUIRE(course.objects().size() == desc.objects.size());
+  for (size_t i = 0; i < desc.objects.size(); ++i) {
+    CHECK(std::string(folding.objects()[i]->name()) == shapeName(desc.objects[i].shape));
+    CHECK(std::string(course.objects()[i]->name()) == shapeName(desc.objects[i].shape));
+  }
+}
+
 TEST_CASE("a sphere moved by a similarity becomes a plain sphere; other transforms are kept", "[transformed][scene]") {
   const SceneDesc desc = parsePov(std::string(kCamera) +
                                       "sphere { <1, 0, 0>, 2 rotate <0, 90, 0> scale 0.5 translate <1, 2, 3> }\n"

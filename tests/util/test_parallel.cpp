@@ -25,18 +25,18 @@ TEST_CASE("a parallelFor inside a task runs every index of its own exactly once"
   for (const auto& r : runs) REQUIRE(r == 1);
 }
 
-TEST_CASE("parallelForBlocks hands out whole blocks and a short last one", "[parallel]") {
+TEST_CASE("parallelForChunks hands out whole chunks and a short last one", "[parallel]") {
   for (int threads : {1, 2, 3}) {
     CAPTURE(threads);
-    std::vector<std::atomic<int>> blocks(3);
-    rt::parallelForBlocks(10, 4, threads, [&](size_t begin, size_t end) {
+    std::vector<std::atomic<int>> chunks(3);
+    rt::parallelForChunks(10, 4, threads, [&](size_t begin, size_t end) {
       REQUIRE(begin % 4 == 0);
       REQUIRE(end == std::min<size_t>(begin + 4, 10));
-      ++blocks[begin / 4];
+      ++chunks[begin / 4];
     });
-    for (const auto& b : blocks) REQUIRE(b == 1);
+    for (const auto& b : chunks) REQUIRE(b == 1);
   }
-  rt::parallelForBlocks(0, 4, 2, [](size_t, size_t) { FAIL("no item to run"); });
+  rt::parallelForChunks(0, 4, 2, [](size_t, size_t) { FAIL("no item to run"); });
 }
 
 TEST_CASE("parallelFor rethrows the first failure once all threads have stopped", "[parallel]") {

@@ -6,7 +6,6 @@
 #include <limits>
 #include <optional>
 #include <algorithm>
-#include <ostream>
 #include <vector>
 
 #include "raytrace/shapes/object.hpp"
@@ -31,6 +30,8 @@ template <class T> class Bvh {
   // Coherent Ray Tracing", 2001), each tested against the nodes it enters. The tests of a packet's rays are
   // independent: they share wide registers and overlap in the core.
   static constexpr int kPacket = 16;
+  // Deeper subtrees become leaves, so that a traversal stack of kMaxDepth·kWidth entries is enough.
+  static constexpr int kMaxDepth = 64;
 
   // A node of the flattened 4-wide tree (Wald et al., "Getting Rid of Packets", 2008; Dammertz et al.,
   // "Shallow Bounding Volume Hierarchies", 2008). Child k < size is a leaf holding
@@ -45,7 +46,7 @@ template <class T> class Bvh {
     }
   };
 
-  // A packet laid out for the node test (bvh.cpp): each of ray i's values repeated kWidth times, once per
+  // A packet laid out for the node test (bvh_kernels.cpp): each of ray i's values repeated kWidth times, once per
   // child, so that a SIMD register holds the values of one or more whole rays. tMax[i] is where ray i stops,
   // invDir[a][i] is 1/d.
   struct Packet {
@@ -65,7 +66,7 @@ template <class T> class Bvh {
   // (+∞ when none enters). The slab test (Kay & Kajiya 1986), for all children at once and for as many rays
   // at once as the widest SIMD registers of the processor hold. A NaN from 0·∞ (origin on a slab plane, ray
   // parallel to it) either leaves the bounds unchanged or rejects a ray lying in a face plane of the box,
-  // which cannot reach the objects: they lie strictly inside their padded boxes (paddedBounds in bvh.cpp).
+  // which cannot reach the objects: they lie strictly inside their padded boxes (paddedBounds in bvh_build.cpp).
   static void entries(const Node& node, const Packet& packet, T tMin, uint32_t rays, uint32_t (&childRays)[kWidth],
                       T (&childEntry)[kWidth]);
   // The implementations of entries() this processor can run, widest SIMD first; entries() uses the first.
@@ -80,16 +81,14 @@ template <class T> class Bvh {
   // The two queries, for a packet of n ≤ kPacket rays (one ray is a packet of one); each ray gets the answer
   // it would get alone. best[i] becomes the closest hit of rays[i] strictly inside `range`, or stays when
   // nothing is closer; equal t resolve to the lower object id, so the answer is the one a scan in file order
-  // gives (Scene::closestHits). blockers[i] becomes an object with a hit strictly inside ranges[i] (the
+  // gives (Scene::closestHits). found[i] becomes an object with a hit strictly inside ranges[i] (the
   // any-hit query), for the rays whose bit is set in `active`; the others are left as they are.
   void closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const;
-  void blockers(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active, const Object<T>** blockers) const;
+  void occluders(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active, const Object<T>** found) const;
 
+  // The tree, for those who walk it: nodes()[0] is the root (none when there are no objects).
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<const Object<T>*>& objects() const { return objects_; }
-
-  // The tree, one child per line, indented by depth: boxes, and object ids in the leaves.
-  void print(std::ostream& out) const;
 
  private:
   std::vector<Node> nodes_;               // nodes_[0] is the root; empty when there are no objects

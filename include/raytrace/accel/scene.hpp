@@ -26,18 +26,18 @@ template <class T> class Scene {
   // The closest hit strictly inside `range` over all objects. Equal t resolve to the object that comes first
   // in the file, so results never depend on traversal order (stability.md F13).
   std::optional<Hit<T>> closestHit(const Ray<T>& ray, Interval<T> range) const;
-  // Whether anything at all lies strictly inside `range`: the any-hit query of shadow rays. `lastBlocker`, when
-  // given, is the object that blocked the previous shadow ray toward the same light, tested first (neighbouring
-  // shadow rays are mostly blocked by the same object: the shadow cache of Haines & Greenberg, "The Light
-  // Buffer", 1986), and receives the blocker of this one. The answer is the same with or without it.
-  bool occluded(const Ray<T>& ray, Interval<T> range, const Object<T>** lastBlocker = nullptr) const;
+  // Whether anything at all lies strictly inside `range`: the any-hit query of shadow rays. `lastOccluder`, when
+  // given, is the object that occluded the previous shadow ray toward the same light, tested first
+  // (neighbouring shadow rays are mostly occluded by the same object: the shadow cache of Haines & Greenberg,
+  // "The Light Buffer", 1986), and receives the occluder of this one. The answer is the same with or without it.
+  bool occluded(const Ray<T>& ray, Interval<T> range, const Object<T>** lastOccluder = nullptr) const;
 
   // The same two queries for a packet of n ≤ Bvh<T>::kPacket coherent rays (bvh.hpp), each answered exactly as
-  // the one-ray query answers it: hits[i] = closestHit(rays[i], range); blocked[i] = occluded(rays[i],
-  // ranges[i], lastBlocker).
+  // the one-ray query answers it: hits[i] = closestHit(rays[i], range); shadowed[i] = occluded(rays[i],
+  // ranges[i], lastOccluder).
   void closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* hits) const;
-  void occluded(const Ray<T>* rays, const Interval<T>* ranges, int n, bool* blocked,
-                const Object<T>** lastBlocker) const;
+  void occluded(const Ray<T>* rays, const Interval<T>* ranges, int n, bool* shadowed,
+                const Object<T>** lastOccluder) const;
 
   const SceneDesc& desc() const { return desc_; }
   const Arithmetic& arithmetic() const { return arithmetic_; }

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "raytrace/render/renderer.hpp"
+#include "raytrace/render/options.hpp"
 
 namespace rt {
 

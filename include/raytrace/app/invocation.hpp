@@ -16,7 +16,8 @@ struct Invocation {
   SceneDesc scene;
   int width = 0, height = 0, x = 0, y = 0;
   RenderOptions options;
-  std::ostream* stats = nullptr;  // --stats: where render reports how long each step took
+  std::ostream* progress = nullptr;  // where render shows its progress line (not with --quiet)
+  std::ostream* stats = nullptr;     // --stats: where render reports how long each step took
   double loadSeconds = 0;         // the reading of the scene file
 };
 

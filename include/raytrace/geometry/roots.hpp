@@ -1,4 +1,5 @@
-// The robust quadratic shared by the round shapes (sphere, cylinder side): the roots of |f + t·d|² = r².
+// The robust quadratic shared by the round shapes (sphere, cylinder side): the roots of |f + t·d|² = r²; and
+// the choice of formula a sphere uses.
 #pragma once
 
 #include <cmath>
@@ -7,6 +8,10 @@
 #include "raytrace/geometry/math.hpp"
 
 namespace rt {
+
+// How a sphere solves its quadratic: the textbook formula (cheaper, exact enough for a small precision budget)
+// or robustRoots() below; Auto asks chooseArithmetic() to choose per scene.
+enum class SphereMethod { Auto, Textbook, Robust };
 
 // Ray-sphere with the two robust steps of Ray Tracing Gems ch. 7 (Haines et al. 2019), also used by pbrt-v4:
 //  - the discriminant from the perpendicular distance l of the centre to the ray, r² − |l|², which loses

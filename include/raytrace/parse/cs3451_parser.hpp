@@ -12,10 +12,10 @@ namespace rt {
 // Parses a whole .cli text. The result is the scene as it stands at the end of the file, with one WriteDesc
 // per `write` (the scene as it stood at that line) and the language's conventions (cs3451-course.md §A.4).
 // Throws ParseError ("file:line:col: error: …") at the first problem, so nothing is rendered from a bad file.
-SceneDesc parseCli(std::string_view text, const std::string& file);
+SceneDesc parseCs3451(std::string_view text, const std::string& file);
 
 // Whether a text whose file name says nothing reads as .cli: its first line that is neither blank nor a `#`
 // comment starts with a .cli command and has no '{', which every POV-subset object and block needs.
-bool looksLikeCli(std::string_view text);
+bool looksLikeCs3451(std::string_view text);
 
 }  // namespace rt

@@ -30,12 +30,8 @@ class FileText {
 // `threads` threads at once.
 FileText readFile(const std::string& path, int threads = 1);
 
-// A file name's extension in lower case without the dot: "png" for "a/b.PNG", "" for "a.d/b" or ".png" (a
-// hidden file's name is no extension).
-std::string extension(const std::string& path);
-
 // The language of a scene file: from its extension (.pov, .cli, any case) when it has one of those, otherwise
-// from its text (looksLikeCli), with the POV subset as the fallback.
+// from its text (looksLikeCs3451), with the POV subset as the fallback.
 SceneLanguage sceneLanguage(const std::string& path, std::string_view text);
 
 // Reads and parses a scene in its language (sceneLanguage), a large POV file on up to `threads` threads.

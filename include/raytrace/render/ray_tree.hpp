@@ -16,7 +16,7 @@ namespace rt {
 
 struct ShadowRecord {
   glm::dvec3 origin{0}, dir{0};
-  bool blocked = false;
+  bool occluded = false;
 };
 
 struct RayRecord {

@@ -7,8 +7,9 @@
 
 #include "raytrace/render/camera.hpp"
 #include "raytrace/geometry/math.hpp"
+#include "raytrace/render/ray_counts.hpp"
 #include "raytrace/render/ray_tree.hpp"
-#include "raytrace/render/renderer.hpp"
+#include "raytrace/render/options.hpp"
 #include "raytrace/accel/scene.hpp"
 
 namespace rt {

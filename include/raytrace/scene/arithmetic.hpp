@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "raytrace/scene/description.hpp"
+#include "raytrace/geometry/roots.hpp"
 #include "raytrace/geometry/spawn.hpp"
 
 namespace rt {
@@ -22,7 +23,6 @@ enum class Precision {
   // chooseArithmetic().
   Course,
 };
-enum class SphereMethod { Auto, Textbook, Robust };
 
 // What chooseArithmetic() is asked for (Auto and nothing: choose) and what it answers (all resolved).
 struct Arithmetic {

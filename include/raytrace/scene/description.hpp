@@ -66,7 +66,7 @@ struct Conventions {
   bool shadeDeepest = true;      // .cli: a ray at maxDepth that hits returns black (cs3451 §A.4)
 };
 
-enum class SceneLanguage { Pov, Cli };
+enum class SceneLanguage { Pov, Cs3451 };
 
 struct WriteDesc;
 

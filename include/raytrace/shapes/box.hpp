@@ -12,6 +12,7 @@ template <class T> class Box final : public Object<T> {
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
   std::optional<Aabb<T>> bounds() const override { return Aabb<T>{min_, max_}; }
+  const char* name() const override { return "Box"; }
 
  private:
   Vec3<T> min_, max_;

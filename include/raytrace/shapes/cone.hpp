@@ -18,6 +18,7 @@ template <class T> class Cone final : public Object<T> {
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
   std::optional<Aabb<T>> bounds() const override { return frame_.bounds(baseRadius_, capRadius_); }
+  const char* name() const override { return "Cone"; }
 
  private:
   Axial<T> frame_;

@@ -14,6 +14,7 @@ template <class T> class Cylinder final : public Object<T> {
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
   std::optional<Aabb<T>> bounds() const override { return frame_.bounds(radius_, radius_); }
+  const char* name() const override { return "Cylinder"; }
 
  private:
   Axial<T> frame_;

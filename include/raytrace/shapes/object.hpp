@@ -25,7 +25,7 @@ template <class T> class Object {
   // answers them in a loop the processor pipelines, without a call per ray. closerHits, for the objects
   // scanned in file order rather than through a hierarchy (Scene): best[i] becomes this object's hit on
   // rays[i] when one lies strictly inside `range` and strictly before best[i]; an equal t keeps the earlier
-  // object. blocking, for shadow rays, in the scan and in the hierarchy's leaves: the rays among `open` that
+  // object. occludes, for shadow rays, in the scan and in the hierarchy's leaves: the rays among `open` that
   // this object meets strictly inside ranges[i], as a bit mask (a sphere skips the hit record they would not
   // use).
   virtual void closerHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const {
@@ -33,18 +33,19 @@ template <class T> class Object {
       if (auto hit = intersect(rays[i], {range.min, best[i] ? best[i]->t : range.max})) best[i] = hit;
     }
   }
-  virtual uint32_t blocking(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const {
-    uint32_t blocked = 0;
+  virtual uint32_t occludes(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const {
+    uint32_t occluded = 0;
     for (uint32_t mask = open; mask; mask &= mask - 1) {
       const int i = __builtin_ctz(mask);
-      if (intersect(rays[i], ranges[i])) blocked |= 1u << i;
+      if (intersect(rays[i], ranges[i])) occluded |= 1u << i;
     }
-    return blocked;
+    return occluded;
   }
-  // blocking(), with this object made the blocker of each ray it meets; returns those rays.
-  uint32_t block(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open, const Object** blockers) const {
-    const uint32_t met = blocking(rays, ranges, open);
-    for (uint32_t mask = met; mask; mask &= mask - 1) blockers[__builtin_ctz(mask)] = this;
+  // occludes(), with this object made the occluder of each ray it meets; returns those rays.
+  uint32_t noteOccluder(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open,
+                        const Object** occluders) const {
+    const uint32_t met = occludes(rays, ranges, open);
+    for (uint32_t mask = met; mask; mask &= mask - 1) occluders[__builtin_ctz(mask)] = this;
     return met;
   }
 
@@ -58,6 +59,9 @@ template <class T> class Object {
 
   // World-space bounds, or nothing for unbounded shapes (planes), which stay outside any hierarchy.
   virtual std::optional<Aabb<T>> bounds() const = 0;
+
+  // The type name the course prints ("Sphere", "Plane", …; shapeName() for the description's shapes).
+  virtual const char* name() const = 0;
 
   const Material& material() const { return material_; }
   int id() const { return id_; }  // 1-based position in the scene file, as printrays shows it

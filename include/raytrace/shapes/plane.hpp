@@ -13,8 +13,9 @@ template <class T> class Plane final : public Object<T> {
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
   void closerHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const override;
-  uint32_t blocking(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const override;
+  uint32_t occludes(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const override;
   std::optional<Aabb<T>> bounds() const override { return std::nullopt; }
+  const char* name() const override { return "Plane"; }
 
  private:
   // Where the ray meets the plane; ±∞ or NaN when it runs parallel to it, which no interval surrounds.

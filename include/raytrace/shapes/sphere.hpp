@@ -1,7 +1,7 @@
 #pragma once
 
+#include "raytrace/geometry/roots.hpp"
 #include "raytrace/shapes/object.hpp"
-#include "raytrace/scene/arithmetic.hpp"
 
 namespace rt {
 
@@ -11,9 +11,10 @@ template <class T> class Sphere final : public Object<T> {
       : Object<T>(material, id), center_(center), radius_(radius), robust_(method != SphereMethod::Textbook) {}
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
-  uint32_t blocking(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const override;
+  uint32_t occludes(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const override;
   Vec3<T> normalAt(const Vec3<T>& point, const Hit<T>& hit) const override;
   std::optional<Aabb<T>> bounds() const override;
+  const char* name() const override { return "Sphere"; }
 
  private:
   // The roots of the ray's quadratic, by the method chosen for the scene.

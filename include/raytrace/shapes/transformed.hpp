@@ -16,6 +16,7 @@ template <class T> class Transformed final : public Object<T> {
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
   std::optional<Aabb<T>> bounds() const override;
+  const char* name() const override { return inner_->name(); }
 
  private:
   std::unique_ptr<Object<T>> inner_;

@@ -12,6 +12,7 @@ template <class T> class Triangle final : public Object<T> {
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
   std::optional<Aabb<T>> bounds() const override;
+  const char* name() const override { return "Triangle"; }
 
  private:
   Vec3<T> a_, ab_, ac_;  // a vertex and the two edges from it

@@ -23,11 +23,11 @@ void parallelFor(int count, int threads, const std::function<void(int)>& task);
 void startHelpers(int threads);
 
 // Objects per task where a scene's objects are made or bounded on several threads: enough work to pay for
-// handing it out, and blocks enough to share out.
-constexpr size_t kObjectBlock = 4096;
+// handing it out, and chunks enough to share out.
+constexpr size_t kObjectChunk = 4096;
 
-// parallelFor over the items [0, count) in blocks of `block` items: task(begin, end) for each block. For work
+// parallelFor over the items [0, count) in chunks of `chunk` items: task(begin, end) for each chunk. For work
 // per item too small to hand out one by one, as building a scene's objects.
-void parallelForBlocks(size_t count, size_t block, int threads, const std::function<void(size_t, size_t)>& task);
+void parallelForChunks(size_t count, size_t chunk, int threads, const std::function<void(size_t, size_t)>& task);
 
 }  // namespace rt

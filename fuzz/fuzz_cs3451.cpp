@@ -10,7 +10,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
-    const rt::SceneDesc scene = rt::parseCli(std::string(reinterpret_cast<const char*>(data), size), "fuzz.cli");
+    const rt::SceneDesc scene = rt::parseCs3451(std::string(reinterpret_cast<const char*>(data), size), "fuzz.cli");
     rt::fuzz::castRays(scene);
     for (const rt::WriteDesc& w : scene.writes) rt::fuzz::castRays(w.scene);
   } catch (const rt::ParseError&) {

@@ -1,0 +1,41 @@
+// What the command line can change about the pixels of a picture, and the threads that compute them.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "raytrace/accel/bvh.hpp"
+#include "raytrace/render/shading.hpp"
+#include "raytrace/scene/arithmetic.hpp"
+#include "raytrace/util/parallel.hpp"
+
+namespace rt {
+
+// -gi: Monte Carlo global illumination, the course's Program 6 model (docs/gi.md).
+struct GiOptions {
+  bool enabled = false;
+  std::vector<int> samples{64, 16};  // -gi_samples=N,N…: gather rays per hit at bounce 1, 2, …
+  std::optional<int> bounces;        // -gi_bounces=B: levels that gather (default: one per sample count)
+  uint64_t seed = 0;                 // --seed N: an independent render of the same scene
+
+  int bounceCount() const { return bounces ? *bounces : int(samples.size()); }
+  // Gather rays per hit at `bounce` (0 = the eye ray's hit); past the list, its last count.
+  int samplesAt(int bounce) const { return samples[std::min(size_t(bounce), samples.size() - 1)]; }
+};
+
+struct RenderOptions {
+  Arithmetic arithmetic;                         // --precision, --sphere, --offset
+  Brdf brdf = Brdf::BlinnPhong;                  // -altbrdf: Cook-Torrance (§c.2)
+  bool fresnel = false;                          // -fresnel: Schlick-weighted reflection and refraction (§c.5)
+  bool beers = false;                            // -beers: Beer's-law absorption instead of the ×C tint (§c.6)
+  bool normals = false;                          // -normals: colour = n/2 + 0.5, a debug view
+  int samples = 1;                               // -ss=N: N×N stratified eye rays per pixel (§c.12)
+  std::optional<int> depth;                      // --depth=N: deepest secondary ray, instead of the scene's
+  Hierarchy hierarchy = Hierarchy::Auto;         // --hierarchy: force the BVH on or off, for comparisons
+  int threads = defaultThreads();                // --threads N
+  GiOptions gi;                                  // -gi, -gi_samples, -gi_bounces, --seed
+};
+
+}  // namespace rt

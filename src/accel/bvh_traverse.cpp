@@ -1,0 +1,158 @@
+// The hierarchy's two queries, closest hit and any hit, for packets of rays.
+#include "raytrace/accel/bvh.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <type_traits>
+
+namespace rt {
+
+namespace {
+
+// The next representable value above t: the smallest limit that still admits a hit at exactly t. A hit's t is
+// positive, where this is one step of the bit pattern; std::nextafter covers the rest.
+template <class T> T nextUp(T t) {
+  using Bits = std::conditional_t<sizeof(T) == 4, uint32_t, uint64_t>;
+  constexpr T inf = std::numeric_limits<T>::infinity();
+  if (!(t > T(0) && t < inf)) return std::nextafter(t, inf);
+  Bits bits;
+  std::memcpy(&bits, &t, sizeof t);
+  ++bits;
+  std::memcpy(&t, &bits, sizeof t);
+  return t;
+}
+
+// The packet a query fills in, one per thread. A kernel computes on whole registers, so it may read the lanes
+// of rays that are not in the query: they hold what an earlier query left there, or zeros, and the results
+// are masked out. Zeroing a fresh packet for every query would cost more than the rest of a short one.
+// Queries never nest (objects do not query the scene), so one packet per thread is enough.
+template <class T> typename Bvh<T>::Packet& scratchPacket() {
+  thread_local typename Bvh<T>::Packet packet{};
+  return packet;
+}
+
+}  // namespace
+
+template <class T>
+void Bvh<T>::entries(const Node& node, const Packet& packet, T tMin, uint32_t rays, uint32_t (&childRays)[kWidth],
+                     T (&childEntry)[kWidth]) {
+  static const Kernel widest = kernels().front();
+  widest(node, packet, tMin, rays, childRays, childEntry);
+}
+
+template <class T>
+void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const {
+  if (nodes_.empty() || n == 0) return;
+  Packet& packet = scratchPacket<T>();
+  // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
+  for (int i = 0; i < n; ++i) packet.set(i, rays[i], best[i] ? nextUp(best[i]->t) : range.max);
+  // Children still to visit, each with the rays that enter it, nearest on top: the child the packet enters
+  // first is visited next, and the hits found there cut off the farther ones.
+  struct Pending {
+    T t;
+    uint32_t first, count, rays;
+  };
+  std::array<Pending, kMaxDepth * kWidth> stack;
+  int size = 0;
+  Pending current{range.min, 0, 0, (1u << n) - 1};
+  for (;;) {
+    if (current.count) {
+      for (uint32_t o = current.first; o < current.first + current.count; ++o) {
+        const Object<T>* object = objects_[o];
+        for (uint32_t mask = current.rays; mask; mask &= mask - 1) {
+          const int i = __builtin_ctz(mask);
+          auto hit = object->intersect(rays[i], Interval<T>{range.min, packet.tMax[i][0]});
+          if (hit && (!best[i] || hit->t < best[i]->t || object->id() < best[i]->object->id())) {
+            best[i] = hit;
+            std::fill_n(packet.tMax[i], kWidth, nextUp(hit->t));
+          }
+        }
+      }
+    } else {
+      const Node& node = nodes_[current.first];
+      uint32_t childRays[kWidth];
+      T childEntry[kWidth];
+      entries(node, packet, range.min, current.rays, childRays, childEntry);
+      const int base = size;
+      int nearest = -1;
+      for (int k = 0; k < node.size; ++k) {
+        if (!childRays[k]) continue;
+        int later = k;
+        if (nearest < 0 || childEntry[k] < childEntry[nearest]) std::swap(later, nearest);
+        if (later < 0) continue;
+        int at = size++;
+        while (at > base && stack[at - 1].t < childEntry[later]) stack[at] = stack[at - 1], --at;
+        stack[at] = {childEntry[later], node.first[later], node.count[later], childRays[later]};
+      }
+      if (nearest >= 0) {
+        current = {childEntry[nearest], node.first[nearest], node.count[nearest], childRays[nearest]};
+        continue;
+      }
+    }
+    // Next, the nearest pending child that some of its rays may enter before their closest hits.
+    bool found = false;
+    while (!found) {
+      if (size == 0) return;
+      current = stack[--size];
+      for (uint32_t mask = current.rays; mask && !found; mask &= mask - 1) {
+        found = !(current.t > packet.tMax[__builtin_ctz(mask)][0] * kFarScale<T>);
+      }
+    }
+  }
+}
+
+template <class T>
+void Bvh<T>::occluders(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active,
+                       const Object<T>** found) const {
+  if (nodes_.empty()) return;
+  Packet& packet = scratchPacket<T>();
+  // Every ray has its own tMin; the smallest, tested against all, only admits more boxes, whose objects are
+  // then tested with each ray's own range.
+  T tMin = std::numeric_limits<T>::infinity();
+  for (uint32_t mask = active; mask; mask &= mask - 1) {
+    const int i = __builtin_ctz(mask);
+    packet.set(i, rays[i], ranges[i].max);
+    tMin = std::min(tMin, ranges[i].min);
+  }
+  struct Pending {
+    uint32_t node, rays;
+  };
+  std::array<Pending, kMaxDepth * kWidth> stack;
+  int size = 0;
+  stack[size++] = {0, active};
+  while (size > 0) {
+    const Pending p = stack[--size];
+    const uint32_t live = p.rays & active;  // those not occluded yet
+    if (!live) continue;
+    const Node& node = nodes_[p.node];
+    uint32_t childRays[kWidth];
+    T childEntry[kWidth];
+    entries(node, packet, tMin, live, childRays, childEntry);
+    for (int k = 0; k < node.size; ++k) {
+      if (!childRays[k]) continue;
+      if (!node.count[k]) {
+        stack[size++] = {node.first[k], childRays[k]};
+        continue;
+      }
+      for (uint32_t o = node.first[k]; o < node.first[k] + node.count[k]; ++o) {
+        active &= ~objects_[o]->noteOccluder(rays, ranges, childRays[k] & active, found);
+        if (!active) return;
+      }
+    }
+  }
+}
+
+template void Bvh<float>::entries(const Node&, const Packet&, float, uint32_t, uint32_t (&)[kWidth],
+                                  float (&)[kWidth]);
+template void Bvh<double>::entries(const Node&, const Packet&, double, uint32_t, uint32_t (&)[kWidth],
+                                   double (&)[kWidth]);
+template void Bvh<float>::closestHits(const Ray<float>*, int, Interval<float>, std::optional<Hit<float>>*) const;
+template void Bvh<double>::closestHits(const Ray<double>*, int, Interval<double>, std::optional<Hit<double>>*) const;
+template void Bvh<float>::occluders(const Ray<float>*, const Interval<float>*, uint32_t,
+                                    const Object<float>**) const;
+template void Bvh<double>::occluders(const Ray<double>*, const Interval<double>*, uint32_t,
+                                     const Object<double>**) const;
+
+}  // namespace rt

@@ -1,0 +1,16 @@
+#include "raytrace/util/format.hpp"
+
+#include <cstdio>
+
+namespace rt {
+
+std::string fixed4(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4f", v);
+  return buf;
+}
+
+std::string bare(const glm::dvec3& v) { return fixed4(v.x) + " " + fixed4(v.y) + " " + fixed4(v.z); }
+std::string braces(const glm::dvec3& v) { return "{" + bare(v) + "}"; }
+
+}  // namespace rt
