@@ -106,6 +106,16 @@ RenderOptions parseFlag(const std::string& flag, RenderOptions o) {
     o.gi.bounces = parseInt(p, "-gi_bounces", 0, kMaxBounces);
     return o;
   }
+  if (const char* p = value("--gi-adaptive")) {
+    errno = 0;
+    char* end = nullptr;
+    const double e = std::strtod(p, &end);
+    if (*p == '\0' || *end != '\0' || errno == ERANGE || !(e > 0 && e <= 1)) {
+      throw Error(std::string("--gi-adaptive must be a number above 0 and at most 1, found '") + p + "'");
+    }
+    o.gi.adaptive = float(e);
+    return o;
+  }
   if (const char* p = value("--seed")) {
     o.gi.seed = uint64_t(parseInt(p, "--seed", 0, std::numeric_limits<int>::max()));
     return o;

@@ -72,6 +72,8 @@ std::string usage() {
       "  -gi_bounces=B                   gathering levels (default: one per sample count; past the list,\n"
       "                                  its last count)\n"
       "  --seed N                        -gi's random numbers (default 0); same image for any threads\n"
+      "  --gi-adaptive=E                 the first bounce gathers in rounds and stops once the standard\n"
+      "                                  error of its light is below E (e.g. 0.01); -gi_samples caps it\n"
       "  -normals                        colour each hit by its normal (debug)\n"
       "  --threads N                     load, build and render on N threads (default: every core); same\n"
       "                                  scene and image for any N\n"
