@@ -88,7 +88,7 @@ rt::SceneDesc field(int n) {
 // Eye rays of a 64×48 picture: the closest-hit query that dominates a render.
 void closestHit(benchmark::State& state, rt::Hierarchy hierarchy) {
   const rt::SceneDesc desc = field(int(state.range(0)));
-  const rt::Scene<float> scene(desc, {rt::Precision::Float, rt::SphereMethod::Robust}, hierarchy);
+  const rt::Scene<float> scene(desc, {rt::Tier::Float, rt::SphereMethod::Robust}, hierarchy);
   const rt::Camera<float> camera(desc.camera, 64, 48);
   int pixel = 0;
   for (auto _ : state) {
@@ -105,7 +105,7 @@ BENCHMARK(BM_ClosestHitBvh)->DenseRange(1, 16)->Arg(32)->Arg(64)->Arg(1000)->Arg
 // Shadow rays from the eye-ray hits toward a light: the any-hit query.
 void BM_OccludedBvh(benchmark::State& state) {
   const rt::SceneDesc desc = field(int(state.range(0)));
-  const rt::Scene<float> scene(desc, {rt::Precision::Float, rt::SphereMethod::Robust}, rt::Hierarchy::Always);
+  const rt::Scene<float> scene(desc, {rt::Tier::Float, rt::SphereMethod::Robust}, rt::Hierarchy::Always);
   const rt::Camera<float> camera(desc.camera, 64, 48);
   std::vector<std::pair<rt::Ray<float>, rt::Interval<float>>> shadows;
   for (int y = 0; y < 48; ++y) {
@@ -127,7 +127,7 @@ BENCHMARK(BM_OccludedBvh)->Arg(1000)->Arg(100000);
 // Building the hierarchy, per object.
 void BM_BuildBvh(benchmark::State& state) {
   const rt::SceneDesc desc = field(int(state.range(0)));
-  const rt::Scene<float> scene(desc, {rt::Precision::Float, rt::SphereMethod::Robust}, rt::Hierarchy::Never);
+  const rt::Scene<float> scene(desc, {rt::Tier::Float, rt::SphereMethod::Robust}, rt::Hierarchy::Never);
   std::vector<const rt::Object<float>*> objects;
   for (const auto& o : scene.objects()) objects.push_back(o.get());
   for (auto _ : state) benchmark::DoNotOptimize(rt::Bvh<float>(objects));

@@ -11,7 +11,7 @@ namespace rt::fuzz {
 
 inline void castRays(const SceneDesc& desc) {
   const Arithmetic arithmetic = chooseArithmetic(desc);
-  withPrecision(arithmetic.precision, [&](auto tag) {
+  withPrecision(arithmetic.tier, [&](auto tag) {
     using T = decltype(tag);
     const Scene<T> scene(desc, arithmetic);
     const Camera<T> camera(desc.camera, 3, 3);

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Speed-vs-accuracy chart of the real renderer (stability.md §3, chart B).
+"""Speed-vs-accuracy chart of the real renderer (docs/reference/stability.md §3, chart B).
 
     python3 tools/speed_accuracy.py build/raytrace
 
@@ -11,7 +11,7 @@ resources/speed-vs-accuracy.csv and resources/speed-vs-accuracy.png. For every c
 - error against the reference (double, robust, relative offset, -ss=8, --depth=32): RMSE of the 8-bit
   images in units of full scale, and the share of pixels with a channel off by more than 1/255;
 - the same two numbers against the baseline arithmetic at the SAME samples and depth, so that precision,
-  sphere-formula and offset knobs show their numerical error alone (stability.md §3, last paragraph).
+  sphere-formula and offset knobs show their numerical error alone (docs/reference/stability.md §3, last paragraph).
 """
 import argparse
 import csv
@@ -35,14 +35,16 @@ SCENES = [
 BASE = {"precision": "double", "sphere": "robust", "offset": "relative", "ss": "4", "depth": "8",
         "hierarchy": "auto"}
 REFERENCE = dict(BASE, ss="8", depth="32")
-# One knob at a time (stability.md §3). Float is paired with each sphere formula and with the offsets whose
-# failure float exposes first.
+# One knob at a time (docs/reference/stability.md §3). Float is paired with each sphere formula and with the offsets
+# whose failure float exposes first.
 KNOBS = [
     ("baseline", {}),
+    # What a user gets without flags: chooseArithmetic()'s tier, sphere test and offset for the scene.
+    ("default", {"precision": "auto", "sphere": "auto", "offset": "auto"}),
     ("precision", {"precision": "float"}),
     ("precision", {"precision": "float", "sphere": "textbook"}),
     ("sphere", {"sphere": "textbook"}),
-    # The course tier: the course reference's float arithmetic with its 0.001 offsets (precision.hpp).
+    # The course tier: the course reference's float arithmetic with its 0.001 offsets (scene/arithmetic.hpp).
     ("precision", {"precision": "course", "offset": "course"}),
     ("offset", {"offset": "course"}),
     ("offset", {"offset": "normal"}),
@@ -60,14 +62,14 @@ KNOBS = [
     # These scenes are below the hierarchy's crossover, so auto means none: forcing one must only move time.
     ("hierarchy", {"hierarchy": "always"}),
 ]
-COLOURS = {"baseline": "black", "precision": "tab:red", "sphere": "tab:purple", "offset": "tab:orange",
+COLOURS = {"baseline": "black", "default": "tab:pink", "precision": "tab:red", "sphere": "tab:purple", "offset": "tab:orange",
            "samples": "tab:blue", "depth": "tab:green", "hierarchy": "tab:brown"}
 
 
 def flags(config):
-    return [f"--precision={config['precision']}", f"--sphere={config['sphere']}",
-            f"--offset={config['offset']}", f"-ss={config['ss']}", f"--depth={config['depth']}",
-            f"--hierarchy={config['hierarchy']}"]
+    offset = [] if config["offset"] == "auto" else [f"--offset={config['offset']}"]  # auto: the tier's own
+    return [f"--precision={config['precision']}", f"--sphere={config['sphere']}"] + offset + [
+        f"-ss={config['ss']}", f"--depth={config['depth']}", f"--hierarchy={config['hierarchy']}"]
 
 
 def label(config):

@@ -25,7 +25,7 @@ template <class T> double area(const Aabb<T>& b) {
 }
 
 // The object's box, grown so that no hit its intersect() reports can fall outside it. A computed t is off by
-// at most 1e-3 of the object's size (chooseArithmetic's budget, stability.md §1.1), and the corners
+// at most 1e-3 of the object's size (chooseArithmetic's budget, docs/reference/stability.md §1.1), and the corners
 // themselves are rounded; both margins are tiny next to the box.
 template <class T> Aabb<T> paddedBounds(const Object<T>& object) {
   Aabb<T> b = *object.bounds();

@@ -73,7 +73,7 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
   for (const LightDesc& l : desc.lights) lights_.push_back(Light<T>{Vec3<T>(l.position), l.color});
   // The course tier does what its reference does: every transformed object is intersected on the transformed
   // ray, with the matrix composed in T from the file's steps.
-  const bool course = arithmetic.precision == Precision::Course;
+  const bool course = arithmetic.tier == Tier::Course;
   const size_t n = desc.objects.size();
   objects_.resize(n);
   // Unbounded objects (planes, or boxes overflowing T) have no box to put in a hierarchy; they are always
@@ -135,7 +135,7 @@ void Scene<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::op
 }
 
 template <class T> Vec3<T> Scene<T>::hitPoint(const Ray<T>& ray, const Hit<T>& hit) const {
-  return arithmetic_.precision == Precision::Course ? ray.at(hit.t) : hit.point;
+  return arithmetic_.tier == Tier::Course ? ray.at(hit.t) : hit.point;
 }
 
 template <class T>

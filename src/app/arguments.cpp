@@ -66,9 +66,9 @@ RenderOptions parseFlag(const std::string& flag, RenderOptions o) {
   };
   if (flag == "-sds") return o;  // the course's "use a hierarchy": ours decides per scene (Scene, Hierarchy)
   if (const char* p = value("--precision")) {
-    o.arithmetic.precision = choice<Precision>("--precision", p,
-                                               {{"float", Precision::Float}, {"double", Precision::Double},
-                                                {"course", Precision::Course}, {"auto", Precision::Auto}});
+    o.arithmetic.tier = choice<Tier>("--precision", p,
+                                               {{"float", Tier::Float}, {"double", Tier::Double},
+                                                {"course", Tier::Course}, {"auto", Tier::Auto}});
     return o;
   }
   if (const char* p = value("--sphere")) {

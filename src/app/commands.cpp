@@ -17,7 +17,7 @@ namespace rt {
 namespace {
 
 constexpr int kMaxImageSide = 32768;  // per side; larger is certainly a typo
-constexpr int kDefaultSide = 300;     // the CS 3451 starter's size(300, 300) (cs3451-course.md §A.2)
+constexpr int kDefaultSide = 300;     // the CS 3451 starter's size(300, 300) (docs/reference/cs3451.md §A.2)
 
 struct Command {
   const char* name;
@@ -85,30 +85,34 @@ std::string usage() {
   return text;
 }
 
-int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  if (args.empty()) throw Error("no command given\n" + usage());
-  if (args[0] == "--help" || args[0] == "-h") {
-    out << usage();
-    return 0;
-  }
-  const Command* command = nullptr;
-  for (const Command& c : commands()) {
-    if (args[0] == c.name) command = &c;
-  }
-  if (!command) throw Error("unknown command '" + args[0] + "'\n" + usage());
+namespace {
 
-  // Flags start with '-' and a letter; anything else (a negative number too) is positional.
+const Command& findCommand(const std::vector<std::string>& args) {
+  if (args.empty()) throw Error("no command given\n" + usage());
+  for (const Command& c : commands()) {
+    if (args[0] == c.name) return c;
+  }
+  throw Error("unknown command '" + args[0] + "'\n" + usage());
+}
+
+// The words after the command: flags, which start with '-' and a letter, and the positional arguments
+// (a negative number too).
+struct Words {
   std::vector<std::string> positional;
   RenderOptions options;
-  bool stats = false, quiet = false;
+  bool stats = false, quiet = false;  // not render options: they say how a run is watched
+};
+
+Words readWords(const std::vector<std::string>& args) {
+  Words words;
   for (size_t i = 1; i < args.size(); ++i) {
     std::string a = args[i];
-    if (a == "--stats") {  // not render options: they say how a run is watched
-      stats = true;
+    if (a == "--stats") {
+      words.stats = true;
       continue;
     }
     if (a == "--quiet") {
-      quiet = true;
+      words.quiet = true;
       continue;
     }
     if (a == "--threads" || a == "--seed") {  // also written --threads=N, --seed=N
@@ -116,39 +120,58 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
       a += "=" + args[++i];
     }
     if (a.size() > 1 && a[0] == '-' && (std::isalpha(static_cast<unsigned char>(a[1])) || a[1] == '-')) {
-      options = parseFlag(a, options);
+      words.options = parseFlag(a, words.options);
     } else {
-      positional.push_back(a);
+      words.positional.push_back(a);
     }
   }
-  const bool defaultSize = command->sizeOptional && positional.size() == 1;
-  if (positional.size() != size_t(1 + command->numbers) && !defaultSize) {
-    throw Error(std::string(command->name) + " takes " + (command->sizeOptional ? "1 or " : "") +
-                std::to_string(1 + command->numbers) + " arguments, found " + std::to_string(positional.size()) +
-                "\nusage: " + commandUsage(*command));
+  return words;
+}
+
+// The invocation the words make, all but the scene, checked before the scene is read.
+Invocation invocation(const Command& command, const Words& words, std::ostream& err) {
+  const std::vector<std::string>& positional = words.positional;
+  const bool defaultSize = command.sizeOptional && positional.size() == 1;
+  if (positional.size() != size_t(1 + command.numbers) && !defaultSize) {
+    throw Error(std::string(command.name) + " takes " + (command.sizeOptional ? "1 or " : "") +
+                std::to_string(1 + command.numbers) + " arguments, found " + std::to_string(positional.size()) +
+                "\nusage: " + commandUsage(command));
   }
-  if (stats && std::string(command->name) != "render") throw Error("--stats is for the render command only");
+  if (words.stats && std::string(command.name) != "render") throw Error("--stats is for the render command only");
   Invocation inv;
-  inv.options = options;
-  if (!quiet && isatty(STDERR_FILENO)) inv.progress = &err;  // only render() shows it, and only to a person
-  if (stats) inv.stats = &err;
+  inv.options = words.options;
+  if (!words.quiet && isatty(STDERR_FILENO)) inv.progress = &err;  // only render() shows it, and only to a person
+  if (words.stats) inv.stats = &err;
   if (defaultSize) {
     inv.width = inv.height = kDefaultSide;
-  } else if (command->numbers >= 2) {
+  } else if (command.numbers >= 2) {
     inv.width = parseInt(positional[1], "width", 1, kMaxImageSide);
     inv.height = parseInt(positional[2], "height", 1, kMaxImageSide);
   }
-  if (command->numbers == 4) {
+  if (command.numbers == 4) {
     inv.x = parseInt(positional[3], "pixel x", 0, inv.width - 1);
     inv.y = parseInt(positional[4], "pixel y", 0, inv.height - 1);
   }
+  return inv;
+}
+
+}  // namespace
+
+int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+    out << usage();
+    return 0;
+  }
+  const Command& command = findCommand(args);
+  const Words words = readWords(args);
+  Invocation inv = invocation(command, words, err);
   // The image commands render on all their threads: the helpers start while the file is read.
-  if (command->numbers == 2) startHelpers(options.threads);
+  if (command.numbers == 2) startHelpers(inv.options.threads);
   Stopwatch watch;
-  inv.scene = loadScene(positional[0], options.threads);
+  inv.scene = loadScene(words.positional[0], inv.options.threads);
   inv.loadSeconds = watch.lap();
   for (const std::string& w : inv.scene.warnings) err << w << "\n";
-  return command->run(inv, out);
+  return command.run(inv, out);
 }
 
 }  // namespace rt

@@ -14,11 +14,8 @@ int main(int argc, char** argv) {
   // after, instead of the signal killing us and leaving its temporary file behind.
   std::signal(SIGXFSZ, SIG_IGN);
   // One run takes and gives back memory phase after phase: a file's parts, then the scene, its hierarchy, the
-  // image and its PNG. By default glibc hands blocks from 128 KiB on back to the kernel at once, and the next
-  // phase faults fresh pages in again: about 2 µs each on this machine, and one at a time however many threads
-  // ask. Blocks up to 32 MiB (glibc's largest threshold), and as much free memory at the top of the heap, are
-  // kept and reused instead: spheres20k takes 3830 page faults instead of 4580 on one thread and 4450 instead
-  // of 5510 on two. Larger blocks still go back, so the peak of a million spheres stays at 0.54 GB.
+  // image and its PNG. Freed blocks up to 32 MiB (glibc's largest threshold) are kept for the next phase
+  // instead of being faulted in again (docs/performance-notes.md, "Memory kept between phases").
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 32 << 20);
   try {

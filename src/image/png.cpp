@@ -58,9 +58,8 @@ struct Deflater {
 // segments concatenate into one valid deflate stream (RFC 1951 §3.2.3; the technique of pigz).
 Segment compress(const unsigned char* rgb, size_t stride, int first, int last, bool final) {
   // zlib's 256 KiB of state first, the segment's output after it: freed below the output, which is kept, the
-  // state's memory is what the next segment's state reuses. Taken the other way round, the next output would
-  // take it and every state fresh pages at the top of the heap (1980 page faults for the small bench scene
-  // instead of 1180).
+  // state's memory is what the next segment's state reuses, not fresh pages (docs/performance-notes.md,
+  // "PNG segments").
   Deflater deflater;
   z_stream& z = deflater.z;
   Segment s;

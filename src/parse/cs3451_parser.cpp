@@ -92,7 +92,7 @@ class CliParser {
   CliParser(std::string_view text, const std::string& file) : lines_(text, file) {
     scene_.file = file;
     scene_.language = SceneLanguage::Cs3451;
-    // The conventions that reproduce the course's reference images (cs3451-course.md §A.4).
+    // The conventions that reproduce the course's reference images (docs/reference/cs3451.md §A.4).
     Conventions& c = scene_.conventions;
     c.toByte = Conventions::ToByte::Truncate;  // §A.4.2: (int)(255·c), Processing's colorCalc
     c.clampEachBounce = true;                   // §A.4.5 intermediate clamping

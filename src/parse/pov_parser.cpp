@@ -2,18 +2,15 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <iterator>
-#include <new>
-#include <optional>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 #include "raytrace/util/limits.hpp"
 #include "raytrace/util/parallel.hpp"
+#include "raytrace/parse/pov_parts.hpp"
 #include "raytrace/parse/tokenizer.hpp"
 
 namespace rt {
@@ -26,27 +23,8 @@ std::string num(double v) {
   return buf;
 }
 
-// Fewer bytes than an object takes in the files we know: the benchmark's spheres take 160, the course's
-// objects more (each has a pigment and a finish). A denser file just grows its array once or twice more.
-constexpr size_t kTypicalObjectBytes = 128;
-
 // The shortest an object can be written: `plane{<0,1,0>,0}`.
 constexpr size_t kMinObjectBytes = 16;
-
-// Texts of at least this size are large: worth a thread as a part of a file (about 2 ms of reading), and
-// worth reserving room for their objects.
-constexpr size_t kMinPartBytes = size_t(256) << 10;
-
-// The objects to reserve room for in a text of `bytes`: as many as a typical file of this size holds, so that a
-// large file does not copy its objects into ever larger arrays as it is read (pages are only taken once
-// objects fill them). A power of two, so that the array still doubles where parseObject() checks the memory
-// (powers of two): it never grows past a check that would have stopped it. None for a small text.
-size_t objectRoom(size_t bytes) {
-  if (bytes < kMinPartBytes) return 0;
-  size_t room = 1;
-  while (room < bytes / kTypicalObjectBytes) room *= 2;
-  return room;
-}
 
 class PovParser {
  public:
@@ -65,12 +43,7 @@ class PovParser {
     return std::move(scene_);  // parse() is the parser's last act
   }
 
-  // A part of a file: its statements, and how many of them were cameras.
-  struct Part {
-    SceneDesc scene;
-    int cameras;
-  };
-  Part part() {
+  PovPart part() {
     statements();
     return {std::move(scene_), cameras_};
   }
@@ -392,101 +365,6 @@ class PovParser {
   int cameras_ = 0;
 };
 
-// Line ends (LF, CRLF, lone CR) in `text`, as the tokenizer counts them. LFs are counted in runs of 255
-// bytes, whose count fits in a byte: a loop the compiler vectorizes, 2.5 times as fast as std::count.
-int lineEnds(std::string_view text) {
-  size_t n = 0;
-  for (size_t run = 0; run < text.size(); run += 255) {
-    const size_t end = std::min(text.size(), run + 255);
-    unsigned char lf = 0;
-    for (size_t i = run; i < end; ++i) lf += text[i] == '\n';
-    n += lf;
-  }
-  for (size_t at = text.find('\r'); at != std::string_view::npos; at = text.find('\r', at + 1)) {
-    if (at + 1 == text.size() || text[at + 1] != '\n') ++n;
-  }
-  return int(n);
-}
-
-// Whether a statement keyword opens the line that starts at `at`, after blanks.
-bool statementStartsLine(std::string_view text, size_t at) {
-  while (at < text.size() && (text[at] == ' ' || text[at] == '\t')) ++at;
-  for (const std::string_view keyword :
-       {"camera", "light_source", "sphere", "plane", "triangle", "box", "cone", "cylinder"}) {
-    if (text.compare(at, keyword.size(), keyword) == 0) {
-      const size_t after = at + keyword.size();
-      return after == text.size() || !(std::isalnum(static_cast<unsigned char>(text[after])) || text[after] == '_');
-    }
-  }
-  return false;
-}
-
-// Where to cut the text into about `count` parts of equal size: each cut is at the start of a line that a
-// statement keyword opens, the first after its even share. Some may fall inside a statement or a comment
-// after all; parseParts() finds out.
-std::vector<size_t> partStarts(std::string_view text, int count) {
-  std::vector<size_t> starts{0};
-  for (int k = 1; k < count; ++k) {
-    const size_t from = std::max(starts.back() + 1, text.size() / size_t(count) * size_t(k));
-    for (size_t at = text.find_first_of("\n\r", from); at != std::string_view::npos;
-         at = text.find_first_of("\n\r", at + 1)) {
-      const size_t line = at + 1;  // a CR followed by LF does not end the line; its LF does
-      if (text[at] == '\r' && line < text.size() && text[line] == '\n') continue;
-      if (statementStartsLine(text, line)) {
-        starts.push_back(line);
-        break;
-      }
-    }
-  }
-  return starts;
-}
-
-// Reads the parts at once, as if each were a file. Together they mean what the whole file means when every
-// part reads to its end without an error, so that each cut lay between two statements and outside any comment
-// (a comment cannot hide a cut: a line comment ends before it, and a block comment left open is an error), and
-// when the file has one camera (a second camera statement changes the first's). Otherwise nothing, and the
-// whole file is read in one piece, for its exact error or meaning.
-std::optional<SceneDesc> parseParts(std::string_view text, const std::string& file,
-                                    const std::vector<size_t>& starts, int threads) {
-  const size_t n = starts.size();
-  std::vector<int> firstLines{1};
-  for (size_t k = 1; k < n; ++k) {
-    firstLines.push_back(firstLines.back() + lineEnds(text.substr(starts[k - 1], starts[k] - starts[k - 1])));
-  }
-  std::vector<std::optional<PovParser::Part>> parts(n);
-  parallelFor(int(n), threads, [&](int k) {
-    const size_t begin = starts[size_t(k)], end = size_t(k) + 1 < n ? starts[size_t(k) + 1] : text.size();
-    try {
-      // The first part's list becomes the scene's, with room for the objects of the whole text, so that only
-      // the other parts' objects are copied into it. The room of every part together is within the memory
-      // parsePov() found for the whole text.
-      const size_t room = objectRoom(k == 0 ? text.size() : end - begin);
-      parts[size_t(k)] = PovParser(text.substr(begin, end - begin), file, room, firstLines[size_t(k)], n).part();
-    } catch (const ParseError&) {  // reported by the reading of the whole file
-    } catch (const std::bad_alloc&) {  // so is a lack of memory, where the file's own checks see it
-    }
-  });
-  int cameras = 0;
-  size_t objects = 0;
-  for (const auto& part : parts) {
-    if (!part) return std::nullopt;
-    cameras += part->cameras;
-    objects += part->scene.objects.size();
-  }
-  if (cameras != 1) return std::nullopt;
-  SceneDesc scene = std::move(parts[0]->scene);
-  scene.objects.reserve(objects);
-  for (size_t k = 1; k < n; ++k) {
-    SceneDesc& s = parts[k]->scene;
-    if (parts[k]->cameras == 1) scene.camera = s.camera;
-    scene.lights.insert(scene.lights.end(), s.lights.begin(), s.lights.end());
-    std::move(s.objects.begin(), s.objects.end(), std::back_inserter(scene.objects));
-    std::move(s.warnings.begin(), s.warnings.end(), std::back_inserter(scene.warnings));
-    s = SceneDesc();  // its memory back before the next part's objects are moved
-  }
-  return scene;
-}
-
 }  // namespace
 
 SceneDesc parsePov(std::string_view text, const std::string& file, int threads) {
@@ -503,7 +381,10 @@ SceneDesc parsePov(std::string_view text, const std::string& file, int threads) 
     // helper threads start while the cuts are found.
     const int count = int(std::min<size_t>(size_t(threads), text.size() / kMinPartBytes));
     startHelpers(count);
-    if (auto scene = parseParts(text, file, partStarts(text, count), threads)) return std::move(*scene);
+    const auto readPart = [&](std::string_view part, int firstLine, size_t partRoom, std::uint64_t parts) {
+      return PovParser(part, file, partRoom, firstLine, parts).part();
+    };
+    if (auto scene = parseParts(text, partStarts(text, count), threads, readPart)) return std::move(*scene);
   }
   // Room only where memory allows, as parseObject()'s checks would.
   const bool roomFits = memoryShortage("", room * sizeof(ObjectDesc), available).empty();

@@ -46,7 +46,7 @@ FileText readFile(const std::string& path, int threads) {
   const size_t size = size_t(st.st_size);
   FileText text(size);
   // Pieces read on the threads at once. Most of a read's time is the kernel faulting in the fresh pages it
-  // copies into, one at a time per thread: 163 MB took 67-104 ms on one thread and 37-52 ms on two.
+  // copies into, one at a time per thread (docs/performance-notes.md, "Reading a file on threads").
   std::vector<size_t> got((size + kReadPiece - 1) / kReadPiece);
   parallelForChunks(size, kReadPiece, threads, [&](size_t begin, size_t end) {
     size_t& done = got[begin / kReadPiece];

@@ -23,8 +23,9 @@ constexpr int kTile = 32;
 template <class Store>
 void renderRows(const SceneDesc& desc, int width, int height, const RenderOptions& options,
                 const RenderMonitor& monitor, const Store& store) {
-  const Arithmetic arithmetic = chooseArithmetic(desc, options.arithmetic);
-  withPrecision(arithmetic.precision, [&](auto tag) {
+  const Arithmetic arithmetic =
+      chooseArithmetic(desc, options.arithmetic, View{width * options.samples, height * options.samples});
+  withPrecision(arithmetic.tier, [&](auto tag) {
     using T = decltype(tag);
     Stopwatch watch;
     const Scene<T> scene(desc, arithmetic, options.hierarchy, options.threads);
@@ -35,8 +36,8 @@ void renderRows(const SceneDesc& desc, int width, int height, const RenderOption
     // tests, never an answer), so the image is the same for any thread count. One tracer per tile: a tile's
     // shadow rays are coherent, and its cache is its own. Tiles go column by column, so that threads work on
     // tiles one above another, whose rows lie on pages of their own: side by side, they would take the same
-    // fresh pages of the image at once, and the kernel would fault each twice (the small bench scene at
-    // 1280×960 on two threads: 1350-1860 page faults in all instead of 1240).
+    // fresh pages of the image at once, and the kernel would fault each twice (docs/performance-notes.md,
+    // "Tile order").
     const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
     std::mutex countsMutex;
     ProgressMeter progress(monitor.progress, int64_t(width) * height, options.samples * options.samples);

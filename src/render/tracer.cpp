@@ -40,8 +40,8 @@ float specularBound(const Material& m, Brdf brdf) {
 
 }  // namespace
 
-// Recursion cutoff (stability.md F12). A secondary ray is skipped when its accumulated weight w (the product
-// of the weights and tints from the eye down to it) times the brightest colour its subtree could return,
+// Recursion cutoff (docs/reference/stability.md F12). A secondary ray is skipped when its accumulated weight w (the
+// product of the weights and tints from the eye down to it) times the brightest colour its subtree could return,
 // bound_[levels left], is below cutoff_ = (½/255) / 2^(maxDepth+1). A tree has fewer than 2^(maxDepth+1) rays,
 // so all the skipped subtrees of one eye ray together move its colour by less than half an 8-bit step: the
 // byte changes only if the exact value lay within that distance of a rounding boundary. bound_ is built
@@ -209,7 +209,7 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
     record->normal = glm::dvec3(hit.normal);
     record->t = double(hit.t);
   }
-  // The .cli rule: the deepest ray that hits returns black (cs3451-course.md §A.4).
+  // The .cli rule: the deepest ray that hits returns black (docs/reference/cs3451.md §A.4).
   if (path.depth == conventions_.maxDepth && !conventions_.shadeDeepest) return Color(0);
   if (options_.normals) return Color(hit.normal) * 0.5f + 0.5f;
 

@@ -9,118 +9,31 @@ namespace rt {
 
 namespace {
 
-double maxAbs(const glm::dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
-
-// The smallest length a shape's silhouette depends on; planes have none.
-double smallestFeature(const ShapeDesc& shape) {
-  return std::visit(
-      [](const auto& s) -> double {
-        using S = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<S, SphereDesc>) {
-          return s.radius;
-        } else if constexpr (std::is_same_v<S, TriangleDesc>) {
-          return std::min({glm::length(s.b - s.a), glm::length(s.c - s.b), glm::length(s.a - s.c)});
-        } else if constexpr (std::is_same_v<S, BoxDesc>) {
-          const glm::dvec3 e = glm::abs(s.max - s.min);
-          return std::min({e.x, e.y, e.z});
-        } else if constexpr (std::is_same_v<S, ConeDesc>) {
-          return std::min(glm::length(s.cap - s.base), std::max(s.baseRadius, s.capRadius));
-        } else if constexpr (std::is_same_v<S, CylinderDesc>) {
-          return std::min(glm::length(s.cap - s.base), s.radius);
-        } else {
-          return std::numeric_limits<double>::infinity();
-        }
-      },
-      shape);
-}
-
-// A ball around the shape, in its own space. A plane is unbounded; its point nearest the origin stands in.
-struct Ball {
-  glm::dvec3 center;
-  double radius;
-};
-Ball boundingBall(const ShapeDesc& shape) {
-  return std::visit(
-      [](const auto& s) -> Ball {
-        using S = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<S, SphereDesc>) {
-          return {s.center, s.radius};
-        } else if constexpr (std::is_same_v<S, PlaneDesc>) {
-          return {s.distance * glm::normalize(s.normal), 0};
-        } else if constexpr (std::is_same_v<S, TriangleDesc>) {
-          const glm::dvec3 m = (s.a + s.b + s.c) / 3.0;
-          return {m, std::max({glm::length(s.a - m), glm::length(s.b - m), glm::length(s.c - m)})};
-        } else if constexpr (std::is_same_v<S, BoxDesc>) {
-          return {(s.min + s.max) / 2.0, glm::length(s.max - s.min) / 2};
-        } else if constexpr (std::is_same_v<S, ConeDesc>) {
-          return {(s.base + s.cap) / 2.0, glm::length(s.cap - s.base) / 2 + std::max(s.baseRadius, s.capRadius)};
-        } else {
-          return {(s.base + s.cap) / 2.0, glm::length(s.cap - s.base) / 2 + s.radius};
-        }
-      },
-      shape);
-}
-
-// How much a transform can stretch (largest column norm) and shrink (smallest column norm) lengths. Enough
-// for a budget: it bounds the world-space extents by a small factor.
-struct Stretch {
-  double most, least;
-};
-Stretch stretch(const glm::dmat4& m) {
-  double most = 0, least = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 3; ++i) {
-    const double n = glm::length(glm::dvec3(m[i]));
-    most = std::max(most, n);
-    least = std::min(least, n);
-  }
-  return {most, least};
-}
-
-double budget(const SceneScale& s) {
-  if (!(s.smallestFeature > 0) || std::isinf(s.smallestFeature)) return s.extent;
-  return s.extent / s.smallestFeature;
+bool courseTierSound(const SceneDesc& scene, const SceneScale& s, const TierDomain& d) {
+  return scene.language == SceneLanguage::Pov && s.smallestFeature >= kCourseMinFeature &&
+         s.extent <= kCourseMaxExtent && d.textbookPixels <= kVisiblePixels &&
+         d.textbookHitError <= kCourseEpsilon / 4 && d.offsetShadowPixels <= kVisiblePixels &&
+         d.offsetRefractionPixels <= kVisiblePixels && smallestGap(scene) >= 2 * kCourseEpsilon;
 }
 
 }  // namespace
 
-SceneScale sceneScale(const SceneDesc& scene) {
-  // Two lengths set the error: coordinates, whose rounding is ε relative to their magnitude, and the distance
-  // a ray travels from its origin (the camera or a surface) to what it hits, which the sphere's t error
-  // scales with (stability.md F1). The box around the camera and every bounded object bounds the second by
-  // its diagonal. Lights are only targets of rays, so they do not count.
-  double largest = maxAbs(scene.camera.location);
-  glm::dvec3 lo = scene.camera.location, hi = scene.camera.location;
-  double smallest = std::numeric_limits<double>::infinity();
-  for (const ObjectDesc& o : scene.objects) {
-    const glm::dmat4 worldFromObject = o.worldFromObject();
-    const Stretch s = stretch(worldFromObject);
-    const Ball local = boundingBall(o.shape);
-    smallest = std::min(smallest, s.least * smallestFeature(o.shape));
-    const glm::dvec3 center(worldFromObject * glm::dvec4(local.center, 1));
-    const double radius = s.most * local.radius;
-    largest = std::max(largest, maxAbs(center) + radius);
-    lo = glm::min(lo, center - radius);
-    hi = glm::max(hi, center + radius);
-  }
-  return {std::max({largest, glm::length(hi - lo), 1.0}), smallest};
-}
-
-double precisionBudget(const SceneDesc& scene) { return budget(sceneScale(scene)); }
-
-Arithmetic chooseArithmetic(const SceneDesc& scene, Arithmetic requested) {
-  const SceneScale s = sceneScale(scene);
-  const double r = budget(s);
-  const bool courseDomain = scene.language == SceneLanguage::Pov && s.smallestFeature >= kCourseMinFeature &&
-                            s.extent <= kCourseMaxExtent;
+Arithmetic chooseArithmetic(const SceneDesc& scene, Arithmetic requested, View view) {
   Arithmetic a = requested;
-  if (a.precision == Precision::Auto) {
-    a.precision = courseDomain ? Precision::Course : r <= 1e4 ? Precision::Float : Precision::Double;
+  if (a.tier != Tier::Auto && a.sphere != SphereMethod::Auto && a.offset) return a;
+  const SceneScale s = sceneScale(scene);
+  const double r = precisionBudget(s);
+  const TierDomain d = tierDomain(scene, view);
+  if (a.tier == Tier::Auto) {
+    const bool floatSound = r <= 1e4 && d.robustPixels <= kVisiblePixels;
+    a.tier = courseTierSound(scene, s, d) ? Tier::Course : floatSound ? Tier::Float : Tier::Double;
   }
   if (a.sphere == SphereMethod::Auto) {
-    const bool textbook = a.precision == Precision::Course || (a.precision == Precision::Float && r <= 50);
+    const bool textbook =
+        a.tier == Tier::Course || (a.tier == Tier::Float && r <= 50 && d.textbookPixels <= kVisiblePixels);
     a.sphere = textbook ? SphereMethod::Textbook : SphereMethod::Robust;
   }
-  if (!a.offset) a.offset = a.precision == Precision::Course ? OffsetPolicy::Course : OffsetPolicy::Relative;
+  if (!a.offset) a.offset = a.tier == Tier::Course ? OffsetPolicy::Course : OffsetPolicy::Relative;
   return a;
 }
 

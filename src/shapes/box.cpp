@@ -5,7 +5,7 @@
 
 namespace rt {
 
-// The slab test (Kay & Kajiya 1986; csc473-course.md §c.11): the ray is inside the box between the largest
+// The slab test (Kay & Kajiya 1986; docs/reference/csc473.md §c.11): the ray is inside the box between the largest
 // slab entry t and the smallest slab exit t. The entry face is the outward normal of a hit from outside; from
 // inside (entry ≤ range.min) the hit is the exit face, whose outward normal points along the ray.
 // The face comes from the slab that set the bound, not from comparing the point with the faces (§c.11 uses a
@@ -43,7 +43,7 @@ std::optional<Hit<T>> Box<T>::intersect(const Ray<T>& ray, Interval<T> range) co
   } else {
     return std::nullopt;
   }
-  // Re-projected onto the face (stability.md F4): exactly on its plane, and within its rectangle.
+  // Re-projected onto the face (docs/reference/stability.md F4): exactly on its plane, and within its rectangle.
   hit.point = glm::clamp(ray.at(hit.t), min_, max_);
   hit.point[axis] = outward > T(0) ? max_[axis] : min_[axis];
   hit.normal = Vec3<T>(0);

@@ -6,7 +6,7 @@ namespace rt {
 
 // The side is the circle |op + t·dp| = r in the plane across the axis, solved with the sphere's robust
 // quadratic; the ends are disks. A ray parallel to the axis (dp = 0) meets only the ends; one across the axis
-// (dy = 0) meets only the side (stability.md F8).
+// (dy = 0) meets only the side (docs/reference/stability.md F8).
 template <class T>
 std::optional<Hit<T>> Cylinder<T>::intersect(const Ray<T>& ray, Interval<T> range) const {
   using Part = typename Axial<T>::Part;
@@ -26,7 +26,7 @@ std::optional<Hit<T>> Cylinder<T>::intersect(const Ray<T>& ray, Interval<T> rang
   if (*nearest.part == Part::Side) {
     hit.t = t;
     hit.normal = glm::normalize(s.op + t * s.dp);
-    // Re-projected onto the side (stability.md F4): at the radius, between the ends.
+    // Re-projected onto the side (docs/reference/stability.md F4): at the radius, between the ends.
     hit.point = frame_.at(frame_.heightAt(s, t, radius_), radius_ * hit.normal);
   } else {
     hit = frame_.diskHit(s, *nearest.part, t, radius_);

@@ -3,7 +3,7 @@
 namespace rt {
 
 // t = (d − n·o) / (n·d). A ray parallel to the plane (n·d = 0) never hits it, even when it lies in the plane:
-// t = ±∞ or NaN, which no open interval surrounds (stability.md F7).
+// t = ±∞ or NaN, which no open interval surrounds (docs/reference/stability.md F7).
 template <class T>
 std::optional<Hit<T>> Plane<T>::intersect(const Ray<T>& ray, Interval<T> range) const {
   const T t = distanceAlong(ray);

@@ -7,8 +7,8 @@
 namespace rt {
 
 // The textbook quadratic (lecture 3; Shirley, Fundamentals of Computer Graphics §4.4.1): a·t² + b·t + c = 0 with
-// b = 2 d·f, Δ = b² − 4ac. Its error grows as ε·R² (stability.md F1), so chooseArithmetic() uses it only where
-// R is small.
+// b = 2 d·f, Δ = b² − 4ac. Its error grows as ε·R² (docs/reference/stability.md F1), so chooseArithmetic() uses it only
+// where R is small.
 template <class T> bool textbookRoots(const Vec3<T>& f, const Vec3<T>& d, T radius, T& t0, T& t1) {
   const T a = glm::dot(d, d);
   const T b = T(2) * glm::dot(d, f);
@@ -38,7 +38,7 @@ std::optional<Hit<T>> Sphere<T>::intersect(const Ray<T>& ray, Interval<T> range)
   Hit<T> hit;
   hit.t = t;
   hit.normal = glm::normalize(ray.at(t) - center_);
-  hit.point = center_ + radius_ * hit.normal;  // re-projected onto the surface (stability.md F4)
+  hit.point = center_ + radius_ * hit.normal;  // re-projected onto the surface (docs/reference/stability.md F4)
   hit.object = this;
   return hit;
 }

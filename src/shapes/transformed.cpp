@@ -13,7 +13,7 @@ Transformed<T>::Transformed(std::unique_ptr<Object<T>> inner, const Mat4<T>& wor
       course_(course) {}
 
 // The object-space direction is M⁻¹·d without renormalizing, so the object-space t is the world t
-// (csc473-course.md §c.10); normals map by the inverse transpose. The course tier's normal is the one at the
+// (docs/reference/csc473.md §c.10); normals map by the inverse transpose. The course tier's normal is the one at the
 // world point brought back, M⁻¹·(o + t·d), as the reference's Object::CalculateNormalTransformed has it.
 template <class T>
 std::optional<Hit<T>> Transformed<T>::intersect(const Ray<T>& ray, Interval<T> range) const {

@@ -34,7 +34,7 @@ std::optional<Hit<T>> Triangle<T>::intersect(const Ray<T>& ray, Interval<T> rang
   if (!range.surrounds(t)) return std::nullopt;
   Hit<T> hit;
   hit.t = t;
-  hit.point = a_ + u * ab_ + v * ac_;  // on the triangle's plane by construction (stability.md F4)
+  hit.point = a_ + u * ab_ + v * ac_;  // on the triangle's plane by construction (docs/reference/stability.md F4)
   hit.normal = normal_;
   hit.object = this;
   return hit;

@@ -19,9 +19,8 @@ namespace {
 
 // Helper threads kept for the whole run. A render hands out work several times (a large file's parts, the
 // hierarchy's levels, the tiles, the PNG's segments), and a thread started anew for each would first have to
-// wait for its core: 0.05 ms as a rule on this 2-core virtual machine, but 2-3 ms in one start of three
-// (measured on spheres20k's second file part). Between jobs a helper spins before it sleeps, so that the next
-// job, as a rule a few milliseconds later, finds it running.
+// wait for its core. Between jobs a helper spins before it sleeps, so that the next job, as a rule a few
+// milliseconds later, finds it running (docs/performance-notes.md, "Helper threads").
 class Helpers {
  public:
   static Helpers& instance() {
@@ -75,7 +74,7 @@ class Helpers {
 
  private:
   // How long an idle helper spins before it sleeps: longer than the serial steps between two jobs of a
-  // render (at most 2 ms for spheres20k), short enough not to hold a core long after the last one.
+  // render, short enough not to hold a core long after the last one (docs/performance-notes.md).
   static constexpr std::chrono::milliseconds kSpin{5};
 
   void loop(int index) {

@@ -65,7 +65,7 @@ template <class T> void requireSame(const std::optional<rt::Hit<T>>& a, const st
 // The robust tier in T: its hits lie inside the objects' padded boxes, so the hierarchy must find exactly what
 // a scan finds.
 template <class T> rt::Arithmetic robustArithmetic() {
-  return {std::is_same_v<T, float> ? rt::Precision::Float : rt::Precision::Double, rt::SphereMethod::Robust};
+  return {std::is_same_v<T, float> ? rt::Tier::Float : rt::Tier::Double, rt::SphereMethod::Robust};
 }
 
 // What printbvh shows of the hierarchy of `desc` in double.
@@ -215,7 +215,7 @@ TEMPLATE_TEST_CASE("every SIMD kernel of the node test gives the baseline's bits
 TEST_CASE("equal t resolve to the object that comes first in the file", "[bvh]") {
   rt::SceneDesc desc;
   for (int i = 0; i < 50; ++i) desc.objects.push_back(sphereDesc({(i % 5) * 3.0, 0, -10}, 1));
-  const rt::Scene<float> tree(desc, {rt::Precision::Float, rt::SphereMethod::Robust}, Hierarchy::Always);
+  const rt::Scene<float> tree(desc, {rt::Tier::Float, rt::SphereMethod::Robust}, Hierarchy::Always);
   for (int k = 0; k < 5; ++k) {
     const rt::Ray<float> ray{{k * 3.0f, 0, 0}, {0, 0, -1}};
     const auto hit = tree.closestHit(ray, {});
@@ -228,7 +228,7 @@ TEST_CASE("equal t resolve to the object that comes first in the file", "[bvh]")
 TEST_CASE("the tree holds every bounded object once, inside nested boxes", "[bvh]") {
   std::mt19937 rng(7);
   const rt::SceneDesc desc = randomScene(rng, 300);
-  const rt::Scene<double> scene(desc, {rt::Precision::Double, rt::SphereMethod::Robust}, Hierarchy::Always);
+  const rt::Scene<double> scene(desc, {rt::Tier::Double, rt::SphereMethod::Robust}, Hierarchy::Always);
   const rt::Bvh<double>& bvh = *scene.hierarchy();
   REQUIRE(bvh.objects().size() == desc.objects.size() - 2);  // the two planes stay outside
   std::set<int> ids;
@@ -255,7 +255,7 @@ TEST_CASE("the tree is the same, node for node, for any number of threads", "[bv
   std::mt19937 rng(20000);
   rt::SceneDesc desc = randomScene(rng, 20000);
   for (int i = 0; i < 2000; ++i) desc.objects.push_back(sphereDesc({4, 4, 4}, 0.5));
-  const rt::Arithmetic arithmetic{rt::Precision::Float, rt::SphereMethod::Robust};
+  const rt::Arithmetic arithmetic{rt::Tier::Float, rt::SphereMethod::Robust};
   const auto printed = [&](int threads) {
     const rt::Scene<float> scene(desc, arithmetic, Hierarchy::Always, threads);
     std::ostringstream out;
@@ -274,7 +274,7 @@ TEST_CASE("objects near the top of the float range still make a tree that finds 
   rt::SceneDesc desc;
   for (int i = 0; i < 12; ++i) desc.objects.push_back(sphereDesc({(i % 2 ? 3.3e38 : -3.3e38), i * 10.0, 0}, 1));
   for (int i = 0; i < 12; ++i) desc.objects.push_back(sphereDesc({i * 3.0, 0, 0}, 1));
-  const rt::Scene<float> scene(desc, {rt::Precision::Float, rt::SphereMethod::Robust}, Hierarchy::Always);
+  const rt::Scene<float> scene(desc, {rt::Tier::Float, rt::SphereMethod::Robust}, Hierarchy::Always);
   REQUIRE(scene.hierarchy()->objects().size() == 24);
   std::set<int> ids;
   for (const auto* o : scene.hierarchy()->objects()) ids.insert(o->id());
@@ -287,7 +287,7 @@ TEST_CASE("objects near the top of the float range still make a tree that finds 
 TEST_CASE("a hierarchy is built only where it pays", "[bvh]") {
   rt::SceneDesc desc;
   for (int i = 0; i < 3; ++i) desc.objects.push_back(sphereDesc({i * 3.0, 0, 0}, 1));
-  const rt::Arithmetic arithmetic{rt::Precision::Float, rt::SphereMethod::Robust};
+  const rt::Arithmetic arithmetic{rt::Tier::Float, rt::SphereMethod::Robust};
   CHECK(!rt::Scene<float>(desc, arithmetic).hierarchy());
   while (desc.objects.size() < rt::kHierarchyMinObjects) desc.objects.push_back(sphereDesc({0, 5, 0}, 1));
   CHECK(rt::Scene<float>(desc, arithmetic).hierarchy());
@@ -297,7 +297,7 @@ TEST_CASE("a hierarchy is built only where it pays", "[bvh]") {
 TEST_CASE("coincident objects still split into small leaves", "[bvh]") {
   rt::SceneDesc desc;
   for (int i = 0; i < 1000; ++i) desc.objects.push_back(sphereDesc({1, 2, 3}, 1));
-  const rt::Scene<float> scene(desc, {rt::Precision::Float, rt::SphereMethod::Robust}, Hierarchy::Always);
+  const rt::Scene<float> scene(desc, {rt::Tier::Float, rt::SphereMethod::Robust}, Hierarchy::Always);
   for (const auto& node : scene.hierarchy()->nodes()) {
     for (int k = 0; k < node.size; ++k) CHECK(node.count[k] <= 4);
   }

@@ -1,5 +1,5 @@
-// T3 and T4 of stability.md §2: rays spawned at a hit by the offset policy (spawn.hpp) must never find their
-// own surface again. pbrt-v4's bar (shapes_test.cpp, Reintersect): exactly 0 re-hits.
+// T3 and T4 of docs/reference/stability.md §2: rays spawned at a hit by the offset policy (spawn.hpp) must never find
+// their own surface again. pbrt-v4's bar (shapes_test.cpp, Reintersect): exactly 0 re-hits.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -85,7 +85,7 @@ struct Rehits {
 
 // For each of `hits` surface points: one ray leaving, one entering (solids), one segment to a point outside.
 // Below 8 ulps of the position a shape is not representable as a shape at all: callers skip those cells
-// (stability.md T3).
+// (docs/reference/stability.md T3).
 template <class T>
 Rehits rehits(ShapeKind kind, double r, double pos, OffsetPolicy policy, int hits, uint64_t seed) {
   std::mt19937_64 rng(seed);
@@ -157,8 +157,8 @@ TEMPLATE_TEST_CASE("scale-aware offsets never re-hit their own surface", "[stabi
   CHECK(e.segments == 0);
 }
 
-// The fixed epsilons are scale-blind (stability.md F4): at |p| = 1e6 in float both lose rays to their own
-// surface, which is what the measurement above would catch in the production policy.
+// The fixed epsilons are scale-blind (docs/reference/stability.md F4): at |p| = 1e6 in float both lose rays to their
+// own surface, which is what the measurement above would catch in the production policy.
 TEST_CASE("fixed epsilons re-hit their own surface far from the origin in float", "[stability][spawn]") {
   const OffsetPolicy policy = GENERATE(OffsetPolicy::Course, OffsetPolicy::FixedNormal);
   const uint64_t seed = 0x5EED0102;
@@ -168,7 +168,7 @@ TEST_CASE("fixed epsilons re-hit their own surface far from the origin in float"
 }
 
 // T4: rays leaving at grazing elevations. A normal offset does not care about the angle; a t-epsilon along
-// the ray (the earlier course reference's P + 0.001·d) does (stability.md F5).
+// the ray (the earlier course reference's P + 0.001·d) does (docs/reference/stability.md F5).
 TEMPLATE_TEST_CASE("relative offsets survive grazing spawned rays", "[stability][spawn]", float, double) {
   const ShapeKind kind = GENERATE(ShapeKind::Sphere, ShapeKind::Plane);
   const double pos = GENERATE(1e2, 1e4);
@@ -178,7 +178,7 @@ TEMPLATE_TEST_CASE("relative offsets survive grazing spawned rays", "[stability]
   CHECK(grazingRehits<TestType>(kind, pos, elevation, OffsetPolicy::Relative, 2000, seed) == 0);
 }
 
-// The course's 0.001 along the normal, inside the course tier's domain (coordinates up to 1e3, precision.hpp).
+// The course's 0.001 along the normal, inside the course tier's domain (coordinates up to 1e3, scene/arithmetic.hpp).
 TEST_CASE("the course's normal offset survives grazing spawned rays in its domain", "[stability][spawn]") {
   const ShapeKind kind = GENERATE(ShapeKind::Sphere, ShapeKind::Plane);
   const double pos = GENERATE(1e2, 1e3);

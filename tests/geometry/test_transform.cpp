@@ -17,7 +17,7 @@ ObjectDesc parsed(const std::string& modifiers) {
   return parsePov(std::string(kCamera) + "sphere { <0, 0, 0>, 1 " + modifiers + " }", "t.pov").objects.at(0);
 }
 
-// The course reference's float composition, written out product by product (csc473-course.md §c.10).
+// The course reference's float composition, written out product by product (docs/reference/csc473.md §c.10).
 glm::mat4 referenceRotation(glm::vec3 degrees) {
   glm::mat4 r(1.f);
   r = glm::rotate(glm::mat4(1.f), glm::radians(degrees.z), glm::vec3(0, 0, 1)) * r;

@@ -1,4 +1,4 @@
-// The POV-subset parser (csc473-course.md §b): every construct, the defaults, and every error message whole,
+// The POV-subset parser (docs/reference/csc473.md §b): every construct, the defaults, and every error message whole,
 // with its file:line:col.
 #include <catch2/catch.hpp>
 

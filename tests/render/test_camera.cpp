@@ -1,4 +1,4 @@
-// The course camera (csc473-course.md §d): the worked check on simple.pov and the simp_cam scenes, in both
+// The course camera (docs/reference/csc473.md §d): the worked check on simple.pov and the simp_cam scenes, in both
 // precisions, compared with directions computed independently in float64 (numpy) and with the course's
 // printed 4-decimal values.
 #include <catch2/catch.hpp>

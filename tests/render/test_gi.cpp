@@ -164,7 +164,7 @@ TEST_CASE("GI images are the same for any thread count and any tile order, and p
   // Blocks of 5 × 4 pixels in a shuffled order, by one tracer whose caches and buffers carry over, then every
   // pixel alone as pixelcolor computes it.
   const Arithmetic arithmetic = chooseArithmetic(scene, options.arithmetic);
-  withPrecision(arithmetic.precision, [&](auto tag) {
+  withPrecision(arithmetic.tier, [&](auto tag) {
     using T = decltype(tag);
     const Scene<T> s(scene, arithmetic);
     const Camera<T> camera(scene.camera, kW, kH);
@@ -201,7 +201,7 @@ TEST_CASE("Adaptive gathering stops once its rounds agree, and spends the cap wh
     RenderOptions options = gi({64, 4});
     options.gi.adaptive = threshold;
     const Arithmetic arithmetic = chooseArithmetic(scene, options.arithmetic);
-    return withPrecision(arithmetic.precision, [&](auto tag) {
+    return withPrecision(arithmetic.tier, [&](auto tag) {
       using T = decltype(tag);
       const Scene<T> s(scene, arithmetic);
       Tracer<T> tracer(s, options);
@@ -226,7 +226,7 @@ TEST_CASE("GI diagnostics sum up the gather rays per bounce", "[gi]") {
   const SceneDesc scene = smallRoom();
   const RenderOptions options = gi({9, 4});
   const Arithmetic arithmetic = chooseArithmetic(scene, options.arithmetic);
-  withPrecision(arithmetic.precision, [&](auto tag) {
+  withPrecision(arithmetic.tier, [&](auto tag) {
     using T = decltype(tag);
     const Scene<T> s(scene, arithmetic);
     const Camera<T> camera(scene.camera, 16, 12);

@@ -244,7 +244,7 @@ TEST_CASE("A rendered pixel is the colour pixel() reports for it: packets change
         options.hierarchy = hierarchy;
         const Image image = render(scene, 37, 23, options);
         const Arithmetic arithmetic = chooseArithmetic(scene, options.arithmetic);
-        withPrecision(arithmetic.precision, [&](auto tag) {
+        withPrecision(arithmetic.tier, [&](auto tag) {
           using T = decltype(tag);
           const Scene<T> s(scene, arithmetic, hierarchy);
           const Camera<T> camera(scene.camera, 37, 23);

@@ -104,7 +104,7 @@ TEST_CASE("Refraction follows Snell's law entering and leaving, and reports tota
   SECTION("leaving beyond the critical angle is total internal reflection") {
     CHECK_FALSE(refractDirection(Vec3<double>(std::sin(M_PI / 3), std::cos(M_PI / 3), 0), n, 1.5f));
   }
-  SECTION("sweep: TIR exactly beyond the critical angle, unit directions otherwise (stability.md T8)") {
+  SECTION("sweep: TIR exactly beyond the critical angle, unit directions otherwise (docs/reference/stability.md T8)") {
     for (const float ior : {1.5f, 1.0f / 1.5f, 2.42f}) {
       for (int step = 0; step < 900; ++step) {
         const double theta = step * 0.1 * M_PI / 180;

@@ -1,5 +1,5 @@
-// Whole-render stability checks (stability.md §2): T10 translation invariance, the far-sphere silhouette,
-// T11 recursion against the closed form, T12 determinism, and finite pixels throughout.
+// Whole-render stability checks (docs/reference/stability.md §2): T10 translation invariance, the far-sphere
+// silhouette, T11 recursion against the closed form, T12 determinism, and finite pixels throughout.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -88,7 +88,7 @@ TEST_CASE("a scene moved far from the origin renders like the original", "[stabi
   RenderOptions options;
   options.samples = 2;
   options.arithmetic = chooseArithmetic(moved);
-  REQUIRE(options.arithmetic.precision != Precision::Course);
+  REQUIRE(options.arithmetic.tier != Tier::Course);
   const Image before = render(original, 160, 120, options);
   const Image after = render(moved, 160, 120, options);
   CHECK(allFinite(after));
@@ -134,7 +134,7 @@ TEST_CASE("a unit sphere 5000 units away renders as its analytic disk", "[stabil
 
   SECTION("the textbook formula in float would lose it") {
     RenderOptions textbook;
-    textbook.arithmetic = {Precision::Float, SphereMethod::Textbook};
+    textbook.arithmetic = {Tier::Float, SphereMethod::Textbook};
     const Image image = render(scene, 160, 120, textbook);
     int wrong = 0;
     for (int y = 0; y < 120; ++y) {

@@ -1,4 +1,4 @@
-// T8 of stability.md §2: refraction directions across all angles of incidence: total internal reflection
+// T8 of docs/reference/stability.md §2: refraction directions across all angles of incidence: total internal reflection
 // exactly past the critical angle, unit results on the far side, Snell's law kept.
 #include <catch2/catch.hpp>
 

@@ -1,5 +1,5 @@
 // The precision budget R = (largest coordinate or ray length) ÷ smallest feature and the arithmetic chosen
-// from it (stability.md §1.1), on small scenes built here.
+// from it (docs/reference/stability.md §1.1), on small scenes built here.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -10,7 +10,7 @@
 
 using rt::Arithmetic;
 using rt::OffsetPolicy;
-using rt::Precision;
+using rt::Tier;
 using rt::SphereMethod;
 
 namespace {
@@ -45,12 +45,12 @@ TEST_CASE("precision: budget of a simple.pov-like scene") {
   // Box (−2, −4, −2)…(2, 2, 14): diagonal √(4² + 6² + 16²) = √308, over radius 2.
   CHECK(rt::precisionBudget(s) == Approx(std::sqrt(308.0) / 2));
   const Arithmetic a = rt::chooseArithmetic(asCs3451(s));
-  CHECK(a.precision == Precision::Float);
+  CHECK(a.tier == Tier::Float);
   CHECK(a.sphere == SphereMethod::Textbook);
   CHECK(a.offset == OffsetPolicy::Relative);
   // As a POV file it is the course's own kind of scene: the course tier.
   const Arithmetic course = rt::chooseArithmetic(s);
-  CHECK(course.precision == Precision::Course);
+  CHECK(course.tier == Tier::Course);
   CHECK(course.sphere == SphereMethod::Textbook);
   CHECK(course.offset == OffsetPolicy::Course);
 }
@@ -98,86 +98,88 @@ TEST_CASE("precision: the thresholds R = 50 and R = 10000") {
     CHECK(rt::precisionBudget(s) == Approx(R));
     return rt::chooseArithmetic(s);
   };
-  CHECK(choose(49.99).precision == Precision::Float);
+  CHECK(choose(49.99).tier == Tier::Float);
   CHECK(choose(49.99).sphere == SphereMethod::Textbook);
-  CHECK(choose(50.01).precision == Precision::Float);
+  CHECK(choose(50.01).tier == Tier::Float);
   CHECK(choose(50.01).sphere == SphereMethod::Robust);
-  CHECK(choose(9999.9).precision == Precision::Float);
+  CHECK(choose(9999.9).tier == Tier::Float);
   CHECK(choose(9999.9).sphere == SphereMethod::Robust);
-  CHECK(choose(10000.1).precision == Precision::Double);
+  CHECK(choose(10000.1).tier == Tier::Double);
   CHECK(choose(10000.1).sphere == SphereMethod::Robust);
 }
 
 TEST_CASE("precision: explicit requests win") {
   rt::SceneDesc s = asCs3451(withCamera({0, 0, 1e4}));
   add(s, rt::SphereDesc{{0, 0, 0}, 1});
-  const Arithmetic forced = rt::chooseArithmetic(s, {Precision::Float, SphereMethod::Textbook});
-  CHECK(forced.precision == Precision::Float);
+  const Arithmetic forced = rt::chooseArithmetic(s, {Tier::Float, SphereMethod::Textbook});
+  CHECK(forced.tier == Tier::Float);
   CHECK(forced.sphere == SphereMethod::Textbook);
   rt::SceneDesc small = asCs3451(withCamera({0, 0, 5}));
   add(small, rt::SphereDesc{{0, 0, 0}, 1});
-  const Arithmetic dbl = rt::chooseArithmetic(small, {Precision::Double, SphereMethod::Auto});
-  CHECK(dbl.precision == Precision::Double);
+  const Arithmetic dbl = rt::chooseArithmetic(small, {Tier::Double, SphereMethod::Auto});
+  CHECK(dbl.tier == Tier::Double);
   CHECK(dbl.sphere == SphereMethod::Robust);  // the textbook formula is only ever chosen for float
-  CHECK(rt::chooseArithmetic(small, {Precision::Auto, SphereMethod::Robust}).sphere == SphereMethod::Robust);
+  CHECK(rt::chooseArithmetic(small, {Tier::Auto, SphereMethod::Robust}).sphere == SphereMethod::Robust);
 }
 
-// A POV scene gets the course tier while its smallest feature is at least 0.002 (twice the course's fixed
-// offset) and its extent at most 1000 (float's ulp there is 6e-5, well below the offset).
+// A POV scene gets the course tier (besides the checks of tier_domain.hpp) while its smallest feature is at
+// least 0.002 (twice the course's fixed offset) and its extent at most 1000 (float's ulp there is 6e-5, well
+// below the offset).
 TEST_CASE("precision: the course tier for course-scale POV scenes only") {
   const auto scene = [](double scale, glm::dvec3 shift) {
     rt::SceneDesc s = withCamera(scale * glm::dvec3(0, 0, 14) + shift);
     add(s, rt::SphereDesc{scale * glm::dvec3(0, 0, 0) + shift, scale * 2});
-    add(s, rt::SphereDesc{scale * glm::dvec3(3, 0, 0) + shift, scale * 0.01});
+    add(s, rt::BoxDesc{scale * glm::dvec3(3, 0, 0) + shift, scale * glm::dvec3(3.5, 0.01, 0.5) + shift});
     return s;
   };
-  const auto tier = [](const rt::SceneDesc& s) { return rt::chooseArithmetic(s).precision; };
-  CHECK(tier(scene(1, glm::dvec3(0))) == Precision::Course);
-  // Scaled by 1e-3 the small sphere's radius is 1e-5, far below the offset: the budget tiers (the extent
-  // counts as at least 1, so R = 1e5 asks for double).
-  CHECK(tier(scene(1e-3, glm::dvec3(0))) == Precision::Double);
+  const auto tier = [](const rt::SceneDesc& s) { return rt::chooseArithmetic(s).tier; };
+  CHECK(tier(scene(1, glm::dvec3(0))) == Tier::Course);
+  // Scaled by 1e-3 the thin box is 1e-5 thick, far below the offset: the budget tiers (the extent counts as
+  // at least 1, so R = 1e5 asks for double).
+  CHECK(tier(scene(1e-3, glm::dvec3(0))) == Tier::Double);
   // Moved 1e5 away, the coordinates' rounding nears the offset: R ≈ 1e7 asks for double.
-  CHECK(tier(scene(1, glm::dvec3(1e5, 0, 0))) == Precision::Double);
+  CHECK(tier(scene(1, glm::dvec3(1e5, 0, 0))) == Tier::Double);
   // A .cli scene never gets it, at any scale.
-  CHECK(tier(asCs3451(scene(1, glm::dvec3(0)))) == Precision::Float);
-  // The thresholds themselves: a feature of exactly 0.002 and an extent of exactly 1000 are inside.
+  CHECK(tier(asCs3451(scene(1, glm::dvec3(0)))) == Tier::Float);
+  // The thresholds themselves: a feature of exactly 0.002 and an extent of exactly 1000 are inside. (A
+  // sphere that small would fail first on the textbook quadratic's error: tests/scene/test_stability_tier_domain.cpp.)
   rt::SceneDesc thin = scene(1, glm::dvec3(0));
-  thin.objects[1].shape = rt::SphereDesc{{3, 0, 0}, 0.002};
-  CHECK(tier(thin) == Precision::Course);
-  thin.objects[1].shape = rt::SphereDesc{{3, 0, 0}, 0.0019};
-  CHECK(tier(thin) == Precision::Float);
+  thin.objects[1].shape = rt::BoxDesc{{3, 0, 0}, {3.5, 0.002, 0.5}};
+  CHECK(tier(thin) == Tier::Course);
+  thin.objects[1].shape = rt::BoxDesc{{3, 0, 0}, {3.5, 0.0019, 0.5}};
+  CHECK(tier(thin) == Tier::Float);
   rt::SceneDesc far = withCamera({0, 0, 0});
   add(far, rt::PlaneDesc{{0, 0, 1}, -1000});  // its point nearest the origin, (0, 0, −1000), stands in
   CHECK(rt::sceneScale(far).extent == 1000.0);
-  CHECK(tier(far) == Precision::Course);
+  CHECK(tier(far) == Tier::Course);
   far.objects[0].shape = rt::PlaneDesc{{0, 0, 1}, -1000.5};
-  CHECK(tier(far) == Precision::Float);
+  CHECK(tier(far) == Tier::Float);
 }
 
 TEST_CASE("precision: explicit requests win over the course tier, each on its own") {
   rt::SceneDesc s = withCamera({0, 0, 14});
   add(s, rt::SphereDesc{{0, 0, 0}, 2});
-  const Arithmetic robust = rt::chooseArithmetic(s, {Precision::Auto, SphereMethod::Robust});
-  CHECK(robust.precision == Precision::Course);
+  const Arithmetic robust = rt::chooseArithmetic(s, {Tier::Auto, SphereMethod::Robust});
+  CHECK(robust.tier == Tier::Course);
   CHECK(robust.sphere == SphereMethod::Robust);
   CHECK(robust.offset == OffsetPolicy::Course);
-  const Arithmetic relative = rt::chooseArithmetic(s, {Precision::Auto, SphereMethod::Auto, OffsetPolicy::Relative});
-  CHECK(relative.precision == Precision::Course);
+  const Arithmetic relative = rt::chooseArithmetic(s, {Tier::Auto, SphereMethod::Auto, OffsetPolicy::Relative});
+  CHECK(relative.tier == Tier::Course);
   CHECK(relative.sphere == SphereMethod::Textbook);
   CHECK(relative.offset == OffsetPolicy::Relative);
-  const Arithmetic dbl = rt::chooseArithmetic(s, {Precision::Double});
-  CHECK(dbl.precision == Precision::Double);
+  const Arithmetic dbl = rt::chooseArithmetic(s, {Tier::Double});
+  CHECK(dbl.tier == Tier::Double);
   CHECK(dbl.sphere == SphereMethod::Robust);
   CHECK(dbl.offset == OffsetPolicy::Relative);
   // Asked for, the course tier applies outside its domain too (a .cli scene here), with its own offset.
-  const Arithmetic course = rt::chooseArithmetic(asCs3451(s), {Precision::Course});
-  CHECK(course.precision == Precision::Course);
+  const Arithmetic course = rt::chooseArithmetic(asCs3451(s), {Tier::Course});
+  CHECK(course.tier == Tier::Course);
   CHECK(course.sphere == SphereMethod::Textbook);
   CHECK(course.offset == OffsetPolicy::Course);
 }
 
 TEST_CASE("precision: withPrecision calls the lambda with the chosen type") {
-  CHECK(rt::withPrecision(Precision::Course, [](auto t) { return sizeof(t); }) == sizeof(float));
-  CHECK(rt::withPrecision(Precision::Float, [](auto t) { return sizeof(t); }) == sizeof(float));
-  CHECK(rt::withPrecision(Precision::Double, [](auto t) { return sizeof(t); }) == sizeof(double));
+  CHECK(rt::withPrecision(Tier::Course, [](auto t) { return sizeof(t); }) == sizeof(float));
+  CHECK(rt::withPrecision(Tier::Float, [](auto t) { return sizeof(t); }) == sizeof(float));
+  CHECK(rt::withPrecision(Tier::Double, [](auto t) { return sizeof(t); }) == sizeof(double));
 }

@@ -50,7 +50,7 @@ TEMPLATE_TEST_CASE("a ray along the axis meets the base disk and the apex", "[co
   const auto apex = shoot(c, Vec3<T>(0, 5, 0), Vec3<T>(0, -1, 0));
   REQUIRE(apex);
   CHECK(apex->t == T(3));
-  // Re-projected the rim margin, 8ε·(|base| + height + radius), below the apex (stability.md F6).
+  // Re-projected the rim margin, 8ε·(|base| + height + radius), below the apex (docs/reference/stability.md F6).
   CHECK(glm::length(apex->point - Vec3<T>(0, 2, 0)) <= 64 * std::numeric_limits<T>::epsilon());
   CHECK(apex->normal == Vec3<T>(0, 1, 0));
   // Parallel to the axis, off it: the side, where the radius is 0.5.

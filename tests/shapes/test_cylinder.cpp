@@ -60,7 +60,7 @@ TEMPLATE_TEST_CASE("the rim has no crack", "[cylinder]", float, double) {
   using T = TestType;
   const Cylinder<T> c = upright<T>();
   // Along the side line x = 1: the cap disk's bound is inclusive, so the rim point is hit, re-projected
-  // the rim margin (8ε·(|base| + height + radius) = 24ε) inside the edge (stability.md F6).
+  // the rim margin (8ε·(|base| + height + radius) = 24ε) inside the edge (docs/reference/stability.md F6).
   const auto along = shoot(c, Vec3<T>(1, 5, 0), Vec3<T>(0, -1, 0));
   REQUIRE(along);
   CHECK(along->t == T(3));
@@ -81,7 +81,8 @@ TEMPLATE_TEST_CASE("the rim has no crack", "[cylinder]", float, double) {
   CHECK(glm::length(diagonal->point - Vec3<T>(1, 2, 0)) < T(1e-5));
 }
 
-// stability.md T6: d ∝ (δ, ±1, 0), origin inside or outside the radius; and d.y = 0 below, at and above an end.
+// docs/reference/stability.md T6: d ∝ (δ, ±1, 0), origin inside or outside the radius; and d.y = 0 below, at and above
+// an end.
 TEMPLATE_TEST_CASE("rays nearly parallel to the axis give finite t", "[cylinder]", float, double) {
   using T = TestType;
   const Cylinder<T> c = upright<T>();

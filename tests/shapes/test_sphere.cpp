@@ -158,7 +158,7 @@ TEST_CASE("sphere: both formulas agree with the exact root on random rays (seede
 }
 
 TEST_CASE("sphere: far from a small sphere, the robust test stays exact in float where the textbook one fails") {
-  // Radius 1 at distance 1e4 (precision budget R = 1e4, stability.md F1): t = 9999 exactly.
+  // Radius 1 at distance 1e4 (precision budget R = 1e4, docs/reference/stability.md F1): t = 9999 exactly.
   const rt::Ray<float> ray{{0, 0, 1e4f}, {0, 0, -1}};
   const auto robust = sphere<float>({0, 0, 0}, 1, SphereMethod::Robust).intersect(ray, {});
   REQUIRE(robust);

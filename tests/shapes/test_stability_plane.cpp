@@ -1,4 +1,5 @@
-// T7 of stability.md §2: rays (nearly) parallel to a plane never produce a hit with a non-finite t or point.
+// T7 of docs/reference/stability.md §2: rays (nearly) parallel to a plane never produce a hit with a non-finite t or
+// point.
 #include <catch2/catch.hpp>
 
 #include <cmath>

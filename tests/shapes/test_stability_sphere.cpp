@@ -1,4 +1,5 @@
-// T1 and T2 of stability.md §2: the sphere's t against a higher-precision solution of the same rounded inputs.
+// T1 and T2 of docs/reference/stability.md §2: the sphere's t against a higher-precision solution of the same rounded
+// inputs.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -57,7 +58,7 @@ SphereErrors sphereErrors(double r, double D, SphereMethod method, int rays, uin
   return out;
 }
 
-// Impact parameters uniform over the disk of radius 0.999 (stability.md T1).
+// Impact parameters uniform over the disk of radius 0.999 (docs/reference/stability.md T1).
 double diskImpact(std::mt19937_64& rng) { return 0.999 * std::sqrt(std::uniform_real_distribution<double>()(rng)); }
 
 constexpr int kRays = 10000;
@@ -85,7 +86,7 @@ SphereErrors budgetErrors(const glm::dvec3& eye, const glm::dvec3& c, double r, 
   desc.camera.lookAt = c;
   desc.objects.push_back(ObjectDesc{SphereDesc{c, r}, Material{}});
   chosen = chooseArithmetic(desc);
-  return withPrecision(chosen.precision, [&](auto tag) {
+  return withPrecision(chosen.tier, [&](auto tag) {
     using T = decltype(tag);
     SphereErrors out;
     const Vec3<T> o(eye), cT(c);
@@ -99,7 +100,7 @@ SphereErrors budgetErrors(const glm::dvec3& eye, const glm::dvec3& c, double r, 
 
 }  // namespace
 
-// Robust test, float: max ≤ 8εD, p99 ≤ 2εD; no wrong hit/miss while D/r ≤ 1e4 (stability.md T1).
+// Robust test, float: max ≤ 8εD, p99 ≤ 2εD; no wrong hit/miss while D/r ≤ 1e4 (docs/reference/stability.md T1).
 TEST_CASE("robust sphere t in float stays within a few eps*D of the reference", "[stability][sphere]") {
   const auto cell = GENERATE(table<double, double>({{1e-3, 1e-2},
                                                     {1e-3, 10},
@@ -114,7 +115,7 @@ TEST_CASE("robust sphere t in float stays within a few eps*D of the reference", 
   checkRobustCell<float>(r, D, 0x5EED0001, D / r <= 1e4);
 }
 
-// Robust test, double: the same bars, and no wrong hit/miss in any cell (stability.md T1).
+// Robust test, double: the same bars, and no wrong hit/miss in any cell (docs/reference/stability.md T1).
 TEST_CASE("robust sphere t in double stays within a few eps*D of the reference", "[stability][sphere]") {
   const auto cell = GENERATE(table<double, double>({{1e-3, 1e-2},
                                                     {1e-3, 10},
@@ -143,7 +144,7 @@ TEST_CASE("textbook sphere t in float meets the budget where chooseArithmetic us
 }
 
 // T2: rays whose impact parameter approaches the radius, at D/r = 10. Tangency amplifies any error in the
-// discriminant; the perpendicular-vector form keeps it within 8εD (stability.md T2).
+// discriminant; the perpendicular-vector form keeps it within 8εD (docs/reference/stability.md T2).
 TEMPLATE_TEST_CASE("robust sphere t stays accurate up to tangency", "[stability][sphere]", float, double) {
   const double k = GENERATE(0.9, 0.99, 0.999, 1 - 1e-4, 1 - 1e-5, 1 - 1e-6);
   const uint64_t seed = 0x5EED0004;
@@ -157,8 +158,8 @@ TEMPLATE_TEST_CASE("robust sphere t stays accurate up to tangency", "[stability]
 }
 
 
-// The budget itself (stability.md §1.1): for random one-sphere scenes, with camera and sphere anywhere, the
-// arithmetic chooseArithmetic() picks never flips a hit and keeps every eye ray's t within 1e-2·r, the one bar
+// The budget itself (docs/reference/stability.md §1.1): for random one-sphere scenes, with camera and sphere anywhere,
+// the arithmetic chooseArithmetic() picks never flips a hit and keeps every eye ray's t within 1e-2·r, the one bar
 // both float tiers are held to (their worst rays, grazing the rim, reach 4–6e-3·r at their limits).
 TEST_CASE("chooseArithmetic keeps sphere t within its budget", "[stability][sphere][precision]") {
   const uint64_t seed = GENERATE(0x5EED0005, 0x5EED0006);
@@ -172,7 +173,7 @@ TEST_CASE("chooseArithmetic keeps sphere t within its budget", "[stability][sphe
     Arithmetic a;
     SphereErrors e = budgetErrors(eye, c, r, 200, rng, a);
     const double max = test::quantile(e.relative, 1.0);
-    CAPTURE(scene, r, D, c, int(a.precision), int(a.sphere), max);
+    CAPTURE(scene, r, D, c, int(a.tier), int(a.sphere), max);
     REQUIRE(e.nonFinite == 0);
     REQUIRE(e.disagreements == 0);
     REQUIRE(max <= 1e-2);
@@ -190,7 +191,7 @@ TEST_CASE("chooseArithmetic counts the distance between camera and sphere", "[st
   Arithmetic a;
   SphereErrors e = budgetErrors(glm::dvec3(-k), glm::dvec3(k), 1.0, kRays, rng, a);
   const double p99 = test::quantile(e.relative, 0.99), max = test::quantile(e.relative, 1.0);
-  CAPTURE(int(a.precision), int(a.sphere), p99, max);
+  CAPTURE(int(a.tier), int(a.sphere), p99, max);
   CHECK(e.disagreements == 0);
   CHECK(p99 <= 1.5e-3);
   CHECK(max <= 1e-2);

@@ -52,7 +52,7 @@ TEST_CASE("rotate <a, b, c> is the course's Rx·Ry·Rz, which turns about z firs
   checkNear(apply(worldFromObject("rotate <0, 0, 90>"), glm::dvec3(1, 0, 0)), glm::dvec3(0, 1, 0), 1e-12);
 }
 
-// csc473-course.md §a.4/§c.10: valentine2's sphere #2 (radius 2, scale <1,2,1> rotate <0,0,−25>
+// docs/reference/csc473.md §a.4/§c.10: valentine2's sphere #2 (radius 2, scale <1,2,1> rotate <0,0,−25>
 // translate <1.2,0,0>) seen through pixel [399, 280] of 640×480, as printed by the course's p4/test1.
 TEMPLATE_TEST_CASE("the course's transformed-ray check", "[transformed]", float, double) {
   using T = TestType;
@@ -131,7 +131,7 @@ TEST_CASE("the scene builds boxes, cones and cylinders, transformed or not", "[t
                                       "cone { <0, 0, 0>, 1, <0, 0, 2>, 0 scale 2 translate <0, 0, -5> }\n"
                                       "cylinder { <0, -1, 0>, <0, 1, 0>, 0.5 translate <3, 0, 0> }\n",
                                   "shapes.pov");
-  const Arithmetic arithmetic{Precision::Double, SphereMethod::Robust};
+  const Arithmetic arithmetic{Tier::Double, SphereMethod::Robust};
   const Scene<double> scene(desc, arithmetic);
   REQUIRE(scene.objects().size() == 3);
   // Down −z from the eye: the cone's apex at z = −1 (2·2 − 5), in front of the box's face at z = −9.
@@ -158,8 +158,8 @@ TEST_CASE("every object is named as its description's shape, plain, transformed 
                                       "cylinder { <0, -1, 0>, <0, 1, 0>, 0.5 }\n",
                                   "names.pov");
   // The course tier keeps every transform; the others fold the uniformly scaled sphere into a plain one.
-  const Scene<double> folding(desc, Arithmetic{Precision::Double, SphereMethod::Robust});
-  const Scene<float> course(desc, Arithmetic{Precision::Course, SphereMethod::Textbook, OffsetPolicy::Course});
+  const Scene<double> folding(desc, Arithmetic{Tier::Double, SphereMethod::Robust});
+  const Scene<float> course(desc, Arithmetic{Tier::Course, SphereMethod::Textbook, OffsetPolicy::Course});
   REQUIRE(folding.objects().size() == desc.objects.size());
   REQUIRE(course.objects().size() == desc.objects.size());
   for (size_t i = 0; i < desc.objects.size(); ++i) {
@@ -173,7 +173,7 @@ TEST_CASE("a sphere moved by a similarity becomes a plain sphere; other transfor
                                       "sphere { <1, 0, 0>, 2 rotate <0, 90, 0> scale 0.5 translate <1, 2, 3> }\n"
                                       "sphere { <0, 0, 0>, 1 scale <2, 1, 1> }\n",
                                   "spheres.pov");
-  const Scene<double> scene(desc, Arithmetic{Precision::Double, SphereMethod::Robust});
+  const Scene<double> scene(desc, Arithmetic{Tier::Double, SphereMethod::Robust});
   // Ry(90) takes the centre (1, 0, 0) to (0, 0, −1); halved and moved: (1, 2, 2.5), radius 1.
   const auto* folded = dynamic_cast<const Sphere<double>*>(scene.objects().at(0).get());
   REQUIRE(folded);
@@ -187,7 +187,7 @@ TEST_CASE("a sphere moved by a similarity becomes a plain sphere; other transfor
   CHECK(dynamic_cast<const Transformed<double>*>(scene.objects().at(1).get()));
 }
 
-// The course tier (precision.hpp) keeps the similarity transform, in the float matrix the reference composes
+// The course tier (scene/arithmetic.hpp) keeps the similarity transform, in the float matrix the reference composes
 // from the file's steps, and reports the hit as the reference does: the point o + t·d, the normal of the
 // sphere at M⁻¹ of that point, carried out by (M⁻¹)ᵀ.
 TEST_CASE("the course tier intersects the transformed ray and takes the normal at M⁻¹·(o + t·d)",
@@ -195,7 +195,7 @@ TEST_CASE("the course tier intersects the transformed ray and takes the normal a
   const SceneDesc desc = parsePov(std::string(kCamera) +
                                       "sphere { <1, 0, 0>, 2 rotate <0, 90, 0> scale 0.5 translate <1, 2, 3> }\n",
                                   "spheres.pov");
-  const Scene<float> scene(desc, Arithmetic{Precision::Course, SphereMethod::Textbook, OffsetPolicy::Course});
+  const Scene<float> scene(desc, Arithmetic{Tier::Course, SphereMethod::Textbook, OffsetPolicy::Course});
   REQUIRE(dynamic_cast<const Transformed<float>*>(scene.objects().at(0).get()));
   const Ray<float> ray{{1.1f, 2.2f, 12}, {0, 0, -1}};
   const auto hit = scene.closestHit(ray, Interval<float>{});
@@ -216,7 +216,7 @@ TEST_CASE("the course tier moves an object of a scene built in code by its steps
   o.shape = SphereDesc{{0, 0, 0}, 1};
   o.transforms = {{TransformStep::Kind::Translate, {0, 0, -5}}};
   desc.objects.push_back(o);
-  const Scene<float> scene(desc, Arithmetic{Precision::Course, SphereMethod::Textbook, OffsetPolicy::Course});
+  const Scene<float> scene(desc, Arithmetic{Tier::Course, SphereMethod::Textbook, OffsetPolicy::Course});
   const auto hit = scene.closestHit(Ray<float>{{0, 0, 0}, {0, 0, -1}}, Interval<float>{});
   REQUIRE(hit);
   CHECK(hit->t == 4.0f);

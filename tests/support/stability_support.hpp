@@ -1,4 +1,4 @@
-// Shared by the [stability] tests (stability.md §2): seeded ray generators and the higher-precision
+// Shared by the [stability] tests (docs/reference/stability.md §2): seeded ray generators and the higher-precision
 // reference that re-solves the SAME rounded inputs, so a difference is the kernel's error alone.
 #pragma once
 
@@ -14,7 +14,7 @@
 namespace rt::test {
 
 // The reference arithmetic for T: x86-64 long double (64-bit mantissa) is enough for float inputs, double
-// inputs need __float128 (113 bits) (stability.md §2, T1).
+// inputs need __float128 (113 bits) (docs/reference/stability.md §2, T1).
 template <class T> struct Wider;
 template <> struct Wider<float> { using type = long double; };
 template <> struct Wider<double> { using type = __float128; };

@@ -1,4 +1,4 @@
-// Bounding volume hierarchy over the bounded objects of a scene (csc473-course.md §c.13; the build is the
+// Bounding volume hierarchy over the bounded objects of a scene (docs/reference/csc473.md §c.13; the build is the
 // binned SAH of Wald, "On fast Construction of SAH-based Bounding Volume Hierarchies", 2007).
 #pragma once
 

@@ -24,7 +24,7 @@ template <class T> class Scene {
   Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy hierarchy = Hierarchy::Auto, int threads = 1);
 
   // The closest hit strictly inside `range` over all objects. Equal t resolve to the object that comes first
-  // in the file, so results never depend on traversal order (stability.md F13).
+  // in the file, so results never depend on traversal order (docs/reference/stability.md F13).
   std::optional<Hit<T>> closestHit(const Ray<T>& ray, Interval<T> range) const;
   // Whether anything at all lies strictly inside `range`: the any-hit query of shadow rays. `lastOccluder`, when
   // given, is the object that occluded the previous shadow ray toward the same light, tested first
@@ -48,7 +48,7 @@ template <class T> class Scene {
 
  private:
   // The point a hit reports: the shape's own, re-projected onto the surface, except in the course tier, which
-  // takes o + t·d as its reference does (precision.hpp).
+  // takes o + t·d as its reference does (scene/arithmetic.hpp).
   Vec3<T> hitPoint(const Ray<T>& ray, const Hit<T>& hit) const;
 
   const SceneDesc& desc_;

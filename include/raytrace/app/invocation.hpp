@@ -19,12 +19,15 @@ struct Invocation {
   std::ostream* progress = nullptr;  // where render shows its progress line (not with --quiet)
   std::ostream* stats = nullptr;     // --stats: where render reports how long each step took
   double loadSeconds = 0;         // the reading of the scene file
+
+  // The eye rays' grid the arithmetic is chosen for; commands without an image size get the default view.
+  View view() const { return width > 0 && height > 0 ? View{width, height} : View{}; }
 };
 
 // Runs f(scene, camera) at the precision the scene needs.
 template <class F> auto withScene(const Invocation& inv, F&& f) {
-  const Arithmetic arithmetic = chooseArithmetic(inv.scene, inv.options.arithmetic);
-  return withPrecision(arithmetic.precision, [&](auto tag) {
+  const Arithmetic arithmetic = chooseArithmetic(inv.scene, inv.options.arithmetic, inv.view());
+  return withPrecision(arithmetic.tier, [&](auto tag) {
     using T = decltype(tag);
     const Scene<T> scene(inv.scene, arithmetic, inv.options.hierarchy, inv.options.threads);
     const Camera<T> camera(inv.scene.camera, inv.width, inv.height);

@@ -9,7 +9,7 @@ template <class T> class Object;
 
 template <class T> struct Hit {
   T t = T(0);                       // world-space ray parameter
-  Vec3<T> point{0};                 // on the surface, re-projected by the shape (stability.md F4); the
+  Vec3<T> point{0};                 // on the surface, re-projected by the shape (docs/reference/stability.md F4); the
                                     // course tier reports o + t·d instead (Scene::hitPoint)
   Vec3<T> normal{0};                // unit, geometric, pointing out of the object whatever side the ray is on
   const Object<T>* object = nullptr;

@@ -6,7 +6,7 @@
 namespace rt {
 
 // Geometry is templated on the scalar T (float or double), chosen per scene by the precision budget
-// (see precision.hpp). Colours are always float: 24 mantissa bits are far more than an 8-bit pixel needs.
+// (see scene/arithmetic.hpp). Colours are always float: 24 mantissa bits are far more than an 8-bit pixel needs.
 template <class T> using Vec3 = glm::vec<3, T, glm::defaultp>;
 template <class T> using Mat4 = glm::mat<4, 4, T, glm::defaultp>;
 using Color = glm::vec3;

@@ -1,5 +1,5 @@
 // A ray o + t·d. Directions are unit length except for object-space rays of transformed objects, whose t must
-// stay the world t (csc473-course.md §c.10).
+// stay the world t (docs/reference/csc473.md §c.10).
 #pragma once
 
 #include "raytrace/geometry/math.hpp"

@@ -15,9 +15,9 @@ enum class SphereMethod { Auto, Textbook, Robust };
 
 // Ray-sphere with the two robust steps of Ray Tracing Gems ch. 7 (Haines et al. 2019), also used by pbrt-v4:
 //  - the discriminant from the perpendicular distance l of the centre to the ray, r² − |l|², which loses
-//    only ≈ε·D instead of ε·D²/r to cancellation (stability.md F1);
+//    only ≈ε·D instead of ε·D²/r to cancellation (docs/reference/stability.md F1);
 //  - the root pair q = −(b + sign(b)·√Δ), t0 = q/a, t1 = c/q, which avoids subtracting nearly equal numbers
-//    (Numerical Recipes §5.6; stability.md F2).
+//    (Numerical Recipes §5.6; docs/reference/stability.md F2).
 // With f = o − c the quadratic is a·t² + 2b·t + c = 0, a = d·d, b = f·d, c = f·f − r², Δ = b² − a·c.
 // The same equation in the plane perpendicular to an axis is the ray-cylinder side test. Needs d ≠ 0.
 template <class T> bool robustRoots(const Vec3<T>& f, const Vec3<T>& d, T radius, T& t0, T& t1) {

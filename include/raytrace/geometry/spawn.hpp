@@ -1,5 +1,5 @@
 // The one self-intersection policy: every ray that starts on a surface (shadow, reflection, refraction) is
-// made here, and nowhere else is an epsilon chosen (stability.md F3–F6).
+// made here, and nowhere else is an epsilon chosen (docs/reference/stability.md F3–F6).
 #pragma once
 
 #include <algorithm>
@@ -18,21 +18,21 @@ namespace rt {
 
 enum class OffsetPolicy {
   // Move the re-projected hit point along the normal, to the side the ray leaves by, by kRayEpsilon
-  // relative to the point's magnitude (Mitsuba 3 `offset_p`; stability.md F4a). Zero re-hits at any scale.
+  // relative to the point's magnitude (Mitsuba 3 `offset_p`; docs/reference/stability.md F4a). Zero re-hits at any scale.
   Relative,
   // The course reference's P ± 0.001·N: 0.001 along the normal, to the side the ray leaves by (the 2018
-  // reference renderer that made the p5 images; the course tier's offset, precision.hpp). Fails once the
-  // coordinates' rounding nears 0.001 or a feature is thinner than it (stability.md F4, F5; the tier's
+  // reference renderer that made the p5 images; the course tier's offset, scene/arithmetic.hpp). Fails once the
+  // coordinates' rounding nears 0.001 or a feature is thinner than it (docs/reference/stability.md F4, F5; the tier's
   // domain, chooseArithmetic()). An earlier reference (2018-05-17) moved along the ray instead, P + 0.001·d
-  // (csc473-course.md §c.8): the p3/p4 printrays texts were made by it and now differ in their 4th decimals
+  // (docs/reference/csc473.md §c.8): the p3/p4 printrays texts were made by it and now differ in their 4th decimals
   // (optional tests).
   Course,
   // A fixed 1e-4 along the normal, the other common epsilon. Fails once ulp(|p|) exceeds it (|p| ≳ 1e3 in
-  // float, stability.md F4); for the chart only.
+  // float, docs/reference/stability.md F4); for the chart only.
   FixedNormal,
   // Wächter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection" (Ray Tracing Gems ch. 6):
   // 256 ulps per unit of normal component, added to the coordinates' bits, and 1/65536 absolute near the
-  // origin (|x| < 1/32) where ulps vanish (stability.md F4b). For the chart; ~10× Relative's offset.
+  // origin (|x| < 1/32) where ulps vanish (docs/reference/stability.md F4b). For the chart; ~10× Relative's offset.
   WaechterBinder,
 };
 

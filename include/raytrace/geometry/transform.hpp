@@ -1,5 +1,5 @@
-// A POV object's transforms as the file writes them, and the matrix they compose to (csc473-course.md §c.10).
-// Kept as steps so the matrix can be composed in either precision: the course tier (precision.hpp) needs the
+// A POV object's transforms as the file writes them, and the matrix they compose to (docs/reference/csc473.md §c.10).
+// Kept as steps so the matrix can be composed in either precision: the course tier (scene/arithmetic.hpp) needs the
 // very float matrix the course's reference renderer builds, rounding included.
 #pragma once
 

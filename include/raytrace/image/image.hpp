@@ -28,13 +28,13 @@ class Image {
   int width_, height_;
   // Top row first, as PNG stores them; all black to start with. From calloc, whose large blocks are fresh
   // zero pages: nothing is written until the render threads write their own pixels. Filling a vector
-  // would write every page first, on one thread (7 ms at 1280×960).
+  // would write every page first, on one thread (docs/performance-notes.md, "The image's memory").
   std::unique_ptr<Color[], Free> pixels_;
 };
 
 // 8-bit RGB pixels, three bytes each, top row first: what a PNG file holds. renderRgb8 writes its tiles straight
-// into one, so that no float image is kept: at 1280×960 that would be 14.7 MB more to fault in (3600 pages)
-// and a pass of its own to convert.
+// into one, so that no float image is kept: more pages to fault in and a pass of its own to convert
+// (docs/performance-notes.md, "The image's memory").
 class Rgb8Image {
  public:
   // Throws Error, before taking any memory, when the machine lacks the memory for the image (limits.hpp).

@@ -1,4 +1,4 @@
-// The Georgia Tech CS 3451 (Spring 2018) Project 3 scene language, `.cli` files (cs3451-course.md §A.2):
+// The Georgia Tech CS 3451 (Spring 2018) Project 3 scene language, `.cli` files (docs/reference/cs3451.md §A.2):
 // one command per line, run in order, each `write` rendering the scene built so far.
 #pragma once
 
@@ -10,7 +10,7 @@
 namespace rt {
 
 // Parses a whole .cli text. The result is the scene as it stands at the end of the file, with one WriteDesc
-// per `write` (the scene as it stood at that line) and the language's conventions (cs3451-course.md §A.4).
+// per `write` (the scene as it stood at that line) and the language's conventions (docs/reference/cs3451.md §A.4).
 // Throws ParseError ("file:line:col: error: …") at the first problem, so nothing is rendered from a bad file.
 SceneDesc parseCs3451(std::string_view text, const std::string& file);
 

@@ -1,4 +1,4 @@
-// The POV-Ray subset of the Cal Poly CSC 473 course (csc473-course.md §b), read as POV-Ray 3.7 reads it.
+// The POV-Ray subset of the Cal Poly CSC 473 course (docs/reference/csc473.md §b), read as POV-Ray 3.7 reads it.
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// The course camera (csc473-course.md §d): a ray from `location` through the image plane spanned by `right`
+// The course camera (docs/reference/csc473.md §d): a ray from `location` through the image plane spanned by `right`
 // and `up` at unit distance along the viewing direction. Pixel (x, y) has y growing upward.
 #pragma once
 

@@ -1,5 +1,5 @@
 // The record of every ray the tracer follows for one pixel, and the course's two ways of printing it:
-// `printrays` (csc473-course.md §a.3) and the decorated `pixeltrace` (§a.9). The tracer fills the records while
+// `printrays` (docs/reference/csc473.md §a.3) and the decorated `pixeltrace` (§a.9). The tracer fills the records while
 // it computes the colour (tracer.hpp), so what is printed is what was rendered.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The shading formulas of the course (csc473-course.md §c), each a pure function of unit vectors and the
+// The shading formulas of the course (docs/reference/csc473.md §c), each a pure function of unit vectors and the
 // material, so each can be checked by hand. The tracer (tracer.hpp) decides where they are applied.
 #pragma once
 
@@ -35,7 +35,8 @@ float schlick(float cosTheta, float ior);
 template <class T> Vec3<T> reflectDirection(const Vec3<T>& d, const Vec3<T>& n);
 
 // Snell's law for incoming direction d at a surface with OUTWARD normal n (§c.4). Entering (d·n ≤ 0) bends by
-// 1/ior, leaving by ior about −n. Nothing on total internal reflection (negative radicand, stability.md F9).
+// 1/ior, leaving by ior about −n. Nothing on total internal reflection (negative radicand, docs/reference/stability.md
+// F9).
 template <class T> std::optional<Vec3<T>> refractDirection(const Vec3<T>& d, const Vec3<T>& n, float ior);
 
 // Beer's law (§c.6): the fraction of each channel left after `distance` (possibly +∞) inside a medium of

@@ -104,10 +104,11 @@ template <class T> class Tracer {
                   const std::optional<Vec3<T>>& refracted, const Path& path, RayRecord* record);
   // The shadow ray toward `light`, or false when the light cannot light the point from the viewer's side `n`:
   // a light behind the surface as the viewer sees it, or on the point itself.
-  // It is written into `out` in place (it is made for every hit and light, and a returned copy would be
-  // read back before its bytes have settled: a store-forwarding stall per ray).
+  // It is written into `out` in place: it is made for every hit and light, and a returned copy would stall
+  // (docs/performance-notes.md, "Shadow rays built in place").
   bool shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, ShadowRay& out) const;
-  // Whether a secondary ray of accumulated weight `weight` at `depth` is worth tracing (stability.md F12).
+  // Whether a secondary ray of accumulated weight `weight` at `depth` is worth tracing (docs/reference/stability.md
+  // F12).
   bool matters(float weight, int depth) const;
 
   const Scene<T>& scene_;

@@ -20,10 +20,10 @@ struct CameraDesc {
   glm::dvec3 right{1.33333, 0, 0};  // carries the aspect ratio; not normalized (§d)
   glm::dvec3 lookAt{0, 0, -1};
   // Where in a pixel the eye ray passes, in pixel units from the pixel's lower-left corner. The course
-  // uses the centre (§d); the .cli reference images need (0, 1) (cs3451-course.md §A.4).
+  // uses the centre (§d); the .cli reference images need (0, 1) (docs/reference/cs3451.md §A.4).
   glm::dvec2 pixelOffset{0.5, 0.5};
   // .cli: `right` is written for a square image and is stretched by width/height when the image is made, so
-  // pixels stay square at any size and `fov` stays the vertical angle (cs3451-course.md §A.4 leaves this open).
+  // pixels stay square at any size and `fov` stays the vertical angle (docs/reference/cs3451.md §A.4 leaves this open).
   bool rightFollowsImage = false;
 };
 

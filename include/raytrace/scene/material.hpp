@@ -5,7 +5,7 @@
 
 namespace rt {
 
-// A POV-Ray `finish` block as written (csc473-course.md §b): what `sceneinfo` prints, and what the POV parser
+// A POV-Ray `finish` block as written (docs/reference/csc473.md §b): what `sceneinfo` prints, and what the POV parser
 // makes a Material of.
 struct Finish {
   double ambient = 0, diffuse = 0, specular = 0;

@@ -34,8 +34,8 @@ template <class T> class Axial {
 
   // Hits are re-projected this far inside the rim of a shape reaching `radius` from the axis: rounding the
   // world point (≈ ε·|p| per coordinate) must not put a side hit beyond an end or an end hit beyond the
-  // side, where the offset along its own normal would not bring a spawned ray back inside (stability.md F6:
-  // measured 6 of 30000 rays entering a float cylinder at |p| = 1e4 found the cap again without it).
+  // side, where the offset along its own normal would not bring a spawned ray back inside (docs/reference/stability.md
+  // F6: measured 6 of 30000 rays entering a float cylinder at |p| = 1e4 found the cap again without it).
   T rimMargin(T radius) const {
     return T(8) * std::numeric_limits<T>::epsilon() * std::max(T(1), maxAbs(base_) + height_ + radius);
   }
@@ -54,14 +54,15 @@ template <class T> class Axial {
   }
 
   // Whether the side surface's root t lies between the end planes; inclusive, so the rim has no crack
-  // (stability.md F6).
+  // (docs/reference/stability.md F6).
   bool withinHeight(const Split& s, T t) const {
     const T y = s.oy + t * s.dy;
     return T(0) <= y && y <= height_;
   }
 
   // Where the ray crosses the end disk (Base or Cap) of radius `radius`. Computed only when the ray is not
-  // parallel to the disk, where t would be ±∞ or NaN (stability.md F8); the radius bound is inclusive (F6).
+  // parallel to the disk, where t would be ±∞ or NaN (docs/reference/stability.md F8); the radius bound is inclusive
+  // (F6).
   std::optional<T> diskT(const Split& s, Part end, T radius) const {
     if (s.dy == T(0) || radius == T(0)) return std::nullopt;
     const T t = ((end == Part::Cap ? height_ : T(0)) - s.oy) / s.dy;

@@ -9,7 +9,7 @@ namespace rt {
 
 template <class T> class Transformed final : public Object<T> {
  public:
-  // `course`: the course tier's hit (precision.hpp), the world point o + t·d with the normal the inner
+  // `course`: the course tier's hit (scene/arithmetic.hpp), the world point o + t·d with the normal the inner
   // shape has at M⁻¹ of it, instead of the inner shape's hit point and normal carried to the world.
   Transformed(std::unique_ptr<Object<T>> inner, const Mat4<T>& worldFromObject, const Material& material,
               int id, bool course = false);

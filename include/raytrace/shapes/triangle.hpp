@@ -5,7 +5,7 @@
 namespace rt {
 
 // The triangle a, b, c, seen from both sides. Its normal (b − a) × (c − a), normalized, is the "outward"
-// one (csc473-course.md §c.11). A degenerate triangle (zero area) is never hit.
+// one (docs/reference/csc473.md §c.11). A degenerate triangle (zero area) is never hit.
 template <class T> class Triangle final : public Object<T> {
  public:
   Triangle(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, const Material& material, int id);

@@ -1,0 +1,29 @@
+// The lengths that set how much a scene's arithmetic can lose (docs/accuracy.md, "The precision budget").
+#pragma once
+
+#include "raytrace/scene/description.hpp"
+
+namespace rt {
+
+// The two lengths the precision budget compares (docs/reference/stability.md §1.1).
+struct SceneScale {
+  // The largest coordinate or ray length, at least 1; ray lengths are bounded by the diagonal of the box
+  // around the camera and the objects.
+  double extent;
+  double smallestFeature;  // +∞ when no object has one (planes only, or nothing)
+  glm::dvec3 lo, hi;       // the box around the camera and every bounded object: where rays start
+};
+SceneScale sceneScale(const SceneDesc& scene);
+
+// The scene's precision budget R = extent ÷ smallest feature (the extent alone when there is no feature).
+double precisionBudget(const SceneDesc& scene);
+double precisionBudget(const SceneScale& scale);
+
+// How much a transform can stretch (largest column norm) and shrink (smallest column norm) lengths. Enough
+// for a budget: it bounds the world-space extents by a small factor.
+struct Stretch {
+  double most, least;
+};
+Stretch stretch(const glm::dmat4& m);
+
+}  // namespace rt
