@@ -55,10 +55,11 @@ int renderImage(const Invocation& inv, std::ostream&) {
     }
   }
   RenderTimes times;
+  RayCounts rays;
   const RenderOptions& options = inv.options;
   double png = 0;
   const auto renderTo = [&](const SceneDesc& scene, const std::string& path) {
-    const Rgb8Image image = renderRgb8(scene, inv.width, inv.height, options, {inv.progress, &times});
+    const Rgb8Image image = renderRgb8(scene, inv.width, inv.height, options, {inv.progress, &times, &rays});
     Stopwatch watch;
     writePng(image, path, options.threads);
     png += watch.lap();
@@ -87,6 +88,12 @@ int renderImage(const Invocation& inv, std::ostream&) {
                << ms(inv.loadSeconds + times.build + times.trace + png) << " (" << inv.width << "x" << inv.height
                << ", " << options.samples * options.samples << (options.samples == 1 ? " eye ray" : " eye rays")
                << " per pixel, " << options.threads << (options.threads == 1 ? " thread)\n" : " threads)\n");
+    char line[160];
+    std::snprintf(line, sizeof line,
+                  "raytrace: rays %llu eye, %llu gather, %llu shadow, %llu secondary; %.2f M rays/s in trace\n",
+                  (unsigned long long)rays.eye, (unsigned long long)rays.gather, (unsigned long long)rays.shadow,
+                  (unsigned long long)rays.secondary, times.trace > 0 ? double(rays.total()) / times.trace / 1e6 : 0.0);
+    *inv.stats << line;
   }
   return status;
 }

@@ -1,6 +1,7 @@
 #include "raytrace/render/renderer.hpp"
 
 #include <algorithm>
+#include <mutex>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -38,13 +39,20 @@ void renderRows(const SceneDesc& desc, int width, int height, const RenderOption
     // fresh pages of the image at once, and the kernel would fault each twice (docs/performance-notes.md,
     // "Tile order").
     const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
+    std::mutex countsMutex;
     ProgressMeter progress(monitor.progress, int64_t(width) * height, options.samples * options.samples);
     parallelFor(tilesX * tilesY, options.threads, [&](int tile) {
       const int x0 = tile / tilesY * kTile, y0 = tile % tilesY * kTile;
       const int x1 = std::min(width, x0 + kTile), y1 = std::min(height, y0 + kTile);
       Tracer<T> tileTracer = tracer;
-      for (int y = y0; y < y1; ++y) store(x0, y, x1, tileTracer.block(camera, x0, y, x1, y + 1));
-      progress.add(int64_t(x1 - x0) * (y1 - y0));
+      for (int y = y0; y < y1; ++y) {
+        store(x0, y, x1, tileTracer.block(camera, x0, y, x1, y + 1));
+        progress.add(x1 - x0);  // row by row: a -gi tile takes seconds
+      }
+      if (monitor.rays) {
+        const std::lock_guard<std::mutex> lock(countsMutex);
+        *monitor.rays += tileTracer.counts();
+      }
     });
     if (monitor.times) {
       monitor.times->build += build;
