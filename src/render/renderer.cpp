@@ -46,7 +46,7 @@ void renderRows(const SceneDesc& desc, int width, int height, const RenderOption
       const int x1 = std::min(width, x0 + kTile), y1 = std::min(height, y0 + kTile);
       Tracer<T> tileTracer = tracer;
       for (int y = y0; y < y1; ++y) {
-        store(x0, y, x1, tileTracer.block(camera, x0, y, x1, y + 1));
+        store(x0, y, x1, tileTracer.tile(camera, x0, y, x1, y + 1));
         progress.add(x1 - x0);  // row by row: a -gi tile takes seconds
       }
       if (monitor.rays) {

@@ -55,7 +55,7 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
     : scene_(scene),
       options_(options),
       conventions_(scene.desc().conventions),
-      lastBlocker_(scene.lights().size(), nullptr),
+      lastOccluder_(scene.lights().size(), nullptr),
       batches_(size_t(1 + (options.gi.enabled ? options.gi.bounceCount() : 0))) {
   if (options.depth) conventions_.maxDepth = *options.depth;
   float localMax = 0, gain = 0;
@@ -109,7 +109,7 @@ Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRec
   return sum / float(n * n);
 }
 
-template <class T> const Color* Tracer<T>::block(const Camera<T>& camera, int x0, int y0, int x1, int y1) {
+template <class T> const Color* Tracer<T>::tile(const Camera<T>& camera, int x0, int y0, int x1, int y1) {
   const int n = options_.samples;
   Batch& eye = batches_[0];  // in pixel() order: pixel by pixel, row by row, then sample by sample
   const size_t count = size_t(x1 - x0) * size_t(y1 - y0) * size_t(n * n);
@@ -173,9 +173,9 @@ template <class T> void Tracer<T>::traceBatch(Batch& batch, int count, RayRecord
         if (const auto& s = shadows[size_t(i) * lights + l]) query[m] = s->ray, segments[m] = s->segment, index[m++] = i;
       }
       bool answers[kPacket];
-      scene_.occluded(query, segments, m, answers, &lastBlocker_[l]);
+      scene_.occluded(query, segments, m, answers, &lastOccluder_[l]);
       counts_.shadow += uint64_t(m);
-      for (int k = 0; k < m; ++k) shadows[size_t(index[k]) * lights + l]->blocked = answers[k];
+      for (int k = 0; k < m; ++k) shadows[size_t(index[k]) * lights + l]->occluded = answers[k];
     }
     for (int i = 0; i < size; ++i) {
       const size_t r = size_t(first + i);
@@ -342,13 +342,13 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
     if (shadows) {
       if (shadows[i]) s = &*shadows[i];
     } else if (shadowRay(hit, n, light, own)) {
-      own.blocked = scene_.occluded(own.ray, own.segment, &lastBlocker_[i]);
+      own.occluded = scene_.occluded(own.ray, own.segment, &lastOccluder_[i]);
       ++counts_.shadow;
       s = &own;
     }
     if (!s) continue;
-    if (record) record->shadows.push_back({glm::dvec3(s->ray.origin), glm::dvec3(s->ray.dir), s->blocked});
-    if (s->blocked) continue;
+    if (record) record->shadows.push_back({glm::dvec3(s->ray.origin), glm::dvec3(s->ray.dir), s->occluded});
+    if (s->occluded) continue;
     diffuse += light.color * m.diffuse * std::min(s->nl, 1.0f);
     if (m.specular == Color(0)) continue;  // a matte surface: no power to take
     const float factor = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, s->l, m.exponent)
@@ -408,7 +408,7 @@ bool Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& l
   // Where n faces the light (n·l > 0) it picks the side to leave by as l would. The ray is made before the
   // verdict, which it does not need, so that the two chains of square root and division overlap.
   spawnRayTo(hit, light.position, out.l, n, *scene_.arithmetic().offset, out.ray, out.segment);
-  out.blocked = false;
+  out.occluded = false;
   return out.nl > 0.0f;
 }
 

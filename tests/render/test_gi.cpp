@@ -177,7 +177,7 @@ TEST_CASE("GI images are the same for any thread count and any tile order, and p
     Image shuffled(kW, kH);
     for (const auto& [x0, y0] : blocks) {
       const int x1 = std::min(kW, x0 + 5), y1 = std::min(kH, y0 + 4);
-      const Color* colors = tracer.block(camera, x0, y0, x1, y1);
+      const Color* colors = tracer.tile(camera, x0, y0, x1, y1);
       for (int y = y0; y < y1; ++y) {
         for (int x = x0; x < x1; ++x) shuffled.at(x, y) = *colors++;
       }

@@ -31,7 +31,7 @@ template <class T> class Tracer {
   // The colours of the pixels of [x0, x1) × [y0, y1), row by row from y0, each the colour pixel() gives it: the
   // eye rays and their shadow rays go through the scene in packets (Scene::closestHits), and so do the gather
   // rays of each hit. They are the tracer's own memory, valid until its next call.
-  const Color* block(const Camera<T>& camera, int x0, int y0, int x1, int y1);
+  const Color* tile(const Camera<T>& camera, int x0, int y0, int x1, int y1);
 
   // The rays traced so far, by kind.
   const RayCounts& counts() const { return counts_; }
@@ -59,10 +59,10 @@ template <class T> class Tracer {
     Interval<T> segment;
     Vec3<T> l;             // the unit vector from the point itself to the light, which shading uses
     float nl;              // n·l
-    bool blocked = false;  // the answer, once asked
+    bool occluded = false;  // the answer, once asked
   };
 
-  // Rays traced together (traceBatch): the eye rays of block(), or the gather rays of one hit. Each level of
+  // Rays traced together (traceBatch): the eye rays of tile(), or the gather rays of one hit. Each level of
   // gathering has its own, kept from call to call so that the gather loop allocates nothing.
   struct Batch {
     std::vector<Ray<T>> rays;
@@ -122,8 +122,8 @@ template <class T> class Tracer {
   float cutoff_;
   int treeRays_;      // the most rays an eye ray's tree may have: a full tree of depth min(maxDepth, kFullTreeDepth)
   int raysLeft_ = 0;  // the secondary rays the current eye ray's tree may still have
-  std::vector<const Object<T>*> lastBlocker_;  // per light: what blocked its latest shadow ray (Scene::occluded)
-  std::vector<Batch> batches_;                 // [0] block()'s eye rays, [1 + b] the gather rays at bounce b
+  std::vector<const Object<T>*> lastOccluder_;  // per light: what occluded its latest shadow ray (Scene::occluded)
+  std::vector<Batch> batches_;                 // [0] tile()'s eye rays, [1 + b] the gather rays at bounce b
   RayCounts counts_;
   std::vector<GatherSummary>* gathers_ = nullptr;  // pixel()'s per-bounce summary while it is asked for
 };
