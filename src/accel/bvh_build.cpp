@@ -317,6 +317,10 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects, int
   const std::vector<BinaryNode<T>> binary = buildBinary(objects, order, threads);
   objects_.reserve(objects.size());
   for (uint32_t i : order) objects_.push_back(objects[i]);
+  primitives_.resize(objects_.size());
+  parallelForChunks(objects_.size(), kObjectChunk, threads, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) primitives_[i] = Primitive<T>::of(*objects_[i]);
+  });
   nodes_ = collapse(binary);
 }
 

@@ -11,19 +11,6 @@ namespace rt {
 
 namespace {
 
-// The next representable value above t: the smallest limit that still admits a hit at exactly t. A hit's t is
-// positive, where this is one step of the bit pattern; std::nextafter covers the rest.
-template <class T> T nextUp(T t) {
-  using Bits = std::conditional_t<sizeof(T) == 4, uint32_t, uint64_t>;
-  constexpr T inf = std::numeric_limits<T>::infinity();
-  if (!(t > T(0) && t < inf)) return std::nextafter(t, inf);
-  Bits bits;
-  std::memcpy(&bits, &t, sizeof t);
-  ++bits;
-  std::memcpy(&t, &bits, sizeof t);
-  return t;
-}
-
 // The packet a query fills in, one per thread. A kernel computes on whole registers, so it may read the lanes
 // of rays that are not in the query: they hold what an earlier query left there, or zeros, and the results
 // are masked out. Zeroing a fresh packet for every query would cost more than the rest of a short one.
@@ -45,9 +32,12 @@ void Bvh<T>::entries(const Node& node, const Packet& packet, T tMin, uint32_t ra
 template <class T>
 void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const {
   if (nodes_.empty() || n == 0) return;
+  if (n == 1) return closestHit(rays[0], range, best[0]);
   Packet& packet = scratchPacket<T>();
   // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
   for (int i = 0; i < n; ++i) packet.set(i, rays[i], best[i] ? nextUp(best[i]->t) : range.max);
+  std::optional<ClosestSoFar<T>> closest[kPacket];
+  for (int i = 0; i < n; ++i) closest[i].emplace(best[i]);
   // Children still to visit, each with the rays that enter it, nearest on top: the child the packet enters
   // first is visited next, and the hits found there cut off the farther ones.
   struct Pending {
@@ -60,13 +50,10 @@ void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::opti
   for (;;) {
     if (current.count) {
       for (uint32_t o = current.first; o < current.first + current.count; ++o) {
-        const Object<T>* object = objects_[o];
         for (uint32_t mask = current.rays; mask; mask &= mask - 1) {
           const int i = __builtin_ctz(mask);
-          auto hit = object->intersect(rays[i], Interval<T>{range.min, packet.tMax[i][0]});
-          if (hit && (!best[i] || hit->t < best[i]->t || object->id() < best[i]->object->id())) {
-            best[i] = hit;
-            std::fill_n(packet.tMax[i], kWidth, nextUp(hit->t));
+          if (closest[i]->test(primitives_[o], *objects_[o], rays[i], {range.min, packet.tMax[i][0]}, best[i])) {
+            std::fill_n(packet.tMax[i], kWidth, nextUp(closest[i]->t()));
           }
         }
       }
@@ -94,7 +81,10 @@ void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::opti
     // Next, the nearest pending child that some of its rays may enter before their closest hits.
     bool found = false;
     while (!found) {
-      if (size == 0) return;
+      if (size == 0) {
+        for (int i = 0; i < n; ++i) closest[i]->finish(rays[i], range.min, best[i]);
+        return;
+      }
       current = stack[--size];
       for (uint32_t mask = current.rays; mask && !found; mask &= mask - 1) {
         found = !(current.t > packet.tMax[__builtin_ctz(mask)][0] * kFarScale<T>);
@@ -106,7 +96,12 @@ void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::opti
 template <class T>
 void Bvh<T>::occluders(const Ray<T>* rays, const Interval<T>* ranges, uint32_t active,
                        const Object<T>** found) const {
-  if (nodes_.empty()) return;
+  if (nodes_.empty() || !active) return;
+  if (!(active & (active - 1))) {
+    const int i = __builtin_ctz(active);
+    if (const Object<T>* o = occluder(rays[i], ranges[i])) found[i] = o;
+    return;
+  }
   Packet& packet = scratchPacket<T>();
   // Every ray has its own tMin; the smallest, tested against all, only admits more boxes, whose objects are
   // then tested with each ray's own range.
@@ -137,7 +132,15 @@ void Bvh<T>::occluders(const Ray<T>* rays, const Interval<T>* ranges, uint32_t a
         continue;
       }
       for (uint32_t o = node.first[k]; o < node.first[k] + node.count[k]; ++o) {
-        active &= ~objects_[o]->noteOccluder(rays, ranges, childRays[k] & active, found);
+        const Primitive<T>& p = primitives_[o];
+        if (p.kind == Primitive<T>::Kind::Other) {
+          active &= ~objects_[o]->noteOccluder(rays, ranges, childRays[k] & active, found);
+        } else {
+          for (uint32_t mask = childRays[k] & active; mask; mask &= mask - 1) {
+            const int i = __builtin_ctz(mask);
+            if (p.meets(rays[i], ranges[i])) found[i] = objects_[o], active &= ~(1u << i);
+          }
+        }
         if (!active) return;
       }
     }

@@ -1,14 +1,22 @@
 #include "raytrace/app/arguments.hpp"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <initializer_list>
+#include <limits>
 #include <utility>
 
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/message.hpp"
 
 namespace rt {
+
+namespace {
+// Gather rays per hit and gathering levels: beyond these a render would take years, so they are typos.
+constexpr int kMaxGatherSamples = 1 << 16;
+constexpr int kMaxBounces = 16;
+}  // namespace
 
 int parseInt(const std::string& s, const char* what, int lo, int hi) {
   errno = 0;
@@ -75,7 +83,27 @@ std::string pixelFlags(const RenderOptions& o) {
   add(o.fresnel, "-fresnel");
   add(o.beers, "-beers");
   add(o.normals, "-normals");
+  add(o.gi.enabled, "-gi");
+  std::string counts;
+  for (const int n : o.gi.samples) counts += (counts.empty() ? "" : ",") + std::to_string(n);
+  add(o.gi.samples != defaults.gi.samples, "-gi_samples=" + counts);
+  add(o.gi.bounces.has_value(), "-gi_bounces=" + std::to_string(o.gi.bounces.value_or(0)));
+  add(o.gi.seed != defaults.gi.seed, "--seed=" + std::to_string(o.gi.seed));
+  char adaptive[32];
+  std::snprintf(adaptive, sizeof adaptive, "%.9g", double(o.gi.adaptive.value_or(0)));  // the float exactly
+  add(o.gi.adaptive.has_value(), std::string("--gi-adaptive=") + adaptive);
   return flags;
+}
+
+std::vector<int> parseCounts(const std::string& s, const char* what, int lo, int hi) {
+  std::vector<int> counts;
+  size_t start = 0;
+  for (;;) {
+    const size_t comma = s.find(',', start);
+    counts.push_back(parseInt(s.substr(start, comma - start), what, lo, hi));
+    if (comma == std::string::npos) return counts;
+    start = comma + 1;
+  }
 }
 
 RenderOptions parseFlag(const std::string& flag, RenderOptions o) {
@@ -107,11 +135,34 @@ RenderOptions parseFlag(const std::string& flag, RenderOptions o) {
     o.samples = parseInt(p, "-ss", 1, 64);
     return o;
   }
+  if (const char* p = value("-gi_samples")) {
+    o.gi.samples = parseCounts(p, "-gi_samples", 1, kMaxGatherSamples);
+    return o;
+  }
+  if (const char* p = value("-gi_bounces")) {
+    o.gi.bounces = parseInt(p, "-gi_bounces", 0, kMaxBounces);
+    return o;
+  }
+  if (const char* p = value("--gi-adaptive")) {
+    errno = 0;
+    char* end = nullptr;
+    const double e = std::strtod(p, &end);
+    if (*p == '\0' || *end != '\0' || errno == ERANGE || !(e > 0 && e <= 1)) {
+      throw Error(std::string("--gi-adaptive must be a number above 0 and at most 1, found '") + p + "'");
+    }
+    o.gi.adaptive = float(e);
+    return o;
+  }
+  if (const char* p = value("--seed")) {
+    o.gi.seed = uint64_t(parseInt(p, "--seed", 0, std::numeric_limits<int>::max()));
+    return o;
+  }
   if (const char* p = value("--threads")) {
     o.threads = parseInt(p, "--threads", 1, kMaxThreads);
     return o;
   }
-  if (flag == "-altbrdf") o.brdf = Brdf::CookTorrance;
+  if (flag == "-gi") o.gi.enabled = true;
+  else if (flag == "-altbrdf") o.brdf = Brdf::CookTorrance;
   else if (flag == "-fresnel") o.fresnel = true;
   else if (flag == "-beers") o.beers = true;
   else if (flag == "-normals") o.normals = true;

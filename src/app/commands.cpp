@@ -74,12 +74,20 @@ const char* const kRenderOptions =
     "  -fresnel                        Schlick-weighted reflection and refraction\n"
     "  -beers                          Beer's-law absorption inside transparent objects\n"
     "  -ss=N                           N x N stratified samples per pixel (1 to 64)\n"
+    "  -gi                             Monte Carlo global illumination: indirect light gathered with\n"
+    "                                  stratified cosine-weighted rays instead of the ambient term\n"
+    "  -gi_samples=N[,N...]            gather rays per hit at bounce 1, 2, ... (default 64,16)\n"
+    "  -gi_bounces=B                   gathering levels (default: one per sample count; past the list,\n"
+    "                                  its last count)\n"
+    "  --seed N                        -gi's random numbers (default 0); same image for any threads\n"
+    "  --gi-adaptive=E                 the first bounce gathers in rounds and stops once the standard\n"
+    "                                  error of its light is below E (e.g. 0.01); -gi_samples caps it\n"
     "  -normals                        colour each hit by its normal (debug)\n"
     "  --threads N                     load, build and render on N threads (default: every core); same\n"
     "                                  scene and image for any N\n"
     "  --quiet                         no progress line (shown only while rendering to a terminal)\n"
     "  --stats                         after render, how long loading, building, tracing and writing the\n"
-    "                                  image took (stderr)\n"
+    "                                  image took, and the rays traced by kind (stderr)\n"
     "  -sds                            accepted for the course; a hierarchy is used whenever it pays\n"
     "  --hierarchy=auto|always|never   force the bounding volume hierarchy on or off (same image)\n";
 
@@ -235,8 +243,8 @@ Words readWords(const std::vector<std::string>& args) {
       words.region = *v;
       continue;
     }
-    if (a == "--threads") {  // also written --threads=N
-      if (i + 1 == args.size()) throw Error("--threads needs a number of threads");
+    if (a == "--threads" || a == "--seed") {  // also written --threads=N, --seed=N
+      if (i + 1 == args.size()) throw Error(a + (a == "--seed" ? " needs a number" : " needs a number of threads"));
       a += "=" + args[++i];
     }
     if (a.size() > 1 && a[0] == '-' && (std::isalpha(static_cast<unsigned char>(a[1])) || a[1] == '-')) {

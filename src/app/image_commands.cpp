@@ -125,8 +125,9 @@ int raycast(const Invocation& inv, std::ostream&) {
 // status tells.
 int renderImage(const Invocation& inv, std::ostream&) {
   RenderTimes times;
+  RayCounts rays;
   const RenderOptions& options = inv.options;
-  const RenderMonitor monitor{inv.progress, &times};
+  const RenderMonitor monitor{inv.progress, &times, &rays};
   const std::vector<Target> all = targets(inv, true);
   if (inv.region && all.size() != 1) throw Error("a tile is of one image, but the scene writes several");
   int status = 0;
@@ -182,6 +183,12 @@ int renderImage(const Invocation& inv, std::ostream&) {
                << ms(inv.loadSeconds + times.build + times.trace + writing) << " (" << inv.width << "x" << inv.height
                << ", " << options.samples * options.samples << (options.samples == 1 ? " eye ray" : " eye rays")
                << " per pixel, " << options.threads << (options.threads == 1 ? " thread)\n" : " threads)\n");
+    char line[160];
+    std::snprintf(line, sizeof line,
+                  "raytrace: rays %llu eye, %llu gather, %llu shadow, %llu secondary; %.2f M rays/s in trace\n",
+                  (unsigned long long)rays.eye, (unsigned long long)rays.gather, (unsigned long long)rays.shadow,
+                  (unsigned long long)rays.secondary, times.trace > 0 ? double(rays.total()) / times.trace / 1e6 : 0.0);
+    *inv.stats << line;
   }
   return status;
 }

@@ -27,7 +27,8 @@ std::string bytes(const Color& c, Conventions::ToByte mode) {
 
 }  // namespace
 
-// The pixel's shaded colour with its eye ray and first hit (§a.2); with -ss, the first sub-sample's ray.
+// The pixel's shaded colour with its eye ray and first hit (§a.2); with -ss, the first sub-sample's ray. With
+// -gi the colour is the pixel's estimate in the rendered image, the same random numbers included.
 int pixelcolor(const Invocation& inv, std::ostream& out) {
   return withScene(inv, [&](const auto& scene, const auto& camera) {
     Tracer tracer(scene, inv.options);
@@ -47,12 +48,14 @@ int pixelcolor(const Invocation& inv, std::ostream& out) {
 }
 
 // Every ray the pixel's colour is made of: printrays (§a.3) or, decorated with shadow rays, pixeltrace (§a.9).
+// With -gi the gather rays are summed up per bounce after the trees (their ambient is the gathered light).
 int rayTrees(const Invocation& inv, std::ostream& out, bool decorated) {
   return withScene(inv, [&](const auto& scene, const auto& camera) {
     Tracer tracer(scene, inv.options);
     std::vector<RayRecord> trees;
-    const Color color = tracer.pixel(camera, inv.x, inv.y, &trees);
-    printRayTrees(out, inv.x, inv.y, bytes(color, inv.scene.conventions.toByte), trees, decorated);
+    std::vector<GatherSummary> gathers;
+    const Color color = tracer.pixel(camera, inv.x, inv.y, &trees, &gathers);
+    printRayTrees(out, inv.x, inv.y, bytes(color, inv.scene.conventions.toByte), trees, decorated, gathers);
     return 0;
   });
 }

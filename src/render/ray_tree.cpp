@@ -68,9 +68,14 @@ void printNode(std::ostream& out, const std::string& prefix, const RayRecord& r,
 }  // namespace
 
 void printRayTrees(std::ostream& out, int x, int y, const std::string& color, const std::vector<RayRecord>& trees,
-                   bool decorated) {
+                   bool decorated, const std::vector<GatherSummary>& gathers) {
   out << "Pixel: [" << x << ", " << y << "] Color: " << color << "\n";
   for (const RayRecord& tree : trees) printNode(out, "", tree, decorated);
+  for (size_t b = 0; b < gathers.size(); ++b) {
+    const GatherSummary& g = gathers[b];
+    out << "Gather bounce " << b + 1 << ": " << g.rays << (g.rays == 1 ? " ray" : " rays") << ", mean radiance "
+        << braces(glm::dvec3(g.rays ? g.radiance / float(g.rays) : Color(0))) << "\n";
+  }
   out << "\n" << std::string(80, '-') << "\n\n";
 }
 

@@ -1,6 +1,7 @@
 #include "raytrace/render/renderer.hpp"
 
 #include <algorithm>
+#include <mutex>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -43,12 +44,19 @@ void renderRows(const SceneDesc& desc, int width, int height, const Region& regi
     const int tilesX = (right - left + kTile - 1) / kTile, tilesY = (top - bottom + kTile - 1) / kTile;
     ProgressMeter progress(monitor.progress, int64_t(region.width()) * region.height(),
                            options.samples * options.samples);
+    std::mutex countsMutex;
     parallelFor(tilesX * tilesY, options.threads, [&](int tile) {
       const int x0 = left + tile / tilesY * kTile, y0 = bottom + tile % tilesY * kTile;
       const int x1 = std::min(right, x0 + kTile), y1 = std::min(top, y0 + kTile);
       Tracer<T> tileTracer = tracer;
-      for (int y = y0; y < y1; ++y) store(x0, y, x1, tileTracer.block(camera, x0, y, x1, y + 1));
-      progress.add(int64_t(x1 - x0) * (y1 - y0));
+      for (int y = y0; y < y1; ++y) {
+        store(x0, y, x1, tileTracer.tile(camera, x0, y, x1, y + 1));
+        progress.add(x1 - x0);  // row by row: a -gi tile takes seconds
+      }
+      if (monitor.rays) {
+        const std::lock_guard<std::mutex> lock(countsMutex);
+        *monitor.rays += tileTracer.counts();
+      }
     });
     if (monitor.times) {
       monitor.times->build += build;

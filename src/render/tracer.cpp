@@ -7,6 +7,8 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "raytrace/render/sampler.hpp"
+
 namespace rt {
 
 namespace {
@@ -15,6 +17,16 @@ namespace {
 template <class T> Vec3<T> viewerSide(const Hit<T>& hit, const Ray<T>& ray) {
   return glm::dot(ray.dir, hit.normal) <= T(0) ? hit.normal : -hit.normal;
 }
+
+// The random-number keys of a hit's reflected and refracted rays, apart from those of its gather samples
+// (0, 1, … below any sample count).
+constexpr uint64_t kReflectionBranch = uint64_t(1) << 40;
+constexpr uint64_t kRefractionBranch = kReflectionBranch + 1;
+
+// --gi-adaptive gathers the first bounce in up to kAdaptiveRounds stratified sets and stops once at least
+// kMinAdaptiveRounds agree well enough (docs/gi.md).
+constexpr int kAdaptiveRounds = 8;
+constexpr int kMinAdaptiveRounds = 3;
 
 float brightest(const Color& c) { return std::max(c.r, std::max(c.g, c.b)); }
 
@@ -43,7 +55,8 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
     : scene_(scene),
       options_(options),
       conventions_(scene.desc().conventions),
-      lastBlocker_(scene.lights().size(), nullptr) {
+      lastOccluder_(scene.lights().size(), nullptr),
+      batches_(size_t(1 + (options.gi.enabled ? options.gi.bounceCount() : 0))) {
   if (options.depth) conventions_.maxDepth = *options.depth;
   float localMax = 0, gain = 0;
   for (const auto& object : scene.objects()) {
@@ -63,7 +76,9 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
   bound_.push_back(level(0));
   for (int r = 1; r <= conventions_.maxDepth; ++r) bound_.push_back(level(bound_.back()));
   const int fullDepth = std::min(conventions_.maxDepth, kFullTreeDepth);
-  cutoff_ = std::ldexp(0.5f / 255.0f, -(fullDepth + 1));
+  // Gathered light has no bound known beforehand: with -gi every secondary ray of any weight is traced, and
+  // only the ray budget bounds a tree.
+  cutoff_ = options.gi.enabled ? 0.0f : std::ldexp(0.5f / 255.0f, -(fullDepth + 1));
   treeRays_ = (1 << (fullDepth + 1)) - 1;
 }
 
@@ -74,23 +89,33 @@ template <class T> bool Tracer<T>::matters(float weight, int depth) {
 }
 
 template <class T>
-Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees) {
+Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees,
+                       std::vector<GatherSummary>* gathers) {
   const int n = options_.samples;
+  if (gathers) gathers->assign(size_t(options_.gi.enabled ? options_.gi.bounceCount() : 0), GatherSummary{});
+  gathers_ = gathers;
   Color sum(0);
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
       RayRecord* record = trees ? &trees->emplace_back() : nullptr;
+      Path path;
+      path.key = pixelKey(options_.gi.seed, x, y, i * n + j);
+      ++counts_.eye;
       raysLeft_ = treeRays_ - 1;
-      sum += trace(camera.sampleRay(x, y, i, j, n), RayRecord::Kind::Primary, 0, 1.0f, record).color;
+      sum += trace(camera.sampleRay(x, y, i, j, n), RayRecord::Kind::Primary, path, record).color;
     }
   }
+  gathers_ = nullptr;
   return sum / float(n * n);
 }
 
-template <class T> const Color* Tracer<T>::block(const Camera<T>& camera, int x0, int y0, int x1, int y1) {
+template <class T> const Color* Tracer<T>::tile(const Camera<T>& camera, int x0, int y0, int x1, int y1) {
   const int n = options_.samples;
-  std::vector<Ray<T>>& rays = rays_;  // in pixel() order: pixel by pixel, row by row, then sample by sample
-  rays.resize(size_t(x1 - x0) * size_t(y1 - y0) * size_t(n * n));
+  Batch& eye = batches_[0];  // in pixel() order: pixel by pixel, row by row, then sample by sample
+  const size_t count = size_t(x1 - x0) * size_t(y1 - y0) * size_t(n * n);
+  eye.rays.resize(count);
+  eye.paths.resize(count);
+  eye.colors.resize(count);
   size_t k = 0;
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x) {
@@ -99,51 +124,18 @@ template <class T> const Color* Tracer<T>::block(const Camera<T>& camera, int x0
           // Stored member by member from registers: push_back would store the ray on the stack and copy it
           // from there at once, a store-forwarding stall per sample.
           const Ray<T> ray = camera.sampleRay(x, y, i, j, n);
-          rays[k].origin = ray.origin;
-          rays[k++].dir = ray.dir;
+          eye.rays[k].origin = ray.origin;
+          eye.rays[k].dir = ray.dir;
+          eye.paths[k++] = Path{0, 0, 1.0f, pixelKey(options_.gi.seed, x, y, i * n + j)};
         }
       }
     }
   }
-  const size_t lights = scene_.lights().size();
-  std::vector<Color>& colors = colors_;
-  colors.resize(rays.size());
-  constexpr int kPacket = Bvh<T>::kPacket;
-  std::vector<std::optional<ShadowRay>>& shadows = shadows_;
-  shadows.resize(kPacket * lights);
-  for (size_t first = 0; first < rays.size(); first += kPacket) {
-    const int count = int(std::min<size_t>(kPacket, rays.size() - first));
-    const Ray<T>* packet = &rays[first];
-    std::optional<Hit<T>> hits[kPacket];
-    scene_.closestHits(packet, count, {}, hits);
-    // The shadow rays of the packet's hits toward each light, asked together: shadows[i · lights + l].
-    for (size_t l = 0; l < lights; ++l) {
-      Ray<T> query[kPacket];
-      Interval<T> segments[kPacket];
-      int index[kPacket], m = 0;
-      for (int i = 0; i < count; ++i) {
-        auto& s = shadows[size_t(i) * lights + l];
-        s.emplace();
-        if (!hits[i] || !shadowRay(*hits[i], viewerSide(*hits[i], packet[i]), scene_.lights()[l], *s)) s.reset();
-      }
-      // Gathered in a second pass: copied right after it is written, a ray is read back before its stores
-      // have left the store buffer, and each such read stalls.
-      for (int i = 0; i < count; ++i) {
-        if (const auto& s = shadows[size_t(i) * lights + l]) query[m] = s->ray, segments[m] = s->segment, index[m++] = i;
-      }
-      bool answers[kPacket];
-      scene_.occluded(query, segments, m, answers, &lastBlocker_[l]);
-      for (int k = 0; k < m; ++k) shadows[size_t(index[k]) * lights + l]->blocked = answers[k];
-    }
-    for (int i = 0; i < count; ++i) {
-      raysLeft_ = treeRays_ - 1;
-      colors[first + size_t(i)] =
-          follow(packet[i], hits[i], RayRecord::Kind::Primary, 0, 1.0f, nullptr, shadows.data() + size_t(i) * lights)
-              .color;
-    }
-  }
+  counts_.eye += count;
+  traceBatch(eye, int(count), RayRecord::Kind::Primary);
   // Each pixel's average in place: pixel p's samples start at p·n² ≥ p.
-  const size_t pixels = colors.size() / size_t(n * n);
+  std::vector<Color>& colors = eye.colors;
+  const size_t pixels = count / size_t(n * n);
   for (size_t p = 0, next = 0; p < pixels; ++p) {
     Color sum(0);
     for (int s = 0; s < n * n; ++s) sum += colors[next++];
@@ -152,15 +144,58 @@ template <class T> const Color* Tracer<T>::block(const Camera<T>& camera, int x0
   return colors.data();
 }
 
+// Each ray of a batch (an eye ray or a gathered one) gets a tree budget of its own; a batch gathered inside a
+// tree leaves that tree's budget as it found it.
+template <class T> void Tracer<T>::traceBatch(Batch& batch, int count, RayRecord::Kind kind) {
+  const int outerRaysLeft = raysLeft_;
+  const size_t lights = scene_.lights().size();
+  constexpr int kPacket = Bvh<T>::kPacket;
+  std::vector<std::optional<ShadowRay>>& shadows = batch.shadows;
+  shadows.resize(kPacket * lights);
+  for (int first = 0; first < count; first += kPacket) {
+    const int size = std::min(kPacket, count - first);
+    const Ray<T>* packet = &batch.rays[size_t(first)];
+    std::optional<Hit<T>> hits[kPacket];
+    scene_.closestHits(packet, size, {}, hits);
+    // The shadow rays of the packet's hits toward each light, asked together: shadows[i · lights + l].
+    for (size_t l = 0; l < lights; ++l) {
+      Ray<T> query[kPacket];
+      Interval<T> segments[kPacket];
+      int index[kPacket], m = 0;
+      for (int i = 0; i < size; ++i) {
+        auto& s = shadows[size_t(i) * lights + l];
+        s.emplace();
+        if (!hits[i] || !shadowRay(*hits[i], viewerSide(*hits[i], packet[i]), scene_.lights()[l], *s)) s.reset();
+      }
+      // Gathered in a second pass: copied right after it is written, a ray is read back before its stores
+      // have left the store buffer, and each such read stalls.
+      for (int i = 0; i < size; ++i) {
+        if (const auto& s = shadows[size_t(i) * lights + l]) query[m] = s->ray, segments[m] = s->segment, index[m++] = i;
+      }
+      bool answers[kPacket];
+      scene_.occluded(query, segments, m, answers, &lastOccluder_[l]);
+      counts_.shadow += uint64_t(m);
+      for (int k = 0; k < m; ++k) shadows[size_t(index[k]) * lights + l]->occluded = answers[k];
+    }
+    for (int i = 0; i < size; ++i) {
+      const size_t r = size_t(first + i);
+      raysLeft_ = treeRays_ - 1;
+      batch.colors[r] = follow(packet[i], hits[i], kind, batch.paths[r], nullptr, shadows.data() + size_t(i) * lights)
+                            .color;
+    }
+  }
+  raysLeft_ = outerRaysLeft;
+}
+
 template <class T>
-typename Tracer<T>::Traced Tracer<T>::trace(const Ray<T>& ray, RayRecord::Kind kind, int depth, float weight,
+typename Tracer<T>::Traced Tracer<T>::trace(const Ray<T>& ray, RayRecord::Kind kind, const Path& path,
                                             RayRecord* record) {
-  return follow(ray, scene_.closestHit(ray, {}), kind, depth, weight, record, nullptr);
+  return follow(ray, scene_.closestHit(ray, {}), kind, path, record, nullptr);
 }
 
 template <class T>
 typename Tracer<T>::Traced Tracer<T>::follow(const Ray<T>& ray, const std::optional<Hit<T>>& hit,
-                                             RayRecord::Kind kind, int depth, float weight, RayRecord* record,
+                                             RayRecord::Kind kind, const Path& path, RayRecord* record,
                                              const std::optional<ShadowRay>* shadows) {
   if (record) {
     record->kind = kind;
@@ -171,16 +206,15 @@ typename Tracer<T>::Traced Tracer<T>::follow(const Ray<T>& ray, const std::optio
     if (record) record->color = conventions_.background;
     return {conventions_.background, std::numeric_limits<T>::infinity()};
   }
-  Color color = shade(ray, *hit, depth, weight, record, shadows);
+  Color color = shade(ray, *hit, path, record, shadows);
   if (conventions_.clampEachBounce) color = glm::clamp(color, 0.0f, 1.0f);
   if (record) record->color = color;
   return {color, hit->t};
 }
 
 template <class T>
-Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float weight, RayRecord* record,
+Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, RayRecord* record,
                        const std::optional<ShadowRay>* shadows) {
-  const Material& m = hit.object->material();
   if (record) {
     record->hit = true;
     record->objectId = hit.object->id();
@@ -190,15 +224,39 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float we
     record->t = double(hit.t);
   }
   // The .cli rule: the deepest ray that hits returns black (docs/reference/cs3451.md §A.4).
-  if (depth == conventions_.maxDepth && !conventions_.shadeDeepest) return Color(0);
+  if (path.depth == conventions_.maxDepth && !conventions_.shadeDeepest) return Color(0);
   if (options_.normals) return Color(hit.normal) * 0.5f + 0.5f;
 
   const Vec3<T> v = -ray.dir;
-  const bool entering = glm::dot(v, hit.normal) >= T(0);
   const Vec3<T> n = viewerSide(hit, ray);  // shading normal
-  const float fresnel = options_.fresnel ? schlick(float(glm::dot(n, v)), m.ior) : 0.0f;
-  Weights w = weights(m, fresnel, conventions_.reflectionMixes);
   std::optional<Vec3<T>> refracted;
+  const Weights w = split(ray, hit, n, record, refracted);
+  Color ambientLight(0);
+  Local local;
+  if (w.local > 0) {
+    local = direct(hit, n, v, record, shadows);
+    ambientLight = w.local * ambient(hit, n, path);
+  }
+  local.diffuse *= w.local;
+  local.specular *= w.local;
+  const Color secondaryLight = secondary(ray, hit, n, w, refracted, path, record);
+  if (record) {
+    record->ambient = ambientLight;
+    record->diffuse = local.diffuse;
+    record->specular = local.specular;
+    record->local = w.local;
+    record->reflect = w.reflection;
+    record->transmit = w.transmission;
+  }
+  return ambientLight + local.diffuse + local.specular + secondaryLight;
+}
+
+template <class T>
+Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Vec3<T>& n, RayRecord* record,
+                         std::optional<Vec3<T>>& refracted) const {
+  const Material& m = hit.object->material();
+  const float fresnel = options_.fresnel ? schlick(float(glm::dot(n, -ray.dir)), m.ior) : 0.0f;
+  Weights w = weights(m, fresnel, conventions_.reflectionMixes);
   if (w.transmission > 0) {
     refracted = refractDirection(ray.dir, hit.normal, m.ior);
     if (!refracted) {  // total internal reflection: the transmitted share is reflected (§c.4)
@@ -207,50 +265,67 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float we
       if (record) record->extraInfo.push_back("total-internal-reflection");
     }
   }
+  return w;
+}
 
-  const Color ambient = w.local * m.ambient;
-  Local local;
-  if (w.local > 0) local = direct(hit, n, v, record, shadows);
-  local.diffuse *= w.local;
-  local.specular *= w.local;
+template <class T> Color Tracer<T>::ambient(const Hit<T>& hit, const Vec3<T>& n, const Path& path) {
+  if (!options_.gi.enabled) return hit.object->material().ambient;
+  // The gathered light takes the place of ka·C (Ca in .cli) as it is: no ka, kd or pigment factor (§c.14; the
+  // reference images show it, docs/gi.md).
+  return gather(hit, n, path);
+}
 
-  // Secondary rays: refraction first, then reflection, as the course traces and prints them (§a.3).
-  Color refraction(0), reflection(0);
-  const int child = depth + 1;
-  // The weight a child's colour has in the pixel includes the tint put on it: transmitted light is tinted by
-  // the object it travelled in (§c.4; Beer's law instead, §c.6), reflected light by the pigment (§c.3).
-  const Color transmitTint = entering && !options_.beers ? m.pigment : Color(1);
-  const float transmitWeight = weight * w.transmission * brightest(transmitTint);
-  if (child <= conventions_.maxDepth && w.transmission > 0 && matters(transmitWeight, child)) {
-    RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
-    if (sub) sub->extraInfo.push_back(entering ? "into-object" : "into-air");
-    const Traced t =
-        trace(spawnRay(hit, *refracted, *scene_.arithmetic().offset), RayRecord::Kind::Refraction, child,
-              transmitWeight, sub);
-    Color gathered = transmitTint * t.color;
-    if (entering && options_.beers) gathered *= beerAttenuation(m.pigment, float(t.distance));
-    refraction = w.transmission * gathered;
-  }
-  const Color reflectTint = conventions_.tintReflection ? m.pigment : Color(1);
-  const float reflectWeight = weight * w.reflection * brightest(reflectTint);
-  if (child <= conventions_.maxDepth && w.reflection > 0 && matters(reflectWeight, child)) {
-    RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
-    const Ray<T> mirrored = spawnRay(hit, reflectDirection(ray.dir, n), *scene_.arithmetic().offset);
-    const Traced r = trace(mirrored, RayRecord::Kind::Reflection, child, reflectWeight, sub);
-    reflection = w.reflection * reflectTint * r.color;
-  }
+template <class T> Color Tracer<T>::gather(const Hit<T>& hit, const Vec3<T>& n, const Path& path) {
+  if (path.bounce >= options_.gi.bounceCount()) return Color(0);  // "use 0 for the last bounce" (§c.14)
+  const int count = options_.gi.samplesAt(path.bounce);
+  if (path.bounce == 0 && options_.gi.adaptive) return gatherAdaptive(hit, n, path, count);
+  return gatherSet(hit, n, path, 0, count) / float(count);
+}
 
-  if (record) {
-    record->ambient = ambient;
-    record->diffuse = local.diffuse;
-    record->specular = local.specular;
-    record->reflection = reflection;
-    record->refraction = refraction;
-    record->local = w.local;
-    record->reflect = w.reflection;
-    record->transmit = w.transmission;
+template <class T>
+Color Tracer<T>::gatherAdaptive(const Hit<T>& hit, const Vec3<T>& n, const Path& path, int count) {
+  const int size = std::max(1, count / kAdaptiveRounds), rounds = count / size;
+  const float target = *options_.gi.adaptive;
+  Color sum(0), squares(0);
+  int done = 0;
+  while (done < rounds) {
+    const Color mean = gatherSet(hit, n, path, uint64_t(done) * uint64_t(size), size) / float(size);
+    sum += mean;
+    squares += mean * mean;
+    ++done;
+    if (done < kMinAdaptiveRounds) continue;
+    // The rounds are independent estimates: their spread gives the standard error of their mean.
+    const Color m = sum / float(done);
+    const Color variance = glm::max(Color(0), (squares - float(done) * m * m) / float(done - 1));
+    if (brightest(variance) / float(done) <= target * target) break;
   }
-  return ambient + local.diffuse + local.specular + reflection + refraction;
+  return sum / float(done);
+}
+
+template <class T>
+Color Tracer<T>::gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path, uint64_t first, int count) {
+  const Strata strata = strataFor(count);
+  Batch& batch = batches_[size_t(1 + path.bounce)];
+  batch.rays.resize(size_t(count));
+  batch.paths.resize(size_t(count));
+  batch.colors.resize(size_t(count));
+  const OffsetPolicy offset = *scene_.arithmetic().offset;
+  for (int i = 0; i < count; ++i) {
+    const uint64_t key = childKey(path.key, first + uint64_t(i));
+    const Vec3<T> dir = aroundNormal(cosineHemisphere<T>(stratified(strata, i, uniformPair(key))), n);
+    batch.rays[size_t(i)] = spawnRay(hit, dir, offset);
+    batch.paths[size_t(i)] = Path{path.depth, path.bounce + 1, path.weight, key};
+  }
+  counts_.gather += uint64_t(count);
+  traceBatch(batch, count, RayRecord::Kind::Primary);
+  Color sum(0);
+  for (int i = 0; i < count; ++i) sum += batch.colors[size_t(i)];
+  if (gathers_) {
+    GatherSummary& g = (*gathers_)[size_t(path.bounce)];
+    g.rays += uint64_t(count);
+    g.radiance += sum;
+  }
+  return sum;
 }
 
 template <class T>
@@ -267,12 +342,13 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
     if (shadows) {
       if (shadows[i]) s = &*shadows[i];
     } else if (shadowRay(hit, n, light, own)) {
-      own.blocked = scene_.occluded(own.ray, own.segment, &lastBlocker_[i]);
+      own.occluded = scene_.occluded(own.ray, own.segment, &lastOccluder_[i]);
+      ++counts_.shadow;
       s = &own;
     }
     if (!s) continue;
-    if (record) record->shadows.push_back({glm::dvec3(s->ray.origin), glm::dvec3(s->ray.dir), s->blocked});
-    if (s->blocked) continue;
+    if (record) record->shadows.push_back({glm::dvec3(s->ray.origin), glm::dvec3(s->ray.dir), s->occluded});
+    if (s->occluded) continue;
     diffuse += light.color * m.diffuse * std::min(s->nl, 1.0f);
     if (m.specular == Color(0)) continue;  // a matte surface: no power to take
     const float factor = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, s->l, m.exponent)
@@ -280,6 +356,46 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
     specular += light.color * m.specular * factor;
   }
   return {diffuse, specular};
+}
+
+template <class T>
+Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Vec3<T>& n, const Weights& w,
+                           const std::optional<Vec3<T>>& refracted, const Path& path, RayRecord* record) {
+  const Material& m = hit.object->material();
+  const bool entering = glm::dot(ray.dir, hit.normal) <= T(0);
+  Color refraction(0), reflection(0);
+  Path child = path;
+  ++child.depth;
+  // The weight a child's colour has in the pixel includes the tint put on it: transmitted light is tinted by
+  // the object it travelled in (§c.4; Beer's law instead, §c.6), reflected light by the pigment (§c.3).
+  const Color transmitTint = entering && !options_.beers ? m.pigment : Color(1);
+  child.weight = path.weight * w.transmission * brightest(transmitTint);
+  if (child.depth <= conventions_.maxDepth && w.transmission > 0 && matters(child.weight, child.depth)) {
+    RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
+    if (sub) sub->extraInfo.push_back(entering ? "into-object" : "into-air");
+    child.key = childKey(path.key, kRefractionBranch);
+    ++counts_.secondary;
+    const Traced t =
+        trace(spawnRay(hit, *refracted, *scene_.arithmetic().offset), RayRecord::Kind::Refraction, child, sub);
+    Color gathered = transmitTint * t.color;
+    if (entering && options_.beers) gathered *= beerAttenuation(m.pigment, float(t.distance));
+    refraction = w.transmission * gathered;
+  }
+  const Color reflectTint = conventions_.tintReflection ? m.pigment : Color(1);
+  child.weight = path.weight * w.reflection * brightest(reflectTint);
+  if (child.depth <= conventions_.maxDepth && w.reflection > 0 && matters(child.weight, child.depth)) {
+    RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
+    child.key = childKey(path.key, kReflectionBranch);
+    ++counts_.secondary;
+    const Ray<T> mirrored = spawnRay(hit, reflectDirection(ray.dir, n), *scene_.arithmetic().offset);
+    const Traced r = trace(mirrored, RayRecord::Kind::Reflection, child, sub);
+    reflection = w.reflection * reflectTint * r.color;
+  }
+  if (record) {
+    record->reflection = reflection;
+    record->refraction = refraction;
+  }
+  return reflection + refraction;
 }
 
 template <class T>
@@ -292,7 +408,7 @@ bool Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& l
   // Where n faces the light (n·l > 0) it picks the side to leave by as l would. The ray is made before the
   // verdict, which it does not need, so that the two chains of square root and division overlap.
   spawnRayTo(hit, light.position, out.l, n, *scene_.arithmetic().offset, out.ray, out.segment);
-  out.blocked = false;
+  out.occluded = false;
   return out.nl > 0.0f;
 }
 

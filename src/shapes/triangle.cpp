@@ -14,24 +14,10 @@ Triangle<T>::Triangle(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c, cons
   normal_ = degenerate_ ? Vec3<T>(0) : n / twiceArea;
 }
 
-// Möller & Trumbore (1997), "Fast, minimum storage ray-triangle intersection": solve
-// o + t·d = a + u·(b − a) + v·(c − a) by Cramer's rule, which is the course's method (§c.11) with the
-// determinants written as scalar triple products. Edges count as inside (u, v ≥ 0, u + v ≤ 1), so two
-// triangles sharing an edge leave no crack. Every test is written so that a NaN fails it.
 template <class T>
 std::optional<Hit<T>> Triangle<T>::intersect(const Ray<T>& ray, Interval<T> range) const {
-  if (degenerate_) return std::nullopt;
-  const Vec3<T> p = glm::cross(ray.dir, ac_);
-  const T det = glm::dot(ab_, p);
-  if (det == T(0)) return std::nullopt;  // the ray is parallel to the triangle's plane
-  const Vec3<T> s = ray.origin - a_;
-  const T u = glm::dot(s, p) / det;
-  if (!(u >= T(0) && u <= T(1))) return std::nullopt;
-  const Vec3<T> q = glm::cross(s, ab_);
-  const T v = glm::dot(ray.dir, q) / det;
-  if (!(v >= T(0) && u + v <= T(1))) return std::nullopt;
-  const T t = glm::dot(ac_, q) / det;
-  if (!range.surrounds(t)) return std::nullopt;
+  T t, u, v;
+  if (degenerate_ || !solve(a_, ab_, ac_, ray, range, t, u, v)) return std::nullopt;
   Hit<T> hit;
   hit.t = t;
   hit.point = a_ + u * ab_ + v * ac_;  // on the triangle's plane by construction (docs/reference/stability.md F4)

@@ -21,9 +21,9 @@ void ProgressMeter::add(int64_t pixels) {
   const double seconds = std::chrono::duration<double>(now - start_).count();
   const double rate = double(done_) * raysPerPixel_ / seconds;
   const double left = seconds * double(total_ - done_) / double(done_);
-  char line[96];
-  std::snprintf(line, sizeof line, "\r\033[Krender: %3d%%  %.2f M eye rays/s  %.0f s left",
-                int(100 * done_ / total_), rate / 1e6, left);
+  char line[128];
+  std::snprintf(line, sizeof line, "\r\033[Krender: %3d%%  %.0f s elapsed, %.0f s left  %.2f M eye rays/s",
+                int(100 * done_ / total_), seconds, left, rate / 1e6);
   *out_ << line << std::flush;
   anything_ = true;
 }

@@ -4,6 +4,7 @@
 
 #include <sstream>
 
+#include "raytrace/app/arguments.hpp"
 #include "raytrace/app/commands.hpp"
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/message.hpp"
@@ -63,6 +64,24 @@ TEST_CASE("cli: no command, an unknown command, an unknown option") {
   CHECK(errorOf({"sceneinfo", "a.pov", "--fast"}) == "unknown option '--fast' (see raytrace --help)");
   CHECK(errorOf({"sceneinfo", "a.pov", "--precision=quad"}) == "--precision must be float, double, course or auto, found 'quad'");
   CHECK(errorOf({"sceneinfo", "a.pov", "--sphere=fast"}) == "--sphere must be textbook, robust or auto, found 'fast'");
+}
+
+TEST_CASE("cli: the -gi flags and their bad values") {
+  CHECK(errorOf({"render", "a.pov", "-gi_samples=64,x"}) == "-gi_samples must be a whole number, found 'x'");
+  CHECK(errorOf({"render", "a.pov", "-gi_samples=64,"}) == "-gi_samples must be a whole number, found ''");
+  CHECK(errorOf({"render", "a.pov", "-gi_samples=0"}) == "-gi_samples must be between 1 and 65536, found 0");
+  CHECK(errorOf({"render", "a.pov", "-gi_bounces=17"}) == "-gi_bounces must be between 0 and 16, found 17");
+  CHECK(errorOf({"render", "a.pov", "--seed"}) == "--seed needs a number");
+  CHECK(errorOf({"render", "a.pov", "--seed=-1"}) == "--seed must be between 0 and 2147483647, found -1");
+  CHECK(errorOf({"render", "a.pov", "--gi-adaptive=0"}) ==
+        "--gi-adaptive must be a number above 0 and at most 1, found '0'");
+  CHECK(errorOf({"render", "a.pov", "--gi-adaptive=0.1x"}) ==
+        "--gi-adaptive must be a number above 0 and at most 1, found '0.1x'");
+  const rt::RenderOptions o = rt::parseFlag("-gi_bounces=3", rt::parseFlag("-gi_samples=32,8", rt::parseFlag("-gi", {})));
+  CHECK(o.gi.enabled);
+  CHECK(o.gi.samples == std::vector<int>{32, 8});
+  CHECK(o.gi.bounceCount() == 3);
+  CHECK(o.gi.samplesAt(2) == 8);
 }
 
 TEST_CASE("cli: wrong argument counts") {
@@ -154,7 +173,9 @@ TEST_CASE("cli: --stats reports render's steps on the error stream, and only for
   // The times vary; the line's shape does not: one line for the file, however many images it writes.
   const std::string ms = "[0-9]+\\.[0-9] ms";
   CHECK_THAT(r.err, Catch::Matches("raytrace: load " + ms + ", build " + ms + ", trace " + ms + ", png " + ms +
-                                   ", total " + ms + " \\(8x6, 4 eye rays per pixel, 1 thread\\)\n"));
+                                   ", total " + ms + " \\(8x6, 4 eye rays per pixel, 1 thread\\)\n"
+                                   "raytrace: rays 384 eye, 0 gather, [0-9]+ shadow, 0 secondary; [0-9]+\\.[0-9]{2} M "
+                                   "rays/s in trace\n"));
   CHECK(dir.names() == std::vector<std::string>{"a.png", "b.png", "s.cli"});
   CHECK(run({"render", scene, "8", "6", "--threads", "1", "--allow-write-anywhere"}).err.empty());
   CHECK(errorOf({"sceneinfo", scene, "--stats"}) == "--stats is for the render command only");

@@ -177,6 +177,13 @@ TEST_CASE("image commands: merge refuses tiles that do not make one picture, nam
   CHECK(errorOf({"merge", "-o", out, t0, t1, third}) == "'" + third + "' overlaps '" + t0 + "' at column 0, row 8");
   CHECK(errorOf({"merge", "-o", out, t0, ss}) ==
         "'" + ss + "' is a tile of another render than '" + t0 + "': its raytrace.options is '-ss=2', not ''");
+  // -gi's settings are the render's too: another seed or sample list is another picture.
+  const std::string gi0 = tile("gi0.exr", "0/2", {"-gi", "-gi_samples=2,1", "--seed", "3"});
+  const std::string gi1 = tile("gi1.exr", "1/2", {"-gi", "-gi_samples=2,1", "--seed", "4", "--gi-adaptive=0.25"});
+  CHECK(errorOf({"merge", "-o", out, gi0, gi1}) ==
+        "'" + gi1 + "' is a tile of another render than '" + gi0 +
+            "': its raytrace.options is '-gi -gi_samples=2,1 --seed=4 --gi-adaptive=0.25', "
+            "not '-gi -gi_samples=2,1 --seed=3'");
   REQUIRE(outputOf({"render", scene, "32", "25", "--tile", "1/2", "-o", dir.file("tall.exr")}).empty());
   CHECK(errorOf({"merge", "-o", out, t0, dir.file("tall.exr")}) ==
         "'" + dir.file("tall.exr") + "' is a tile of another render than '" + t0 + "': its raytrace.size is '32x25', not '32x24'");
@@ -196,8 +203,8 @@ TEST_CASE("image commands: merge refuses tiles that do not make one picture, nam
   CHECK(errorOf({"merge", "-o", dir.file("out.gif"), t0, t1}) ==
         "cannot write '" + dir.file("out.gif") + "': unknown image format '.gif' (name it .png, .hdr or .exr)");
   CHECK(errorOf({"merge", "-o", out, "--fast", t0}) == "unknown option '--fast' for merge (see raytrace help merge)");
-  CHECK(dir.names() == std::vector<std::string>{"edited.exr", "plain.exr", "s.pov", "ss.exr", "t0.exr", "t1.exr",
-                                                "tall.exr", "text.exr", "third.exr"});
+  CHECK(dir.names() == std::vector<std::string>{"edited.exr", "gi0.exr", "gi1.exr", "plain.exr", "s.pov", "ss.exr",
+                                                "t0.exr", "t1.exr", "tall.exr", "text.exr", "third.exr"});
 }
 
 TEST_CASE("image commands: --version, help <command> and <command> --help") {

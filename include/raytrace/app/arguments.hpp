@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "raytrace/render/options.hpp"
 
@@ -11,6 +12,9 @@ constexpr int kMaxThreads = 1024;  // for --threads
 
 // `s` as a whole number in [lo, hi], or an Error naming `what`.
 int parseInt(const std::string& s, const char* what, int lo, int hi);
+
+// A comma-separated list of whole numbers, each in [lo, hi] ("64,16"), or an Error naming `what`.
+std::vector<int> parseCounts(const std::string& s, const char* what, int lo, int hi);
 
 // `options` with one flag (`-fresnel`, `--depth=3`, ...) applied, or an Error for an unknown or bad flag.
 RenderOptions parseFlag(const std::string& flag, RenderOptions options);

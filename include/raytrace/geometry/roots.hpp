@@ -1,5 +1,5 @@
-// The robust quadratic shared by the round shapes (sphere, cylinder side): the roots of |f + t·d|² = r²; and
-// the choice of formula a sphere uses.
+// The quadratics of the round shapes (sphere, cylinder side): the roots of |f + t·d|² = r²; and the choice
+// of formula a sphere uses.
 #pragma once
 
 #include <cmath>
@@ -12,6 +12,21 @@ namespace rt {
 // How a sphere solves its quadratic: the textbook formula (cheaper, exact enough for a small precision budget)
 // or robustRoots() below; Auto asks chooseArithmetic() to choose per scene.
 enum class SphereMethod { Auto, Textbook, Robust };
+
+// The textbook quadratic (lecture 3; Shirley, Fundamentals of Computer Graphics §4.4.1): a·t² + b·t + c = 0 with
+// b = 2 d·f, Δ = b² − 4ac. Its error grows as ε·R² (docs/reference/stability.md F1), so chooseArithmetic() uses
+// it only where R is small.
+template <class T> bool textbookRoots(const Vec3<T>& f, const Vec3<T>& d, T radius, T& t0, T& t1) {
+  const T a = glm::dot(d, d);
+  const T b = T(2) * glm::dot(d, f);
+  const T c = glm::dot(f, f) - radius * radius;
+  const T disc = b * b - T(4) * a * c;
+  if (disc < T(0)) return false;
+  const T root = std::sqrt(disc);
+  t0 = (-b - root) / (T(2) * a);
+  t1 = (-b + root) / (T(2) * a);
+  return true;
+}
 
 // Ray-sphere with the two robust steps of Ray Tracing Gems ch. 7 (Haines et al. 2019), also used by pbrt-v4:
 //  - the discriminant from the perpendicular distance l of the centre to the ray, r² − |l|², which loses

@@ -1,7 +1,10 @@
 // What the command line can change about the pixels of a picture, and the threads that compute them.
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "raytrace/accel/bvh.hpp"
 #include "raytrace/render/shading.hpp"
@@ -9,6 +12,20 @@
 #include "raytrace/util/parallel.hpp"
 
 namespace rt {
+
+// -gi: Monte Carlo global illumination, the course's Program 6 model (docs/gi.md).
+struct GiOptions {
+  bool enabled = false;
+  std::vector<int> samples{64, 16};  // -gi_samples=N,N…: gather rays per hit at bounce 1, 2, …
+  std::optional<int> bounces;        // -gi_bounces=B: levels that gather (default: one per sample count)
+  uint64_t seed = 0;                 // --seed N: an independent render of the same scene
+  // --gi-adaptive=E: the first bounce stops gathering once the standard error of its estimate is below E.
+  std::optional<float> adaptive;
+
+  int bounceCount() const { return bounces ? *bounces : int(samples.size()); }
+  // Gather rays per hit at `bounce` (0 = the eye ray's hit); past the list, its last count.
+  int samplesAt(int bounce) const { return samples[std::min(size_t(bounce), samples.size() - 1)]; }
+};
 
 struct RenderOptions {
   Arithmetic arithmetic;                         // --precision, --sphere, --offset
@@ -20,6 +37,7 @@ struct RenderOptions {
   std::optional<int> depth;                      // --depth=N: deepest secondary ray, instead of the scene's
   Hierarchy hierarchy = Hierarchy::Auto;         // --hierarchy: force the BVH on or off, for comparisons
   int threads = defaultThreads();                // --threads N
+  GiOptions gi;                                  // -gi, -gi_samples, -gi_bounces, --seed
 };
 
 }  // namespace rt

@@ -3,6 +3,7 @@
 // it computes the colour (tracer.hpp), so what is printed is what was rendered.
 #pragma once
 
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -35,9 +36,17 @@ struct RayRecord {
   Color color{0};                      // what the ray returned: the sum above (clamped where the scene asks)
 };
 
+// With -gi, the gather rays of one pixel at one bounce in sum: recorded one by one, a 64,16 pixel would print a
+// thousand trees. Bounce b's rays leave the hits of bounce b − 1 (the eye ray's hits for b = 1).
+struct GatherSummary {
+  uint64_t rays = 0;
+  Color radiance{0};  // the sum of what they returned
+};
+
 // Prints the trees of one pixel (one per sample) after the line "Pixel: [x, y] Color: <color>", with the
 // pixel's colour already formatted. `decorated` selects the pixeltrace layout with branches and shadow rays.
+// `gathers`, one per bounce, follow the trees as "Gather bounce b: N rays, mean radiance {r g b}".
 void printRayTrees(std::ostream& out, int x, int y, const std::string& color, const std::vector<RayRecord>& trees,
-                   bool decorated);
+                   bool decorated, const std::vector<GatherSummary>& gathers = {});
 
 }  // namespace rt

@@ -6,6 +6,7 @@
 #include "raytrace/image/image.hpp"
 #include "raytrace/image/region.hpp"
 #include "raytrace/render/options.hpp"
+#include "raytrace/render/ray_counts.hpp"
 #include "raytrace/scene/description.hpp"
 
 namespace rt {
@@ -20,6 +21,7 @@ struct RenderTimes {
 struct RenderMonitor {
   std::ostream* progress = nullptr;  // where render() shows its progress line, if anywhere
   RenderTimes* times = nullptr;      // where render() adds how long it took, if anywhere
+  RayCounts* rays = nullptr;         // where render() adds the rays it traced, if anywhere
 };
 
 // Renders the scene at width × height.

@@ -7,6 +7,7 @@
 
 #include "raytrace/render/camera.hpp"
 #include "raytrace/geometry/math.hpp"
+#include "raytrace/render/ray_counts.hpp"
 #include "raytrace/render/ray_tree.hpp"
 #include "raytrace/render/options.hpp"
 #include "raytrace/accel/scene.hpp"
@@ -20,21 +21,33 @@ constexpr int kFullTreeDepth = 12;
 template <class T> class Tracer {
  public:
   // Reads the options and the scene's Conventions; `scene` must outlive the tracer. A tracer keeps a shadow
-  // cache, so each thread uses its own copy.
+  // cache and its buffers, so each thread uses its own copy.
   Tracer(const Scene<T>& scene, const RenderOptions& options);
 
   // The colour of pixel (x, y): the float average of options.samples² stratified eye rays. With `trees`, the
-  // ray tree of each eye ray is appended to it.
-  Color pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees = nullptr);
+  // ray tree of each eye ray is appended to it, and with -gi `gathers` receives the gather rays per bounce.
+  Color pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees = nullptr,
+              std::vector<GatherSummary>* gathers = nullptr);
   // The colours of the pixels of [x0, x1) × [y0, y1), row by row from y0, each the colour pixel() gives it: the
-  // eye rays and their shadow rays go through the scene in packets (Scene::closestHits), the rest one ray at a
-  // time. They are the tracer's own memory, valid until its next call.
-  const Color* block(const Camera<T>& camera, int x0, int y0, int x1, int y1);
+  // eye rays and their shadow rays go through the scene in packets (Scene::closestHits), and so do the gather
+  // rays of each hit. They are the tracer's own memory, valid until its next call.
+  const Color* tile(const Camera<T>& camera, int x0, int y0, int x1, int y1);
+
+  // The rays traced so far, by kind.
+  const RayCounts& counts() const { return counts_; }
 
  private:
   struct Traced {
     Color color;
     T distance;  // to the hit, +∞ on a miss (Beer's law needs it)
+  };
+
+  // Where a ray is in the tree of its eye ray.
+  struct Path {
+    int depth = 0;      // reflection/refraction level, the primary ray 0 (§c.9)
+    int bounce = 0;     // gather rays between the eye and this ray (docs/gi.md)
+    float weight = 1;   // the accumulated weight of its colour in the pixel (stability.md F12)
+    uint64_t key = 0;   // the root of its random numbers (sampler.hpp)
   };
 
   struct Local {
@@ -46,20 +59,53 @@ template <class T> class Tracer {
     Interval<T> segment;
     Vec3<T> l;             // the unit vector from the point itself to the light, which shading uses
     float nl;              // n·l
-    bool blocked = false;  // the answer, once asked
+    bool occluded = false;  // the answer, once asked
   };
 
-  Traced trace(const Ray<T>& ray, RayRecord::Kind kind, int depth, float weight, RayRecord* record);
+  // Rays traced together (traceBatch): the eye rays of tile(), or the gather rays of one hit. Each level of
+  // gathering has its own, kept from call to call so that the gather loop allocates nothing.
+  struct Batch {
+    std::vector<Ray<T>> rays;
+    std::vector<Path> paths;
+    std::vector<Color> colors;
+    std::vector<std::optional<ShadowRay>> shadows;  // a packet's shadow rays, ray by ray and light by light
+  };
+
+  Traced trace(const Ray<T>& ray, RayRecord::Kind kind, const Path& path, RayRecord* record);
+  // colors[i] = trace(rays[i], kind, paths[i]).color for i < count, with closest hits and shadow rays asked
+  // for a packet at a time.
+  void traceBatch(Batch& batch, int count, RayRecord::Kind kind);
   // trace() once the closest hit is known; `shadows`, if given, are the hit's shadow rays (one per light, as
   // shadowRay() makes them) with their answers, found beforehand for a whole packet.
-  Traced follow(const Ray<T>& ray, const std::optional<Hit<T>>& hit, RayRecord::Kind kind, int depth,
-                float weight, RayRecord* record, const std::optional<ShadowRay>* shadows);
-  Color shade(const Ray<T>& ray, const Hit<T>& hit, int depth, float weight, RayRecord* record,
+  Traced follow(const Ray<T>& ray, const std::optional<Hit<T>>& hit, RayRecord::Kind kind, const Path& path,
+                RayRecord* record, const std::optional<ShadowRay>* shadows);
+  // The colour a hit sends back along the ray: the local light (ambient or gathered, plus direct) and the
+  // secondary rays, weighted (§c.5).
+  Color shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, RayRecord* record,
               const std::optional<ShadowRay>* shadows);
+  // The weights of the local light and the two secondary rays at a hit; `refracted` receives the transmitted
+  // direction when there is one (total internal reflection moves the transmitted share to reflection).
+  Weights split(const Ray<T>& ray, const Hit<T>& hit, const Vec3<T>& n, RayRecord* record,
+                std::optional<Vec3<T>>& refracted) const;
+  // The term the course calls ambient: the material's constant, or with -gi the indirect light gathered over
+  // the hemisphere of n (docs/gi.md).
+  Color ambient(const Hit<T>& hit, const Vec3<T>& n, const Path& path);
+  // The mean radiance of options.gi.samplesAt(bounce) stratified cosine-weighted rays from the hit (§c.14);
+  // black at the last bounce.
+  Color gather(const Hit<T>& hit, const Vec3<T>& n, const Path& path);
+  // --gi-adaptive's first bounce: stratified rounds of count / kAdaptiveRounds rays until the standard error of
+  // their mean is below the threshold, or `count` rays are spent; the mean of the rounds.
+  Color gatherAdaptive(const Hit<T>& hit, const Vec3<T>& n, const Path& path, int count);
+  // The sum of what `count` stratified rays bring back, their random numbers keyed first … first + count − 1.
+  Color gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path, uint64_t first, int count);
   // Diffuse and specular light from every light the point sees (§c.1, §c.7), before weighting. `n` is the
   // shading normal on the viewer's side, `v` the unit vector to the viewer.
   Local direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
                const std::optional<ShadowRay>* shadows);
+  // The reflected and refracted light, weighted and tinted (§c.3, §c.4, §c.6), traced refraction first as the
+  // course prints them (§a.3).
+  Color secondary(const Ray<T>& ray, const Hit<T>& hit, const Vec3<T>& n, const Weights& w,
+                  const std::optional<Vec3<T>>& refracted, const Path& path, RayRecord* record);
   // The shadow ray toward `light`, or false when the light cannot light the point from the viewer's side `n`:
   // a light behind the surface as the viewer sees it, or on the point itself.
   // It is written into `out` in place: it is made for every hit and light, and a returned copy would stall
@@ -76,10 +122,10 @@ template <class T> class Tracer {
   float cutoff_;
   int treeRays_;      // the most rays an eye ray's tree may have: a full tree of depth min(maxDepth, kFullTreeDepth)
   int raysLeft_ = 0;  // the secondary rays the current eye ray's tree may still have
-  std::vector<const Object<T>*> lastBlocker_;  // per light: what blocked its latest shadow ray (Scene::occluded)
-  std::vector<Ray<T>> rays_;                   // block()'s eye rays and their colours, kept to reuse the memory
-  std::vector<Color> colors_;
-  std::vector<std::optional<ShadowRay>> shadows_;  // a packet's shadow rays, ray by ray and light by light
+  std::vector<const Object<T>*> lastOccluder_;  // per light: what occluded its latest shadow ray (Scene::occluded)
+  std::vector<Batch> batches_;                 // [0] tile()'s eye rays, [1 + b] the gather rays at bounce b
+  RayCounts counts_;
+  std::vector<GatherSummary>* gathers_ = nullptr;  // pixel()'s per-bounce summary while it is asked for
 };
 
 }  // namespace rt

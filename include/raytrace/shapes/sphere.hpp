@@ -16,10 +16,29 @@ template <class T> class Sphere final : public Object<T> {
   std::optional<Aabb<T>> bounds() const override;
   const char* name() const override { return "Sphere"; }
 
- private:
-  // The roots of the ray's quadratic, by the method chosen for the scene.
-  bool roots(const Ray<T>& ray, T& t0, T& t1) const;
+  // The tests of intersect() and occludes() on the sphere (center, radius) by the method chosen for the scene,
+  // inline so that a hierarchy testing spheres from arrays of its own (accel/) gets the same bits. nearestRoot:
+  // the nearer root strictly inside `range`, if any; meets: whether either root lies strictly inside it.
+  static bool roots(const Vec3<T>& center, T radius, bool robust, const Ray<T>& ray, T& t0, T& t1) {
+    const Vec3<T> f = ray.origin - center;
+    return robust ? robustRoots(f, ray.dir, radius, t0, t1) : textbookRoots(f, ray.dir, radius, t0, t1);
+  }
+  static bool nearestRoot(const Vec3<T>& center, T radius, bool robust, const Ray<T>& ray, Interval<T> range,
+                          T& t) {
+    T t0, t1;
+    if (!roots(center, radius, robust, ray, t0, t1)) return false;
+    t = range.surrounds(t0) ? t0 : t1;
+    return range.surrounds(t);
+  }
+  static bool meets(const Vec3<T>& center, T radius, bool robust, const Ray<T>& ray, Interval<T> range) {
+    T t0, t1;
+    return roots(center, radius, robust, ray, t0, t1) && (range.surrounds(t0) || range.surrounds(t1));
+  }
+  const Vec3<T>& center() const { return center_; }
+  T radius() const { return radius_; }
+  bool robust() const { return robust_; }
 
+ private:
   Vec3<T> center_;
   T radius_;
   bool robust_;  // see chooseArithmetic(): the textbook formula is cheaper and exact enough for small R

@@ -1,4 +1,5 @@
-// The progress line of a long render: percent done, eye rays per second and time left, rewritten in place.
+// The progress line of a long render: percent done, time elapsed and left, eye rays per second, rewritten in
+// place.
 #pragma once
 
 #include <chrono>

@@ -1,0 +1,248 @@
+// Monte Carlo global illumination (-gi, docs/gi.md): closed-form cases, unbiasedness against a high-sample
+// render, and determinism across threads, tile orders and diagnostics.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "raytrace/render/renderer.hpp"
+#include "raytrace/render/tracer.hpp"
+
+using namespace rt;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+
+Material matte(const Color& ambient, const Color& diffuse) {
+  Material m;
+  m.pigment = Color(1);
+  m.ambient = ambient;
+  m.diffuse = diffuse;
+  return m;
+}
+
+void add(SceneDesc& scene, const ShapeDesc& shape, const Material& m) {
+  ObjectDesc o;
+  o.shape = shape;
+  o.material = m;
+  scene.objects.push_back(o);
+}
+
+RenderOptions gi(std::vector<int> samples, std::optional<int> bounces = {}, uint64_t seed = 0) {
+  RenderOptions o;
+  o.gi.enabled = true;
+  o.gi.samples = std::move(samples);
+  o.gi.bounces = bounces;
+  o.gi.seed = seed;
+  o.threads = 1;
+  return o;
+}
+
+// A floor, a back wall, two spheres and a light: light reaches most points by one or two bounces.
+SceneDesc smallRoom() {
+  SceneDesc scene;
+  scene.camera.location = {0, 1.5, 6};
+  scene.camera.lookAt = {0, 1, 0};
+  scene.lights.push_back({{2, 5, 3}, Color(1)});
+  add(scene, PlaneDesc{{0, 1, 0}, 0}, matte(Color(0.1f), Color(0.7f, 0.3f, 0.2f)));
+  add(scene, PlaneDesc{{0, 0, 1}, -2}, matte(Color(0.1f), Color(0.2f, 0.6f, 0.3f)));
+  add(scene, SphereDesc{{-0.8, 1, 0}, 1}, matte(Color(0.1f), Color(0.8f)));
+  add(scene, SphereDesc{{1.2, 0.5, 0.8}, 0.5}, matte(Color(0.1f), Color(0.3f, 0.3f, 0.9f)));
+  return scene;
+}
+
+bool sameBits(const Image& a, const Image& b) {
+  for (int y = 0; y < a.height(); ++y) {
+    for (int x = 0; x < a.width(); ++x) {
+      if (std::memcmp(&a.at(x, y), &b.at(x, y), sizeof(Color)) != 0) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("GI furnace: inside a sphere lit from its centre each bounce adds the same direct light", "[gi]") {
+  // Every point of the inner surface gets the direct light D = Lc·kd·C·(n·l = 1) and gathers only from other
+  // such points, so the estimate has no variance: a hit at the last bounce returns D (it gathers nothing), one
+  // a bounce before D + D, and the eye ray's hit (B + 1)·D. The material's ambient must not appear.
+  SceneDesc scene;
+  scene.camera.right = {1, 0, 0};
+  scene.lights.push_back({{0, 0, 0}, Color(1)});
+  const Color d(0.3f, 0.2f, 0.1f);
+  add(scene, SphereDesc{{0, 0, 0}, 10}, matte(Color(0.5f), d));
+  const auto centre = [&](const RenderOptions& o) { return render(scene, 3, 3, o).at(1, 1); };
+  for (const auto& [options, bounces] : {std::pair{gi({8, 4}), 2}, std::pair{gi({8, 4}, 3), 3},
+                                         std::pair{gi({5}), 1}, std::pair{gi({8, 4}, 0), 0}}) {
+    CAPTURE(bounces);
+    const Color c = centre(options);
+    for (int k = 0; k < 3; ++k) CHECK_THAT(c[k], WithinRel(float(bounces + 1) * d[k], 1e-5f));
+  }
+  // Without -gi the constant ambient is there instead.
+  RenderOptions plain;
+  CHECK_THAT(centre(plain).r, WithinRel(0.5f + d.r, 1e-5f));
+}
+
+TEST_CASE("GI sky: a black sphere above a floor hides sin²α of the cosine-weighted sky", "[gi]") {
+  // A point of a black floor under a black sphere of radius r centred at height H sees the sky (the
+  // background, 1) except for a cone of half-angle α, sin α = r/H, about its normal. Under the density cos θ/π
+  // the cone's share is sin²α; one bounce, so the sphere returns black. A uniform hemisphere would hide
+  // 1 − cos α instead (0.134 here, not 0.25).
+  SceneDesc scene;
+  scene.conventions.background = Color(1);
+  scene.camera.location = {0, 1, 10};
+  scene.camera.lookAt = {0, 0, 0};
+  add(scene, PlaneDesc{{0, 1, 0}, 0}, matte(Color(0), Color(0)));
+  add(scene, SphereDesc{{0, 2, 0}, 1}, matte(Color(0), Color(0)));
+  const Color c = render(scene, 1, 1, gi({4096}, 1)).at(0, 0);
+  // 64 × 64 strata: only the row of strata the cone's edge crosses varies, by under 1e-3 (its standard deviation).
+  CHECK_THAT(c.r, WithinAbs(0.75, 0.005));
+}
+
+TEST_CASE("GI is unbiased: the mean of many low-sample renders agrees with a high-sample render", "[gi]") {
+  // 48 renders at 4,2 (seeds 1…48) against one at 256,16 (seed 0), in 4×4-pixel blocks per channel. The low
+  // mean's standard error comes from the spread of the 48; the high render's is at most that of a low render
+  // times √(4/256) (it has 64 times the first-bounce samples). A block fails beyond 5 combined standard errors.
+  const SceneDesc scene = smallRoom();
+  constexpr int kW = 16, kH = 12, kBlock = 4, kRuns = 48;
+  constexpr int kBlocks = (kW / kBlock) * (kH / kBlock);
+  const auto blockMeans = [&](const Image& image) {
+    std::vector<double> means(kBlocks * 3, 0);
+    for (int y = 0; y < kH; ++y) {
+      for (int x = 0; x < kW; ++x) {
+        for (int k = 0; k < 3; ++k) {
+          means[size_t(((y / kBlock) * (kW / kBlock) + x / kBlock) * 3 + k)] += image.at(x, y)[k] / (kBlock * kBlock);
+        }
+      }
+    }
+    return means;
+  };
+  const std::vector<double> high = blockMeans(render(scene, kW, kH, gi({256, 16})));
+  const auto worstZ = [&](std::optional<int> bounces) {
+    std::vector<double> sum(kBlocks * 3, 0), squares(kBlocks * 3, 0);
+    for (int run = 1; run <= kRuns; ++run) {
+      const std::vector<double> m = blockMeans(render(scene, kW, kH, gi({4, 2}, bounces, uint64_t(run))));
+      for (size_t i = 0; i < m.size(); ++i) sum[i] += m[i], squares[i] += m[i] * m[i];
+    }
+    double worst = 0;
+    for (size_t i = 0; i < sum.size(); ++i) {
+      const double mean = sum[i] / kRuns;
+      const double variance = std::max(0.0, (squares[i] - kRuns * mean * mean) / (kRuns - 1));
+      const double se = std::sqrt(variance / kRuns + variance * 4 / 256) + 1e-7;
+      worst = std::max(worst, std::abs(mean - high[i]) / se);
+    }
+    return worst;
+  };
+  const double z = worstZ({});
+  CAPTURE(z);
+  CHECK(z < 5);
+  // The test can fail: renders that stop one bounce early are rejected.
+  const double biased = worstZ(1);
+  CAPTURE(biased);
+  CHECK(biased > 5);
+}
+
+TEST_CASE("GI images are the same for any thread count and any tile order, and pixel() agrees", "[gi]") {
+  const SceneDesc scene = smallRoom();
+  constexpr int kW = 23, kH = 17;
+  RenderOptions options = gi({9, 4});
+  options.samples = 2;
+  const Image one = render(scene, kW, kH, options);
+  options.threads = 2;
+  CHECK(sameBits(one, render(scene, kW, kH, options)));
+  options.threads = 3;
+  CHECK(sameBits(one, render(scene, kW, kH, options)));
+  RenderOptions reseeded = options;
+  reseeded.gi.seed = 7;
+  CHECK_FALSE(sameBits(one, render(scene, kW, kH, reseeded)));
+
+  // Blocks of 5 × 4 pixels in a shuffled order, by one tracer whose caches and buffers carry over, then every
+  // pixel alone as pixelcolor computes it.
+  const Arithmetic arithmetic = chooseArithmetic(scene, options.arithmetic);
+  withPrecision(arithmetic.tier, [&](auto tag) {
+    using T = decltype(tag);
+    const Scene<T> s(scene, arithmetic);
+    const Camera<T> camera(scene.camera, kW, kH);
+    Tracer<T> tracer(s, options);
+    std::vector<std::pair<int, int>> blocks;
+    for (int y = 0; y < kH; y += 4) {
+      for (int x = 0; x < kW; x += 5) blocks.emplace_back(x, y);
+    }
+    std::shuffle(blocks.begin(), blocks.end(), std::mt19937(12345));
+    Image shuffled(kW, kH);
+    for (const auto& [x0, y0] : blocks) {
+      const int x1 = std::min(kW, x0 + 5), y1 = std::min(kH, y0 + 4);
+      const Color* colors = tracer.tile(camera, x0, y0, x1, y1);
+      for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) shuffled.at(x, y) = *colors++;
+      }
+    }
+    CHECK(sameBits(one, shuffled));
+    Image alone(kW, kH);
+    for (int y = 0; y < kH; ++y) {
+      for (int x = 0; x < kW; ++x) alone.at(x, y) = tracer.pixel(camera, x, y);
+    }
+    CHECK(sameBits(one, alone));
+  });
+}
+
+TEST_CASE("Adaptive gathering stops once its rounds agree, and spends the cap when they do not", "[gi]") {
+  // In the furnace every round returns the same light: three rounds of 64/8 rays, the least it takes.
+  SceneDesc furnace;
+  furnace.camera.right = {1, 0, 0};
+  furnace.lights.push_back({{0, 0, 0}, Color(1)});
+  add(furnace, SphereDesc{{0, 0, 0}, 10}, matte(Color(0.5f), Color(0.3f)));
+  const auto firstBounceRays = [](const SceneDesc& scene, float threshold, int x, int y) {
+    RenderOptions options = gi({64, 4});
+    options.gi.adaptive = threshold;
+    const Arithmetic arithmetic = chooseArithmetic(scene, options.arithmetic);
+    return withPrecision(arithmetic.tier, [&](auto tag) {
+      using T = decltype(tag);
+      const Scene<T> s(scene, arithmetic);
+      Tracer<T> tracer(s, options);
+      std::vector<GatherSummary> gathers;
+      tracer.pixel(Camera<T>(scene.camera, 16, 12), x, y, nullptr, &gathers);
+      return gathers[0].rays;
+    });
+  };
+  CHECK(firstBounceRays(furnace, 1e-6f, 8, 6) == 24);
+  // On the room's floor near the spheres the rounds differ: a tiny threshold takes all 64, a loose one 24.
+  CHECK(firstBounceRays(smallRoom(), 1e-6f, 8, 3) == 64);
+  CHECK(firstBounceRays(smallRoom(), 1.0f, 8, 3) == 24);
+  // And the image stays the same on any number of threads.
+  RenderOptions options = gi({64, 4});
+  options.gi.adaptive = 0.01f;
+  const Image one = render(smallRoom(), 12, 9, options);
+  options.threads = 2;
+  CHECK(sameBits(one, render(smallRoom(), 12, 9, options)));
+}
+
+TEST_CASE("GI diagnostics sum up the gather rays per bounce", "[gi]") {
+  const SceneDesc scene = smallRoom();
+  const RenderOptions options = gi({9, 4});
+  const Arithmetic arithmetic = chooseArithmetic(scene, options.arithmetic);
+  withPrecision(arithmetic.tier, [&](auto tag) {
+    using T = decltype(tag);
+    const Scene<T> s(scene, arithmetic);
+    const Camera<T> camera(scene.camera, 16, 12);
+    Tracer<T> tracer(s, options);
+    std::vector<RayRecord> trees;
+    std::vector<GatherSummary> gathers;
+    tracer.pixel(camera, 8, 3, &trees, &gathers);  // the floor: every gather ray leaves a hit
+    REQUIRE(gathers.size() == 2);
+    CHECK(gathers[0].rays == 9);
+    // The second bounce gathers 4 rays from each of the first bounce's hits (those that did not miss).
+    CHECK(gathers[1].rays > 0);
+    CHECK(gathers[1].rays <= 36);
+    CHECK(gathers[1].rays % 4 == 0);
+    CHECK(trees.size() == 1);
+    CHECK(trees[0].children.empty());
+    CHECK(tracer.counts().eye == 1);
+    CHECK(tracer.counts().gather == gathers[0].rays + gathers[1].rays);
+  });
+}
