@@ -1,7 +1,7 @@
 // The random numbers of Monte Carlo global illumination (docs/gi.md): counter-based, so that a sample's numbers
 // depend only on where it is in the image (pixel, sub-sample, the path of gather samples that led to it, the
 // seed), never on which thread or in which order it is computed. Also the stratified cosine-weighted hemisphere
-// that the course gathers indirect light with (csc473-course.md §c.14, docs/reference/csc473.md §c.14).
+// that the course gathers indirect light with (docs/reference/csc473.md §c.14).
 #pragma once
 
 #include <algorithm>
