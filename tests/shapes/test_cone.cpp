@@ -160,8 +160,18 @@ TEMPLATE_TEST_CASE("cone sweep against the inside/outside oracle", "[cone]", flo
   };
   const auto bounds = c.bounds();
   REQUIRE(bounds);
+  // A step of the sweep's margin against the normal stays inside except near the pointed apex and the rims,
+  // where side and disk meet at an acute angle: there it can come out through the other face.
+  const T margin = T(1e-3) * maxAbs(bounds->max - bounds->min);
+  const test::Thick<T> thick = [&](const Vec3<T>& p) {
+    const T y = glm::dot(p - base, axis);
+    const T radius = r1 + slope * y;
+    const T across = glm::length(p - base - y * axis);
+    const bool nearRim = glm::min(y, height - y) < 2 * margin && radius - across < 2 * margin;
+    return radius >= 2 * margin && !nearRim;
+  };
   const auto seed = GENERATE(1u, 2u);
-  test::sweep<T>(c, depth, bounds->min, bounds->max, seed);
+  test::sweep<T>(c, depth, bounds->min, bounds->max, seed, thick);
 }
 
 // Radii whose squares vanish in the arithmetic: the side's normal has no direction, so the side is missed
