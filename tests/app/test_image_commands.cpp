@@ -7,20 +7,12 @@
 #include "raytrace/app/commands.hpp"
 #include "raytrace/image/exr_file.hpp"
 #include "raytrace/util/error.hpp"
+#include "command_error.hpp"
 #include "temp_dir.hpp"
 
-namespace {
+using rt::test::errorOf;
 
-// The error message a command line produces, or "" if it runs.
-std::string errorOf(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  try {
-    rt::runCommand(args, out, err);
-  } catch (const rt::Error& e) {
-    return e.what();
-  }
-  return "";
-}
+namespace {
 
 std::string outputOf(const std::vector<std::string>& args) {
   std::ostringstream out, err;

@@ -11,10 +11,13 @@
 
 #include "raytrace/render/renderer.hpp"
 #include "raytrace/render/tracer.hpp"
+#include "scene_builder.hpp"
 
 using namespace rt;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
+
+using rt::test::add;
 
 namespace {
 
@@ -24,13 +27,6 @@ Material matte(const Color& ambient, const Color& diffuse) {
   m.ambient = ambient;
   m.diffuse = diffuse;
   return m;
-}
-
-void add(SceneDesc& scene, const ShapeDesc& shape, const Material& m) {
-  ObjectDesc o;
-  o.shape = shape;
-  o.material = m;
-  scene.objects.push_back(o);
 }
 
 RenderOptions gi(std::vector<int> samples, std::optional<int> bounces = {}, uint64_t seed = 0) {

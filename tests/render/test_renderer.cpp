@@ -8,9 +8,12 @@
 #include "raytrace/parse/scene_file.hpp"
 #include "raytrace/render/renderer.hpp"
 #include "raytrace/render/tracer.hpp"
+#include "scene_builder.hpp"
 
 using namespace rt;
 using Catch::Matchers::WithinAbs;
+
+using rt::test::add;
 
 namespace {
 
@@ -38,13 +41,6 @@ Material pov(const Color& c, float ka, float kd, float ks = 0, float roughness =
   m.exponent = 2 / (roughness * roughness) - 2;
   m.reflection = reflection;
   return m;
-}
-
-void add(SceneDesc& scene, const ShapeDesc& shape, const Material& m) {
-  ObjectDesc o;
-  o.shape = shape;
-  o.material = m;
-  scene.objects.push_back(o);
 }
 
 Color centre(const SceneDesc& scene, const RenderOptions& options = {}) {
