@@ -4,14 +4,15 @@
     bench/gen_triangles.py OUT.pov [--spheres 800] [--subdivisions 3]
 
 Each sphere is an icosahedron whose faces are split in four `subdivisions` times (20·4^s triangles: 1280 for
-s = 3), lifted onto the sphere; 800 of them make 1,024,000 triangles. The field and camera are those of
-bench/scaling.py, so the picture resembles its sphere scenes. Deterministic (fixed seed); the file is about
+s = 3), lifted onto the sphere; 800 of them make 1,024,000 triangles. The field and camera are bench/scaling.py's
+(write_field), so the picture resembles its sphere scenes. Deterministic (fixed seed); the file is about
 120 MB and never committed.
 """
 
 import argparse
 import math
-import random
+
+from scaling import write_field
 
 
 def icosphere(subdivisions):
@@ -44,28 +45,11 @@ def icosphere(subdivisions):
 
 
 def write_scene(path, spheres, subdivisions):
-    rng = random.Random(1024)
     verts, faces = icosphere(subdivisions)
-    side = int(round((2 * spheres) ** 0.5))  # a 2:1 grid, as in bench/scaling.py
-    cols, rows = side, (spheres + side - 1) // side
-    scale = (20000 / spheres) ** 0.5
+    describe = lambda cols, rows: ("%d geodesic spheres of %d triangles (%d in all) on a plane, 1 light "
+                                   "(bench/gen_triangles.py)" % (spheres, len(faces), spheres * len(faces)))
     with open(path, "w") as f:
-        f.write("// %d geodesic spheres of %d triangles (%d in all) on a plane, 1 light (bench/gen_triangles.py)\n"
-                % (spheres, len(faces), spheres * len(faces)))
-        d = (0.0, -9.0, -33.0)
-        norm = (d[1] ** 2 + d[2] ** 2) ** 0.5
-        up = (0.0, -d[2] / norm, d[1] / norm)
-        f.write("camera {\n  location <0, 9, 8>\n  up <0, %.6f, %.6f>\n  right <1.33333, 0, 0>\n"
-                "  look_at <0, 0, -25>\n}\n" % (up[1], up[2]))
-        f.write("light_source { <-60, 80, 60> color rgb <1.2, 1.2, 1.2> }\n")
-        f.write("plane { <0, 1, 0>, 0\n  pigment { color rgb <0.6, 0.6, 0.65> }\n"
-                "  finish { ambient 0.15 diffuse 0.7 }\n}\n")
-        for k in range(spheres):
-            i, j = k % cols, k // cols
-            r = rng.uniform(0.08, 0.2) * scale
-            x = -40 + (i + 0.5) * 80 / cols + rng.uniform(-0.25, 0.25) * 80 / cols
-            z = -60 + (j + 0.5) * 60 / rows + rng.uniform(-0.25, 0.25) * 60 / rows
-            y = r + rng.uniform(0, 0.5) * scale
+        for x, y, z, r, rng in write_field(f, spheres, 1024, describe):
             colour = "pigment { color rgb <%.3f, %.3f, %.3f> }" % (rng.uniform(0.1, 1), rng.uniform(0.1, 1),
                                                                    rng.uniform(0.1, 1))
             p = ["<%.5f, %.5f, %.5f>" % (x + r * v[0], y + r * v[1], z + r * v[2]) for v in verts]

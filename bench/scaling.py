@@ -22,29 +22,36 @@ import time
 COUNTS = (1000, 10000, 100000, 1000000)
 
 
-def write_scene(path, n):
-    rng = random.Random(n)
+def write_field(f, n, seed, describe):
+    """Writes the comment describe(cols, rows), camera, light and plane to `f`, then yields (x, y, z, r, rng) for each of its
+    n spheres; the caller draws what else a sphere needs from rng before asking for the next."""
+    rng = random.Random(seed)
     side = int(round((2 * n) ** 0.5))  # a 2:1 grid, as in spheres20k.pov
     cols, rows = side, (n + side - 1) // side
     scale = (20000 / n) ** 0.5          # spheres20k's sizes at n = 20000
+    f.write("// %s\n" % describe(cols, rows))
+    # up exactly perpendicular to the view direction (0, -9, -33), as gen.py makes it
+    d = (0.0, -9.0, -33.0)
+    norm = (d[1] ** 2 + d[2] ** 2) ** 0.5
+    up = (0.0, -d[2] / norm, d[1] / norm)
+    f.write("camera {\n  location <0, 9, 8>\n  up <0, %.6f, %.6f>\n  right <1.33333, 0, 0>\n"
+            "  look_at <0, 0, -25>\n}\n" % (up[1], up[2]))
+    f.write("light_source { <-60, 80, 60> color rgb <1.2, 1.2, 1.2> }\n")
+    f.write("plane { <0, 1, 0>, 0\n  pigment { color rgb <0.6, 0.6, 0.65> }\n"
+            "  finish { ambient 0.15 diffuse 0.7 }\n}\n")
+    for k in range(n):
+        i, j = k % cols, k // cols
+        r = rng.uniform(0.08, 0.2) * scale
+        x = -40 + (i + 0.5) * 80 / cols + rng.uniform(-0.25, 0.25) * 80 / cols
+        z = -60 + (j + 0.5) * 60 / rows + rng.uniform(-0.25, 0.25) * 60 / rows
+        y = r + rng.uniform(0, 0.5) * scale
+        yield x, y, z, r, rng
+
+
+def write_scene(path, n):
     with open(path, "w") as f:
-        f.write("// %d spheres in a jittered %d x %d field on a plane, 1 light (bench/scaling.py)\n"
-                % (n, cols, rows))
-        # up exactly perpendicular to the view direction (0, -9, -33), as gen.py makes it
-        d = (0.0, -9.0, -33.0)
-        norm = (d[1] ** 2 + d[2] ** 2) ** 0.5
-        up = (0.0, -d[2] / norm, d[1] / norm)
-        f.write("camera {\n  location <0, 9, 8>\n  up <0, %.6f, %.6f>\n  right <1.33333, 0, 0>\n"
-                "  look_at <0, 0, -25>\n}\n" % (up[1], up[2]))
-        f.write("light_source { <-60, 80, 60> color rgb <1.2, 1.2, 1.2> }\n")
-        f.write("plane { <0, 1, 0>, 0\n  pigment { color rgb <0.6, 0.6, 0.65> }\n"
-                "  finish { ambient 0.15 diffuse 0.7 }\n}\n")
-        for k in range(n):
-            i, j = k % cols, k // cols
-            r = rng.uniform(0.08, 0.2) * scale
-            x = -40 + (i + 0.5) * 80 / cols + rng.uniform(-0.25, 0.25) * 80 / cols
-            z = -60 + (j + 0.5) * 60 / rows + rng.uniform(-0.25, 0.25) * 60 / rows
-            y = r + rng.uniform(0, 0.5) * scale
+        for x, y, z, r, rng in write_field(f, n, n, lambda cols, rows: "%d spheres in a jittered %d x %d field on a "
+                                           "plane, 1 light (bench/scaling.py)" % (n, cols, rows)):
             f.write("sphere { <%.5f, %.5f, %.5f>, %.5f\n  pigment { color rgb <%.3f, %.3f, %.3f> }\n"
                     "  finish { ambient 0.15 diffuse 0.7 specular 0.3 roughness 0.05 }\n}\n"
                     % (x, y, z, r, rng.uniform(0.1, 1), rng.uniform(0.1, 1), rng.uniform(0.1, 1)))
