@@ -11,6 +11,9 @@ namespace {
 
 float saturate(float x) { return glm::clamp(x, 0.0f, 1.0f); }
 
+// e^−107 < 2^−154.3: a quarter of the smallest subnormal float with room to spare for the product's rounding.
+constexpr float kUnderflowExponent = 107.0f;
+
 // Smith's masking term for GGX, G1(x) = 2 / (1 + √(1 + α² tan²θx)) (Walter et al. 2007, eq. 34). The caller
 // has checked x·n > 0, and the half vector makes x·h ≥ 0, so the χ⁺(x·h / x·n) of §c.2 is 1. A tiny x·n
 // gives tan²θ = ∞ and G1 = 0, never NaN.
@@ -27,6 +30,9 @@ float blinnPhongSpecular(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, f
   const T len = glm::length(sum);
   if (!(len > T(0))) return 0.0f;  // l = −v: no half vector
   const float nh = saturate(float(glm::dot(n, sum) / len));
+  // nh^p ≤ e^(−p(1 − nh)) (ln x ≤ x − 1): past kUnderflowExponent that is below 2^−154, which powf rounds to
+  // +0, so the answer is the same without powf's slow underflow path (docs/performance-notes.md).
+  if ((1.0f - nh) * exponent > kUnderflowExponent) return 0.0f;
   return std::pow(nh, std::max(exponent, 0.0f));
 }
 
