@@ -126,7 +126,9 @@ template <class T> const Color* Tracer<T>::tile(const Camera<T>& camera, int x0,
           const Ray<T> ray = camera.sampleRay(x, y, i, j, n);
           eye.rays[k].origin = ray.origin;
           eye.rays[k].dir = ray.dir;
-          eye.paths[k++] = Path{0, 0, 1.0f, pixelKey(options_.gi.seed, x, y, i * n + j)};
+          // Only gathering reads the keys: without -gi their four hashes per sample are left out.
+          const uint64_t key = options_.gi.enabled ? pixelKey(options_.gi.seed, x, y, i * n + j) : 0;
+          eye.paths[k++] = Path{0, 0, 1.0f, key};
         }
       }
     }
@@ -373,7 +375,7 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Vec3<T>& 
   if (child.depth <= conventions_.maxDepth && w.transmission > 0 && matters(child.weight, child.depth)) {
     RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
     if (sub) sub->extraInfo.push_back(entering ? "into-object" : "into-air");
-    child.key = childKey(path.key, kRefractionBranch);
+    if (options_.gi.enabled) child.key = childKey(path.key, kRefractionBranch);
     ++counts_.secondary;
     const Traced t =
         trace(spawnRay(hit, *refracted, *scene_.arithmetic().offset), RayRecord::Kind::Refraction, child, sub);
@@ -385,7 +387,7 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Vec3<T>& 
   child.weight = path.weight * w.reflection * brightest(reflectTint);
   if (child.depth <= conventions_.maxDepth && w.reflection > 0 && matters(child.weight, child.depth)) {
     RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
-    child.key = childKey(path.key, kReflectionBranch);
+    if (options_.gi.enabled) child.key = childKey(path.key, kReflectionBranch);
     ++counts_.secondary;
     const Ray<T> mirrored = spawnRay(hit, reflectDirection(ray.dir, n), *scene_.arithmetic().offset);
     const Traced r = trace(mirrored, RayRecord::Kind::Reflection, child, sub);

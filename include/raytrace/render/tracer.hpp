@@ -47,7 +47,7 @@ template <class T> class Tracer {
     int depth = 0;      // reflection/refraction level, the primary ray 0 (§c.9)
     int bounce = 0;     // gather rays between the eye and this ray (docs/gi.md)
     float weight = 1;   // the accumulated weight of its colour in the pixel (docs/reference/stability.md F12)
-    uint64_t key = 0;   // the root of its random numbers (sampler.hpp)
+    uint64_t key = 0;   // the root of its random numbers (sampler.hpp); 0 without -gi, which reads none
   };
 
   struct Local {
