@@ -254,6 +254,7 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
 }
 
 template <class T>
+[[gnu::always_inline]] inline
 Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Vec3<T>& n, RayRecord* record,
                          std::optional<Vec3<T>>& refracted) const {
   const Material& m = hit.object->material();
@@ -361,6 +362,7 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
 }
 
 template <class T>
+[[gnu::always_inline]] inline
 Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Vec3<T>& n, const Weights& w,
                            const std::optional<Vec3<T>>& refracted, const Path& path, RayRecord* record) {
   const Material& m = hit.object->material();
