@@ -253,6 +253,7 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
   return ambientLight + local.diffuse + local.specular + secondaryLight;
 }
 
+// Inlined into shade(), its only caller, as secondary() is (docs/performance-notes.md, "Whitted path").
 template <class T>
 [[gnu::always_inline]] inline
 Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Vec3<T>& n, RayRecord* record,
