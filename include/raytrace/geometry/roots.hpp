@@ -35,7 +35,8 @@ template <class T> bool textbookRoots(const Vec3<T>& f, const Vec3<T>& d, T radi
 //    (Numerical Recipes §5.6; docs/reference/stability.md F2).
 // With f = o − c the quadratic is a·t² + 2b·t + c = 0, a = d·d, b = f·d, c = f·f − r², Δ = b² − a·c.
 // The same equation in the plane perpendicular to an axis is the ray-cylinder side test. Needs d ≠ 0.
-// Forced inline: it is the inner loop of every sphere test, and GCC left it a call (docs/performance-notes.md, "Whitted path").
+// Forced inline: it is the inner loop of every sphere test, and GCC left it a call
+// (docs/performance-notes.md, "Whitted path").
 template <class T>
 [[gnu::always_inline]] inline bool robustRoots(const Vec3<T>& f, const Vec3<T>& d, T radius, T& t0, T& t1) {
   const T a = glm::dot(d, d);
