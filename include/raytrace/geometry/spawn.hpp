@@ -62,8 +62,9 @@ template <class T> Vec3<T> waechterBinderOffset(const Vec3<T>& p, const Vec3<T>&
   return out;
 }
 
-// The origin of a ray leaving `hit` in direction `dir`.
-template <class T> Vec3<T> spawnOrigin(const Hit<T>& hit, const Vec3<T>& dir, OffsetPolicy policy) {
+// The origin of a ray leaving `hit` in direction `dir`. Forced inline: GCC kept a call per shadow and
+// secondary ray (docs/performance-notes.md, "Whitted path").
+template <class T> [[gnu::always_inline]] inline Vec3<T> spawnOrigin(const Hit<T>& hit, const Vec3<T>& dir, OffsetPolicy policy) {
   const Vec3<T> outward = glm::dot(hit.normal, dir) > T(0) ? hit.normal : -hit.normal;
   switch (policy) {
     case OffsetPolicy::Course:
