@@ -15,8 +15,9 @@ enum class SphereMethod { Auto, Textbook, Robust };
 
 // The textbook quadratic (lecture 3; Shirley, Fundamentals of Computer Graphics §4.4.1): a·t² + b·t + c = 0 with
 // b = 2 d·f, Δ = b² − 4ac. Its error grows as ε·R² (docs/reference/stability.md F1), so chooseArithmetic() uses
-// it only where R is small.
-template <class T> bool textbookRoots(const Vec3<T>& f, const Vec3<T>& d, T radius, T& t0, T& t1) {
+// it only where R is small. Forced inline as robustRoots() is.
+template <class T>
+[[gnu::always_inline]] inline bool textbookRoots(const Vec3<T>& f, const Vec3<T>& d, T radius, T& t0, T& t1) {
   const T a = glm::dot(d, d);
   const T b = T(2) * glm::dot(d, f);
   const T c = glm::dot(f, f) - radius * radius;
