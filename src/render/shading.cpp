@@ -11,7 +11,7 @@ namespace {
 
 float saturate(float x) { return glm::clamp(x, 0.0f, 1.0f); }
 
-// e^−107 < 2^−154.3: a quarter of the smallest subnormal float with room to spare for the product's rounding.
+// e^−107 < 2^−154: far below 2^−150, half the smallest subnormal float, under which powf rounds to +0.
 constexpr float kUnderflowExponent = 107.0f;
 
 // Smith's masking term for GGX, G1(x) = 2 / (1 + √(1 + α² tan²θx)) (Walter et al. 2007, eq. 34). The caller

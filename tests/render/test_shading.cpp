@@ -1,4 +1,5 @@
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include <catch2/catch.hpp>
@@ -28,6 +29,29 @@ TEST_CASE("Blinn-Phong specular is the clamped half-vector cosine to the exponen
   // Opposite light and view have no half vector.
   CHECK(blinnPhongSpecular(up, unit(1, 0, 0), unit(-1, 0, 0), 5.0f) == 0.0f);
   CHECK(blinnPhongSpecular(up, unit(1, 0, 1), unit(-1, 0, 1), 5.0f) == 1.0f);
+}
+
+TEST_CASE("Blinn-Phong specular is powf's own answer down to its underflow", "[shading]") {
+  // The light swept from the viewer's direction to the horizon: n·h = cos(θ/2) covers [0.7, 1], through the
+  // tiny and subnormal results near the point where nh^p underflows.
+  const Vec3<float> n(0, 0, 1);
+  for (const float exponent : {20.0f, 798.0f, 4998.0f, 50000.0f}) {
+    int subnormal = 0, zero = 0;
+    for (int k = 0; k <= 20000; ++k) {
+      const double theta = M_PI / 2 * k / 20000;
+      const Vec3<float> l(float(std::sin(theta)), 0.0f, float(std::cos(theta)));
+      const Vec3<float> sum = l + n;
+      const float nh = glm::clamp(float(glm::dot(n, sum) / glm::length(sum)), 0.0f, 1.0f);
+      const float expected = std::pow(nh, exponent);
+      const float got = blinnPhongSpecular(n, n, l, exponent);
+      INFO("exponent " << exponent << ", nh " << nh);
+      REQUIRE(std::memcmp(&got, &expected, sizeof got) == 0);
+      subnormal += std::fpclassify(expected) == FP_SUBNORMAL;
+      zero += expected == 0.0f;
+    }
+    if (exponent >= 798.0f) CHECK(subnormal > 0);
+    if (exponent >= 798.0f) CHECK(zero > 0);
+  }
 }
 
 TEST_CASE("Cook-Torrance GGX at normal incidence is F0 / (4 pi alpha^2)", "[shading]") {
