@@ -8,13 +8,7 @@ template <class T>
 std::optional<Hit<T>> Sphere<T>::intersect(const Ray<T>& ray, Interval<T> range) const {
   T t;
   if (!nearestRoot(center_, radius_, robust_, ray, range, t)) return std::nullopt;
-  Hit<T> hit;
-  hit.t = t;
-  hit.normal = glm::normalize(ray.at(t) - center_);
-  if (!hit.hasNormal()) return std::nullopt;
-  hit.point = center_ + radius_ * hit.normal;  // re-projected onto the surface (docs/reference/stability.md F4)
-  hit.object = this;
-  return hit;
+  return hitAt(center_, radius_, ray, t, this);
 }
 
 // A shadow ray needs no hit record: only whether a root lies inside its segment.

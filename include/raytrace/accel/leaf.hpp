@@ -91,19 +91,26 @@ template <class T> class ClosestSoFar {
     }
     T t;
     if (!p.hitT(ray, range, t) || !(t < t_ || p.id < id_)) return false;
-    t_ = t, id_ = p.id, deferred_ = &object;
+    t_ = t, id_ = p.id, deferred_ = &object, primitive_ = &p;
     return true;
   }
   T t() const { return t_; }
-  // The record of a sphere's or triangle's hit: its intersect() finds the same t again.
+  // The record of a sphere's or triangle's hit: a sphere's made from its t as its intersect() makes it, a
+  // triangle's by its intersect(), which finds the same t again.
   void finish(const Ray<T>& ray, T tMin, std::optional<Hit<T>>& best) const {
-    if (deferred_) best = deferred_->intersect(ray, {tMin, nextUp(t_)});
+    if (!deferred_) return;
+    if (primitive_->kind == Primitive<T>::Kind::Triangle) {
+      best = deferred_->intersect(ray, {tMin, nextUp(t_)});
+    } else {
+      best = Sphere<T>::hitAt(primitive_->a, primitive_->ab.x, ray, t_, deferred_);
+    }
   }
 
  private:
   T t_;
   int id_;
   const Object<T>* deferred_ = nullptr;
+  const Primitive<T>* primitive_ = nullptr;  // deferred_'s, while it is set
 };
 
 }  // namespace rt

@@ -34,6 +34,18 @@ template <class T> class Sphere final : public Object<T> {
     T t0, t1;
     return roots(center, radius, robust, ray, t0, t1) && (range.surrounds(t0) || range.surrounds(t1));
   }
+  // intersect()'s record of the hit at t, a root nearestRoot() gave on this ray; nullopt where the sphere is
+  // too small for a normal. A hierarchy that found t in its own arrays makes the record without a second test.
+  static std::optional<Hit<T>> hitAt(const Vec3<T>& center, T radius, const Ray<T>& ray, T t,
+                                     const Object<T>* object) {
+    Hit<T> hit;
+    hit.t = t;
+    hit.normal = glm::normalize(ray.at(t) - center);
+    if (!hit.hasNormal()) return std::nullopt;
+    hit.point = center + radius * hit.normal;  // re-projected onto the surface (docs/reference/stability.md F4)
+    hit.object = object;
+    return hit;
+  }
   const Vec3<T>& center() const { return center_; }
   T radius() const { return radius_; }
   bool robust() const { return robust_; }
