@@ -82,6 +82,8 @@ const char* const kRenderOptions =
     "  --seed N                        -gi's random numbers (default 0); same image for any threads\n"
     "  --gi-adaptive=E                 the first bounce gathers in rounds and stops once the standard\n"
     "                                  error of its light is below E (e.g. 0.01); -gi_samples caps it\n"
+    "  --gi-cache=A                    irradiance caching of the first bounce at accuracy A (0 to 1,\n"
+    "                                  e.g. 0.2; smaller: more records, closer to uncached -gi)\n"
     "  -normals                        colour each hit by its normal (debug)\n"
     "  --threads N                     load, build and render on N threads (default: every core); same\n"
     "                                  scene and image for any N\n"

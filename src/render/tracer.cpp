@@ -116,6 +116,7 @@ template <class T> const Color* Tracer<T>::tile(const Camera<T>& camera, int x0,
   eye.rays.resize(count);
   eye.paths.resize(count);
   eye.colors.resize(count);
+  eye.distances.resize(count);
   size_t k = 0;
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x) {
@@ -180,8 +181,9 @@ template <class T> void Tracer<T>::traceBatch(Batch& batch, int count, RayRecord
     for (int i = 0; i < size; ++i) {
       const size_t r = size_t(first + i);
       raysLeft_ = treeRays_ - 1;
-      batch.colors[r] = follow(packet[i], hits[i], kind, batch.paths[r], nullptr, shadows.data() + size_t(i) * lights)
-                            .color;
+      const Traced t = follow(packet[i], hits[i], kind, batch.paths[r], nullptr, shadows.data() + size_t(i) * lights);
+      batch.colors[r] = t.color;
+      batch.distances[r] = t.distance;
     }
   }
   raysLeft_ = outerRaysLeft;
@@ -272,7 +274,31 @@ template <class T> Color Tracer<T>::ambient(const Hit<T>& hit, const Vec3<T>& n,
   if (!options_.gi.enabled) return hit.object->material().ambient;
   // The gathered light takes the place of ka·C (Ca in .cli) as it is: no ka, kd or pigment factor (§c.14; the
   // reference images show it, docs/gi.md).
+  if (cache_ && path.bounce == 0 && options_.gi.bounceCount() > 0) return cached(hit, n, path);
   return gather(hit, n, path);
+}
+
+template <class T> Color Tracer<T>::cached(const Hit<T>& hit, const Vec3<T>& n, const Path& path) {
+  ++counts_.cacheLookups;
+  if (const std::optional<Color> c = cache_->lookup(hit.point, n)) return *c;
+  if (!made_) {
+    ++counts_.cacheMisses;
+    return gather(hit, n, path);
+  }
+  // The same rays and sum as gather(), so a record's value is what the uniform estimator gives at its point.
+  const int count = options_.gi.samplesAt(0);
+  gatherSet(hit, n, path, 0, count);
+  const Batch& batch = batches_[1];
+  directions_.resize(size_t(count));
+  for (int i = 0; i < count; ++i) directions_[size_t(i)] = batch.rays[size_t(i)].dir;
+  IrradianceRecord<T> record =
+      makeRecord(hit.point, n, GatherSamples<T>{strataFor(count), directions_.data(), batch.colors.data(),
+                                                batch.distances.data()},
+                 cache_->clampRadius(hit.point, T(0)));
+  record.radius = cache_->clampRadius(hit.point, record.radius);
+  made_->push_back(record);
+  ++counts_.cacheRecords;
+  return record.value;
 }
 
 template <class T> Color Tracer<T>::gather(const Hit<T>& hit, const Vec3<T>& n, const Path& path) {
@@ -309,6 +335,7 @@ Color Tracer<T>::gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path
   batch.rays.resize(size_t(count));
   batch.paths.resize(size_t(count));
   batch.colors.resize(size_t(count));
+  batch.distances.resize(size_t(count));
   const OffsetPolicy offset = *scene_.arithmetic().offset;
   for (int i = 0; i < count; ++i) {
     const uint64_t key = childKey(path.key, first + uint64_t(i));

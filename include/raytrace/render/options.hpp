@@ -21,6 +21,8 @@ struct GiOptions {
   uint64_t seed = 0;                 // --seed N: an independent render of the same scene
   // --gi-adaptive=E: the first bounce stops gathering once the standard error of its estimate is below E.
   std::optional<float> adaptive;
+  // --gi-cache=A: the first bounce's gathering comes from an irradiance cache of accuracy A (docs/gi.md).
+  std::optional<float> cache;
 
   int bounceCount() const { return bounces ? *bounces : int(samples.size()); }
   // Gather rays per hit at `bounce` (0 = the eye ray's hit); past the list, its last count.
