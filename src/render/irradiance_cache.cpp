@@ -51,14 +51,23 @@ IrradianceRecord<T> makeRecord(const Vec3<T>& point, const Vec3<T>& normal, cons
   for (int i = 0; i < count; ++i) {
     sum += s.radiance[i];
     inverseDistances += T(1) / s.distances[i];  // 0 for a miss
-    // Rotational gradient (Ward and Heckbert 1992): turning n about axis a changes a ray's cosine by
-    // a·(n × d), which under the density cos θ/π weighs its radiance by (n × d)/(n·d) = tan θ along v(φ).
-    const T cosine = glm::dot(normal, s.directions[i]);
-    r.rotation += glm::outerProduct(s.radiance[i], glm::vec3(glm::cross(normal, s.directions[i]) / cosine));
   }
   r.value = sum / float(count);
-  r.rotation /= float(count);
   r.radius = inverseDistances > T(0) ? T(count) / inverseDistances : std::numeric_limits<T>::infinity();
+
+  // Rotational gradient (Ward and Heckbert 1992): turning n about axis a changes the cosine of direction d by
+  // a·(n × d) = a·v(φ) sin θ, which under the density cos θ/π weighs its radiance by tan θ along v(φ), the
+  // tangent a quarter turn past d's azimuth. At the strata's middles, so that a constant field gives 0.
+  for (int k = 0; k < cols; ++k) {
+    const glm::vec3 v = tangent(normal, 2 * glm::pi<double>() * (k + 0.5) / cols + glm::half_pi<double>());
+    Color column(0);
+    for (int j = 0; j < rows; ++j) {
+      const double sin2 = (j + 0.5) / rows;
+      column += s.radiance[size_t(j * cols + k)] * float(std::sqrt(sin2 / (1 - sin2)));
+    }
+    r.rotation += glm::outerProduct(column, v);
+  }
+  r.rotation /= float(count);
 
   // Translational gradient (Ward and Heckbert 1992, for strata of equal cos θ/π share: rows in sin²θ, columns
   // in φ): moving the point moves the edges between strata by 1/distance of the nearer hit; each edge trades
