@@ -146,8 +146,8 @@ template <class T> std::optional<Color> IrradianceCache<T>::lookup(const Vec3<T>
     const Node& node = nodes_[size_t(stack[--top])];
     for (const int i : node.held) {
       const IrradianceRecord<T>& r = records_[size_t(i)];
-      // A record on the other side of a surface, or in front of x, does not see what x sees.
-      if (glm::dot(n, r.normal) <= T(0) || inFront(r, x, n)) continue;
+      // A record in front of x sees light that x may not (a record facing away has an error above 1 ≥ a).
+      if (inFront(r, x, n)) continue;
       const T e = recordError(r, x, n);
       if (e == T(0)) return extrapolate(r, x, n);
       if (e >= T(accuracy_)) continue;  // weight 1/e not above 1/a

@@ -2,7 +2,6 @@
 // render, and determinism across threads, tile orders and diagnostics.
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <optional>
 #include <random>
 #include <vector>
@@ -11,57 +10,17 @@
 
 #include "raytrace/render/renderer.hpp"
 #include "raytrace/render/tracer.hpp"
-#include "scene_builder.hpp"
+#include "gi_scenes.hpp"
 
 using namespace rt;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 
 using rt::test::add;
-
-namespace {
-
-Material matte(const Color& ambient, const Color& diffuse) {
-  Material m;
-  m.pigment = Color(1);
-  m.ambient = ambient;
-  m.diffuse = diffuse;
-  return m;
-}
-
-RenderOptions gi(std::vector<int> samples, std::optional<int> bounces = {}, uint64_t seed = 0) {
-  RenderOptions o;
-  o.gi.enabled = true;
-  o.gi.samples = std::move(samples);
-  o.gi.bounces = bounces;
-  o.gi.seed = seed;
-  o.threads = 1;
-  return o;
-}
-
-// A floor, a back wall, two spheres and a light: light reaches most points by one or two bounces.
-SceneDesc smallRoom() {
-  SceneDesc scene;
-  scene.camera.location = {0, 1.5, 6};
-  scene.camera.lookAt = {0, 1, 0};
-  scene.lights.push_back({{2, 5, 3}, Color(1)});
-  add(scene, PlaneDesc{{0, 1, 0}, 0}, matte(Color(0.1f), Color(0.7f, 0.3f, 0.2f)));
-  add(scene, PlaneDesc{{0, 0, 1}, -2}, matte(Color(0.1f), Color(0.2f, 0.6f, 0.3f)));
-  add(scene, SphereDesc{{-0.8, 1, 0}, 1}, matte(Color(0.1f), Color(0.8f)));
-  add(scene, SphereDesc{{1.2, 0.5, 0.8}, 0.5}, matte(Color(0.1f), Color(0.3f, 0.3f, 0.9f)));
-  return scene;
-}
-
-bool sameBits(const Image& a, const Image& b) {
-  for (int y = 0; y < a.height(); ++y) {
-    for (int x = 0; x < a.width(); ++x) {
-      if (std::memcmp(&a.at(x, y), &b.at(x, y), sizeof(Color)) != 0) return false;
-    }
-  }
-  return true;
-}
-
-}  // namespace
+using rt::test::gi;
+using rt::test::matte;
+using rt::test::sameBits;
+using rt::test::smallRoom;
 
 TEST_CASE("GI furnace: inside a sphere lit from its centre each bounce adds the same direct light", "[gi]") {
   // Every point of the inner surface gets the direct light D = Lc·kd·C·(n·l = 1) and gathers only from other
