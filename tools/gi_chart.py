@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""Speed against error for -gi: uniform sampling against --gi-cache and --gi-adaptive, on the course's GI scenes.
+"""Speed against error for -gi: uniform sampling against --gi-cache, on the course's GI scenes.
 
-    tools/gi_chart.py [--bin build/raytrace] [--size 160x120] [--threads 2] [--scenes A.pov B.pov]
+    tools/gi_chart.py [--bin build/raytrace] [--size 160x120] [--threads 2] [--scenes A.pov B.pov] [--replot]
 
 For each scene it renders a reference of its own (the mean of --ref-seeds renders at --ref-samples, seeds 1…),
 then every setting of the sweep with seed 0, and measures each image's RMS pixel error against the reference
@@ -9,10 +9,10 @@ then every setting of the sweep with seed 0, and measures each image's RMS pixel
 machine). The reference's own noise is taken out of the error: the squared error of a render against a mean of
 K renders is its squared error against the converged image plus the mean's variance, which the spread of the K
 renders gives (their per-pixel variance / K); the square root of that variance is printed as the reference's
-standard error. Uniform runs go from 8,2 to 256,64; cached runs sweep the accuracy at three sample counts;
-adaptive runs cap at 256,64 and sweep the threshold. Writes resources/gi-speed-vs-error.csv and .png, and prints
-the table in Markdown: for each run but the uniform ones, the uniform error at the same CPU time (interpolated
-in log-log) beside its own.
+standard error. Uniform runs go from 8,2 to 256,64; cached runs sweep the accuracy at three sample counts.
+Writes resources/gi-speed-vs-error.csv and .png, and prints the table in Markdown: for each run but the uniform
+ones, the uniform error at the same CPU time (interpolated in log-log) beside its own. --replot redraws the
+chart and table from the CSV (which may hold modes since removed, such as the adaptive runs, docs/gi.md).
 """
 import argparse
 import csv
@@ -30,8 +30,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 UNIFORM = ["8,2", "16,4", "32,8", "64,16", "128,32", "256,64"]
 CACHE_SAMPLES = ["64,16", "256,16", "256,64"]
 CACHE = ["0.3", "0.2", "0.15", "0.1", "0.07", "0.05"]
-ADAPTIVE = ["0.02", "0.005"]
-ADAPTIVE_CAP = "256,64"
+MODES = ["uniform", "cache", "adaptive"]  # the order of the table; "adaptive" only in an old CSV
 
 
 def render(binary, scene, size, threads, samples, seed, flag=None):
@@ -69,8 +68,21 @@ def main():
     parser.add_argument("--scenes", nargs="+", default=[os.path.join(ROOT, "..", "shared", "scenes", "pov", s)
                                                          for s in ("cornell.pov", "simple-gi.pov")])
     parser.add_argument("--out", default=os.path.join(ROOT, "resources", "gi-speed-vs-error"))
+    parser.add_argument("--replot", action="store_true", help="redraw from the CSV instead of rendering")
     args = parser.parse_args()
+    rows = read(args.out + ".csv") if args.replot else measure(args)
+    plot(rows, args)
 
+
+def read(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    for r in rows:
+        r["cpu_s"], r["rms_error"] = float(r["cpu_s"]), float(r["rms_error"])
+    return rows
+
+
+def measure(args):
     rows = []
     for scene in args.scenes:
         name = os.path.splitext(os.path.basename(scene))[0]
@@ -81,8 +93,7 @@ def main():
         print("%-10s reference: %d renders at %s, standard error %.3f/255 (RMS over pixels)"
               % (name, len(refs), args.ref_samples, math.sqrt(ref_variance)), file=sys.stderr)
         runs = ([("uniform", s, "", None) for s in UNIFORM] +
-                [("cache", s, a, "--gi-cache=" + a) for s in CACHE_SAMPLES for a in CACHE] +
-                [("adaptive", ADAPTIVE_CAP, e, "--gi-adaptive=" + e) for e in ADAPTIVE])
+                [("cache", s, a, "--gi-cache=" + a) for s in CACHE_SAMPLES for a in CACHE])
         for mode, samples, setting, flag in runs:
             image, cpu = render(args.bin, scene, args.size, args.threads, samples, 0, flag)
             mse = float(np.mean((image - reference) ** 2))
@@ -92,12 +103,14 @@ def main():
                          "reference_se": round(math.sqrt(ref_variance), 3)})
             print("%-10s %-8s %-7s %-6s %7.2f s  RMS %.3f/255" % (name, mode, samples, setting, cpu, rms),
                   file=sys.stderr)
-
     with open(args.out + ".csv", "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0]))
         writer.writeheader()
         writer.writerows(rows)
+    return rows
 
+
+def plot(rows, args):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -107,10 +120,14 @@ def main():
     print("|---|---|---|---|---|---|---|")
     for ax, scene in zip(axes[0], scenes):
         uniform = [(r["cpu_s"], r["rms_error"]) for r in rows if r["scene"] == scene and r["mode"] == "uniform"]
-        series = sorted({(r["mode"], r["samples"]) for r in rows if r["scene"] == scene},
-                        key=lambda s: (s[0] != "uniform", s))
+        # One line for uniform sampling, one per sample count for the others, in the order of the runs.
+        line = lambda r: (r["mode"], "" if r["mode"] == "uniform" else r["samples"])
+        series = []
+        for r in sorted((r for r in rows if r["scene"] == scene), key=lambda r: MODES.index(r["mode"])):
+            if line(r) not in series:
+                series.append(line(r))
         for mode, samples in series:
-            mine = [r for r in rows if r["scene"] == scene and r["mode"] == mode and r["samples"] == samples]
+            mine = [r for r in rows if r["scene"] == scene and line(r) == (mode, samples)]
             style = {"uniform": "o-", "cache": "^-", "adaptive": "s--"}[mode]
             label = mode if mode == "uniform" else "%s %s" % (mode, samples)
             ax.loglog([r["cpu_s"] for r in mine], [r["rms_error"] for r in mine], style, label=label)

@@ -23,11 +23,6 @@ template <class T> Vec3<T> viewerSide(const Hit<T>& hit, const Ray<T>& ray) {
 constexpr uint64_t kReflectionBranch = uint64_t(1) << 40;
 constexpr uint64_t kRefractionBranch = kReflectionBranch + 1;
 
-// --gi-adaptive gathers the first bounce in up to kAdaptiveRounds stratified sets and stops once at least
-// kMinAdaptiveRounds agree well enough (docs/gi.md).
-constexpr int kAdaptiveRounds = 8;
-constexpr int kMinAdaptiveRounds = 3;
-
 float brightest(const Color& c) { return std::max(c.r, std::max(c.g, c.b)); }
 
 // The largest factor a specular term can put on Lc·ks·C: 1 for Blinn-Phong (a clamped cosine to a power
@@ -287,7 +282,7 @@ template <class T> Color Tracer<T>::cached(const Hit<T>& hit, const Vec3<T>& n, 
   }
   // The same rays and sum as gather(), so a record's value is what the uniform estimator gives at its point.
   const int count = options_.gi.samplesAt(0);
-  gatherSet(hit, n, path, 0, count);
+  gatherSet(hit, n, path, count);
   const Batch& batch = batches_[1];
   directions_.resize(size_t(count));
   for (int i = 0; i < count; ++i) directions_[size_t(i)] = batch.rays[size_t(i)].dir;
@@ -304,32 +299,11 @@ template <class T> Color Tracer<T>::cached(const Hit<T>& hit, const Vec3<T>& n, 
 template <class T> Color Tracer<T>::gather(const Hit<T>& hit, const Vec3<T>& n, const Path& path) {
   if (path.bounce >= options_.gi.bounceCount()) return Color(0);  // "use 0 for the last bounce" (§c.14)
   const int count = options_.gi.samplesAt(path.bounce);
-  if (path.bounce == 0 && options_.gi.adaptive) return gatherAdaptive(hit, n, path, count);
-  return gatherSet(hit, n, path, 0, count) / float(count);
+  return gatherSet(hit, n, path, count) / float(count);
 }
 
 template <class T>
-Color Tracer<T>::gatherAdaptive(const Hit<T>& hit, const Vec3<T>& n, const Path& path, int count) {
-  const int size = std::max(1, count / kAdaptiveRounds), rounds = count / size;
-  const float target = *options_.gi.adaptive;
-  Color sum(0), squares(0);
-  int done = 0;
-  while (done < rounds) {
-    const Color mean = gatherSet(hit, n, path, uint64_t(done) * uint64_t(size), size) / float(size);
-    sum += mean;
-    squares += mean * mean;
-    ++done;
-    if (done < kMinAdaptiveRounds) continue;
-    // The rounds are independent estimates: their spread gives the standard error of their mean.
-    const Color m = sum / float(done);
-    const Color variance = glm::max(Color(0), (squares - float(done) * m * m) / float(done - 1));
-    if (brightest(variance) / float(done) <= target * target) break;
-  }
-  return sum / float(done);
-}
-
-template <class T>
-Color Tracer<T>::gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path, uint64_t first, int count) {
+Color Tracer<T>::gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path, int count) {
   const Strata strata = strataFor(count);
   Batch& batch = batches_[size_t(1 + path.bounce)];
   batch.rays.resize(size_t(count));
@@ -338,7 +312,7 @@ Color Tracer<T>::gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path
   batch.distances.resize(size_t(count));
   const OffsetPolicy offset = *scene_.arithmetic().offset;
   for (int i = 0; i < count; ++i) {
-    const uint64_t key = childKey(path.key, first + uint64_t(i));
+    const uint64_t key = childKey(path.key, uint64_t(i));
     const Vec3<T> dir = aroundNormal(cosineHemisphere<T>(stratified(strata, i, uniformPair(key))), n);
     batch.rays[size_t(i)] = spawnRay(hit, dir, offset);
     batch.paths[size_t(i)] = Path{path.depth, path.bounce + 1, path.weight, key};

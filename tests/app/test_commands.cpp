@@ -65,10 +65,12 @@ TEST_CASE("cli: the -gi flags and their bad values") {
   CHECK(errorOf({"render", "a.pov", "-gi_bounces=17"}) == "-gi_bounces must be between 0 and 16, found 17");
   CHECK(errorOf({"render", "a.pov", "--seed"}) == "--seed needs a number");
   CHECK(errorOf({"render", "a.pov", "--seed=-1"}) == "--seed must be between 0 and 2147483647, found -1");
-  CHECK(errorOf({"render", "a.pov", "--gi-adaptive=0"}) ==
-        "--gi-adaptive must be a number above 0 and at most 1, found '0'");
-  CHECK(errorOf({"render", "a.pov", "--gi-adaptive=0.1x"}) ==
-        "--gi-adaptive must be a number above 0 and at most 1, found '0.1x'");
+  CHECK(errorOf({"render", "a.pov", "--gi-cache=0"}) ==
+        "--gi-cache must be a number above 0 and at most 1, found '0'");
+  CHECK(errorOf({"render", "a.pov", "--gi-cache=0.1x"}) ==
+        "--gi-cache must be a number above 0 and at most 1, found '0.1x'");
+  CHECK(errorOf({"render", "a.pov", "--gi-cache=1.5"}) ==
+        "--gi-cache must be a number above 0 and at most 1, found '1.5'");
   const rt::RenderOptions o = rt::parseFlag("-gi_bounces=3", rt::parseFlag("-gi_samples=32,8", rt::parseFlag("-gi", {})));
   CHECK(o.gi.enabled);
   CHECK(o.gi.samples == std::vector<int>{32, 8});

@@ -171,10 +171,10 @@ TEST_CASE("image commands: merge refuses tiles that do not make one picture, nam
         "'" + ss + "' is a tile of another render than '" + t0 + "': its raytrace.options is '-ss=2', not ''");
   // -gi's settings are the render's too: another seed or sample list is another picture.
   const std::string gi0 = tile("gi0.exr", "0/2", {"-gi", "-gi_samples=2,1", "--seed", "3"});
-  const std::string gi1 = tile("gi1.exr", "1/2", {"-gi", "-gi_samples=2,1", "--seed", "4", "--gi-adaptive=0.25"});
+  const std::string gi1 = tile("gi1.exr", "1/2", {"-gi", "-gi_samples=2,1", "--seed", "4", "--gi-cache=0.25"});
   CHECK(errorOf({"merge", "-o", out, gi0, gi1}) ==
         "'" + gi1 + "' is a tile of another render than '" + gi0 +
-            "': its raytrace.options is '-gi -gi_samples=2,1 --seed=4 --gi-adaptive=0.25', "
+            "': its raytrace.options is '-gi -gi_samples=2,1 --seed=4 --gi-cache=0.25', "
             "not '-gi -gi_samples=2,1 --seed=3'");
   REQUIRE(outputOf({"render", scene, "32", "25", "--tile", "1/2", "-o", dir.file("tall.exr")}).empty());
   CHECK(errorOf({"merge", "-o", out, t0, dir.file("tall.exr")}) ==

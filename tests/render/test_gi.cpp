@@ -146,37 +146,6 @@ TEST_CASE("GI images are the same for any thread count and any tile order, and p
   });
 }
 
-TEST_CASE("Adaptive gathering stops once its rounds agree, and spends the cap when they do not", "[gi]") {
-  // In the furnace every round returns the same light: three rounds of 64/8 rays, the least it takes.
-  SceneDesc furnace;
-  furnace.camera.right = {1, 0, 0};
-  furnace.lights.push_back({{0, 0, 0}, Color(1)});
-  add(furnace, SphereDesc{{0, 0, 0}, 10}, matte(Color(0.5f), Color(0.3f)));
-  const auto firstBounceRays = [](const SceneDesc& scene, float threshold, int x, int y) {
-    RenderOptions options = gi({64, 4});
-    options.gi.adaptive = threshold;
-    const Arithmetic arithmetic = chooseArithmetic(scene, options.arithmetic);
-    return withPrecision(arithmetic.tier, [&](auto tag) {
-      using T = decltype(tag);
-      const Scene<T> s(scene, arithmetic);
-      Tracer<T> tracer(s, options);
-      std::vector<GatherSummary> gathers;
-      tracer.pixel(Camera<T>(scene.camera, 16, 12), x, y, nullptr, &gathers);
-      return gathers[0].rays;
-    });
-  };
-  CHECK(firstBounceRays(furnace, 1e-6f, 8, 6) == 24);
-  // On the room's floor near the spheres the rounds differ: a tiny threshold takes all 64, a loose one 24.
-  CHECK(firstBounceRays(smallRoom(), 1e-6f, 8, 3) == 64);
-  CHECK(firstBounceRays(smallRoom(), 1.0f, 8, 3) == 24);
-  // And the image stays the same on any number of threads.
-  RenderOptions options = gi({64, 4});
-  options.gi.adaptive = 0.01f;
-  const Image one = render(smallRoom(), 12, 9, options);
-  options.threads = 2;
-  CHECK(sameBits(one, render(smallRoom(), 12, 9, options)));
-}
-
 TEST_CASE("GI diagnostics sum up the gather rays per bounce", "[gi]") {
   const SceneDesc scene = smallRoom();
   const RenderOptions options = gi({9, 4});

@@ -106,11 +106,9 @@ template <class T> class Tracer {
   // The mean radiance of options.gi.samplesAt(bounce) stratified cosine-weighted rays from the hit (§c.14);
   // black at the last bounce.
   Color gather(const Hit<T>& hit, const Vec3<T>& n, const Path& path);
-  // --gi-adaptive's first bounce: stratified rounds of count / kAdaptiveRounds rays until the standard error of
-  // their mean is below the threshold, or `count` rays are spent; the mean of the rounds.
-  Color gatherAdaptive(const Hit<T>& hit, const Vec3<T>& n, const Path& path, int count);
-  // The sum of what `count` stratified rays bring back, their random numbers keyed first … first + count − 1.
-  Color gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path, uint64_t first, int count);
+  // The sum of what `count` stratified rays bring back, their random numbers keyed 0 … count − 1 under the
+  // path's key; batches_[1 + path.bounce] keeps the rays, their colours and distances until the next call.
+  Color gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path, int count);
   // Diffuse and specular light from every light the point sees (§c.1, §c.7), before weighting. `n` is the
   // shading normal on the viewer's side, `v` the unit vector to the viewer.
   Local direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
