@@ -172,6 +172,12 @@ TEST_CASE("cli: --stats reports render's steps on the error stream, and only for
                                    "rays/s in trace\n"));
   CHECK(dir.names() == std::vector<std::string>{"a.png", "b.png", "s.cli"});
   CHECK(run({"render", scene, "8", "6", "--threads", "1", "--allow-write-anywhere"}).err.empty());
+  // --gi-cache adds the cache's line: records made, lookups, and points gathered without a record (none).
+  const Run cached = run({"render", scene, "8", "6", "-gi", "-gi_samples=4,2", "--gi-cache=0.3", "--threads", "1",
+                          "--stats", "--allow-write-anywhere"});
+  CHECK_THAT(cached.err, Catch::Contains(" M rays/s in trace\n"));
+  CHECK_THAT(cached.err, Catch::Matches("(.*\n){2}raytrace: irradiance cache [1-9][0-9]* records, [1-9][0-9]* lookups, "
+                                        "0 gathered uncached\n"));
   CHECK(errorOf({"sceneinfo", scene, "--stats"}) == "--stats is for the render command only");
   CHECK(errorOf({"pixelcolor", scene, "8", "6", "1", "1", "--stats"}) == "--stats is for the render command only");
 }
