@@ -18,7 +18,8 @@ namespace {
 
 // The tracer of the pixel commands: with --gi-cache it reads the cache the render would make of the whole
 // picture, built here the same way (as long as the render's own passes take), so the pixel is the rendered one.
-template <class T, class F> auto withTracer(const Invocation& inv, const Scene<T>& scene, const Camera<T>& camera, F&& f) {
+template <class T, class F>
+auto withTracer(const Invocation& inv, const Scene<T>& scene, const Camera<T>& camera, F&& f) {
   Tracer<T> tracer(scene, inv.options);
   if (!inv.options.gi.enabled || !inv.options.gi.cache) return f(tracer);
   const IrradianceCache<T> cache = prepareIrradianceCache(scene, camera, inv.options);
@@ -43,7 +44,8 @@ std::string bytes(const Color& c, Conventions::ToByte mode) {
 int pixelcolor(const Invocation& inv, std::ostream& out) {
   return withScene(inv, [&](const auto& scene, const auto& camera) {
     std::vector<RayRecord> trees;
-    const Color color = withTracer(inv, scene, camera, [&](auto& tracer) { return tracer.pixel(camera, inv.x, inv.y, &trees); });
+    const Color color =
+        withTracer(inv, scene, camera, [&](auto& tracer) { return tracer.pixel(camera, inv.x, inv.y, &trees); });
     const RayRecord& eye = trees.front();
     printPixelRay(out, inv.x, inv.y, eye.origin, eye.dir);
     if (!eye.hit) {
@@ -63,8 +65,9 @@ int rayTrees(const Invocation& inv, std::ostream& out, bool decorated) {
   return withScene(inv, [&](const auto& scene, const auto& camera) {
     std::vector<RayRecord> trees;
     std::vector<GatherSummary> gathers;
-    const Color color =
-        withTracer(inv, scene, camera, [&](auto& tracer) { return tracer.pixel(camera, inv.x, inv.y, &trees, &gathers); });
+    const Color color = withTracer(inv, scene, camera, [&](auto& tracer) {
+      return tracer.pixel(camera, inv.x, inv.y, &trees, &gathers);
+    });
     printRayTrees(out, inv.x, inv.y, bytes(color, inv.scene.conventions.toByte), trees, decorated, gathers);
     return 0;
   });

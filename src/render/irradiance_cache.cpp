@@ -36,7 +36,8 @@ template <class T> bool inFront(const IrradianceRecord<T>& r, const Vec3<T>& x, 
 }
 
 template <class T> Color extrapolate(const IrradianceRecord<T>& r, const Vec3<T>& x, const Vec3<T>& n) {
-  const Color c = r.value + r.translation * glm::vec3(x - r.point) + r.rotation * glm::vec3(glm::cross(r.normal, n));
+  const Color c =
+      r.value + r.translation * glm::vec3(x - r.point) + r.rotation * glm::vec3(glm::cross(r.normal, n));
   return glm::max(c, Color(0));
 }
 
@@ -73,18 +74,22 @@ IrradianceRecord<T> makeRecord(const Vec3<T>& point, const Vec3<T>& normal, cons
   // in φ): moving the point moves the edges between strata by 1/distance of the nearer hit; each edge trades
   // the radiance difference across it. Divided by π, as the value is the irradiance over π.
   const auto at = [&](int j, int k) { return size_t(j * cols + (k + cols) % cols); };
-  const auto nearer = [&](size_t a, size_t b) { return T(1) / std::max(nearest, std::min(s.distances[a], s.distances[b])); };
+  const auto nearer = [&](size_t a, size_t b) {
+    return T(1) / std::max(nearest, std::min(s.distances[a], s.distances[b]));
+  };
   for (int k = 0; k < cols; ++k) {
-    const double phi = 2 * glm::pi<double>() * (k + 0.5) / cols;      // the column's middle
-    const double edge = 2 * glm::pi<double>() * k / cols;             // its edge with column k − 1
+    const double phi = 2 * glm::pi<double>() * (k + 0.5) / cols;  // the column's middle
+    const double edge = 2 * glm::pi<double>() * k / cols;         // its edge with column k − 1
     const glm::vec3 u = tangent(normal, phi), v = tangent(normal, edge + glm::half_pi<double>());
     for (int j = 1; j < rows; ++j) {  // the cone between rows j − 1 and j, at sin²θ = j/rows
       const double sin2 = double(j) / rows;
-      const float f = float(2 * glm::pi<double>() / cols * std::sqrt(sin2) * (1 - sin2) * nearer(at(j, k), at(j - 1, k)));
+      const float f =
+          float(2 * glm::pi<double>() / cols * std::sqrt(sin2) * (1 - sin2) * nearer(at(j, k), at(j - 1, k)));
       r.translation += glm::outerProduct((s.radiance[at(j, k)] - s.radiance[at(j - 1, k)]) * f, u);
     }
     for (int j = 0; j < rows; ++j) {  // the half-plane between columns k − 1 and k
-      const float f = float((std::sqrt(double(j + 1) / rows) - std::sqrt(double(j) / rows)) * nearer(at(j, k), at(j, k - 1)));
+      const double width = std::sqrt(double(j + 1) / rows) - std::sqrt(double(j) / rows);  // in sin θ
+      const float f = float(width * nearer(at(j, k), at(j, k - 1)));
       r.translation += glm::outerProduct((s.radiance[at(j, k)] - s.radiance[at(j, k - 1)]) * f, v);
     }
   }

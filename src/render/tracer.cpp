@@ -289,7 +289,7 @@ template <class T> Color Tracer<T>::cached(const Hit<T>& hit, const Vec3<T>& n, 
   IrradianceRecord<T> record =
       makeRecord(hit.point, n, GatherSamples<T>{strataFor(count), directions_.data(), batch.colors.data(),
                                                 batch.distances.data()},
-                 cache_->clampRadius(hit.point, T(0)));
+                 cache_->clampRadius(hit.point, T(0)));  // the least radius there
   record.radius = cache_->clampRadius(hit.point, record.radius);
   made_->push_back(record);
   ++counts_.cacheRecords;

@@ -130,7 +130,8 @@ TEST_CASE("A record of constant light has that value, no gradient, and the harmo
                                       glm::dvec3(0, 1, 0)));
     distances.push_back(i % 2 ? 1.0 : 3.0);
   }
-  const Record r = makeRecord<double>({1, 0, 2}, {0, 1, 0}, {strata, directions.data(), radiance.data(), distances.data()});
+  const GatherSamples<double> samples{strata, directions.data(), radiance.data(), distances.data()};
+  const Record r = makeRecord<double>({1, 0, 2}, {0, 1, 0}, samples);
   for (int k = 0; k < 3; ++k) CHECK_THAT(r.value[k], WithinRel(Color(0.3f, 0.6f, 0.9f)[k], 1e-6f));
   CHECK_THAT(r.radius, WithinRel(1.5, 1e-12));  // 2 / (1 + 1/3)
   CHECK(r.translation == glm::mat3(0.0f));
@@ -138,16 +139,15 @@ TEST_CASE("A record of constant light has that value, no gradient, and the harmo
     for (int row = 0; row < 3; ++row) CHECK_THAT(r.rotation[col][row], WithinAbs(0.0, 1e-6));
   }
   std::fill(distances.begin(), distances.end(), std::numeric_limits<double>::infinity());
-  const Record sky =
-      makeRecord<double>({1, 0, 2}, {0, 1, 0}, {strata, directions.data(), radiance.data(), distances.data()});
+  const Record sky = makeRecord<double>({1, 0, 2}, {0, 1, 0}, samples);
   CHECK(sky.radius == std::numeric_limits<double>::infinity());
 }
 
 TEST_CASE("Ward and Heckbert's gradients match those of a sphere hiding part of a white sky", "[gi][cache]") {
   // A floor point p under a black sphere (centre C, radius r, above the horizon) sees 1 − r²·n·(C − p)/|C − p|³
-  // of the cosine-weighted sky (Nusselt: a sphere's share is sin²α times the cosine to its centre). Moving p
-  // by s along x from the foot of the sphere at height H: d/ds = 3Hr²s/(H² + s²)^(5/2). Turning n about axis
-  // a: d/dω = −(r²/|C − p|²)·a·(n × ĉ).
+  // of the cosine-weighted sky (Nusselt: a sphere's share is sin²α times the cosine to its centre). Moving p by
+  // s along x from the foot of the sphere at height H: d/ds = 3Hr²s/(H² + s²)^(5/2). Turning n about axis a:
+  // d/dω = −(r²/|C − p|²)·a·(n × ĉ).
   SceneDesc scene;
   scene.conventions.background = Color(1);
   scene.camera.location = {1.5, 3, 3};
@@ -181,8 +181,8 @@ TEST_CASE("Ward and Heckbert's gradients match those of a sphere hiding part of 
     const double h = 2, x = 1.5, d2 = h * h + x * x;
     CHECK_THAT(value, WithinAbs(1 - h / std::pow(d2, 1.5), 0.002));
     // The estimator moves an edge between strata by the distance of the nearer stratum's hit, which on the
-    // sphere lies between its front, |C − p| − r, and its silhouette, √(|C − p|² − r²), where the edge really
-    // is: so it overshoots by up to their ratio (1.53 here), and never undershoots but for noise.
+    // sphere lies between its front, |C − p| − r, and its silhouette, √(|C − p|² − r²), where the edge
+    // really is: so it overshoots by up to their ratio (1.53 here), and never undershoots but for noise.
     const double slope = 3 * h * x / std::pow(d2, 2.5);
     CHECK(along > 0.97 * slope);
     CHECK(along < std::sqrt(d2 - 1) / (std::sqrt(d2) - 1) * slope);
