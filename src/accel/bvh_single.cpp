@@ -60,6 +60,7 @@ template <class T> struct Slabs {
 
 template <class T>
 void Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>>& best) const {
+  if (nodes_.empty()) return;
   const Slabs<T> slabs(ray);
   ClosestSoFar<T> closest(best);
   // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
@@ -112,6 +113,7 @@ void Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<
 }
 
 template <class T> const Object<T>* Bvh<T>::occluder(const Ray<T>& ray, Interval<T> range) const {
+  if (nodes_.empty()) return nullptr;
   const Slabs<T> slabs(ray);
   std::array<uint32_t, kMaxDepth * kWidth> stack;
   int size = 0;

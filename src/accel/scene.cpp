@@ -108,20 +108,27 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
   }
 }
 
-// One ray is a packet of one.
+// One ray: the packet queries' steps below, straight to the hierarchy's one-ray queries, without the arrays
+// of a packet (docs/performance.md).
 template <class T>
 std::optional<Hit<T>> Scene<T>::closestHit(const Ray<T>& ray, Interval<T> range) const {
   std::optional<Hit<T>> hit;
-  closestHits(&ray, 1, range, &hit);
+  for (const Object<T>* object : scanned_) object->closerHits(&ray, 1, range, &hit);
+  if (hierarchy_) hierarchy_->closestHit(ray, range, hit);
+  if (hit) hit->point = hitPoint(ray, *hit);
   return hit;
 }
 
 template <class T>
 bool Scene<T>::occluded(const Ray<T>& ray, Interval<T> range, const Object<T>** lastOccluder) const {
-  const Object<T>* none = nullptr;
-  bool shadowed;
-  occluded(&ray, &range, 1, &shadowed, lastOccluder ? lastOccluder : &none);
-  return shadowed;
+  if (lastOccluder && *lastOccluder && (*lastOccluder)->occludes(&ray, &range, 1)) return true;
+  const Object<T>* found = nullptr;
+  for (auto object = scanned_.begin(); !found && object != scanned_.end(); ++object) {
+    if ((*object)->occludes(&ray, &range, 1)) found = *object;
+  }
+  if (!found && hierarchy_) found = hierarchy_->occluder(ray, range);
+  if (found && lastOccluder) *lastOccluder = found;
+  return found != nullptr;
 }
 
 template <class T>

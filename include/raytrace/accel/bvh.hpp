@@ -91,12 +91,12 @@ template <class T> class Bvh {
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<const Object<T>*>& objects() const { return objects_; }
 
- private:
-  // The queries for one ray, which packets of one take (bvh_single.cpp): the ray's node test fills one
+  // The queries for one ray, which packets of one take too (bvh_single.cpp): the ray's node test fills one
   // register, without a packet's bookkeeping. occluder() returns an object with a hit strictly inside `range`.
   void closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>>& best) const;
   const Object<T>* occluder(const Ray<T>& ray, Interval<T> range) const;
 
+ private:
   std::vector<Node> nodes_;                  // nodes_[0] is the root; empty when there are no objects
   std::vector<const Object<T>*> objects_;    // in leaf order
   std::vector<Primitive<T>> primitives_;     // objects_ as the traversals test them
