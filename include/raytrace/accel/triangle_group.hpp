@@ -15,7 +15,8 @@
 
 namespace rt {
 
-template <class T> struct TriangleGroup {
+// Aligned to a cache line: a group of floats (192 bytes) then spans three lines, not four.
+template <class T> struct alignas(64) TriangleGroup {
   static constexpr int kSize = 4;
   typedef T Lanes __attribute__((vector_size(kSize * sizeof(T))));
 
