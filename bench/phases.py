@@ -18,7 +18,7 @@ import time
 
 from compare_povray import arguments, prepare, stolen_ms
 
-STEPS = ("load", "build", "trace", "png", "total")
+STEPS = ("load", "build", "trace", "write", "total")
 STOLEN = len(STEPS) + 1  # in what steps() returns, after the whole process
 LINE = re.compile(r"raytrace: " + ", ".join(r"%s ([0-9.]+) ms" % s for s in STEPS))
 

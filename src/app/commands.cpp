@@ -97,7 +97,7 @@ const char* const kImageOptions =
     "                                  .png (8-bit), .hdr (Radiance RGBE) or .exr (OpenEXR, 32-bit float),\n"
     "                                  the last two the linear radiance before clamping. For a .cli scene\n"
     "                                  that writes its own images, the folder to write them into\n"
-    "  --allow-write-anywhere          let a .cli scene's 'write' name an absolute path or go up with '..'\n"
+    "  --allow-write-anywhere          let a .cli scene's 'write' leave its folder (an absolute path, '..', a link)\n"
     "                                  (by default it may only write into the current folder and below)\n"
     "  --tile I/N                      render only the I-th of N bands of rows (0 <= I < N), written to\n"
     "                                  -o NAME.exr as a tile for merge\n"

@@ -1,6 +1,8 @@
 // The commands that write images: raycast (Program 1) and render, whole or one tile of the picture.
 #include <algorithm>
+#include <climits>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -39,6 +41,19 @@ bool staysInFolder(const std::string& path) {
   return true;
 }
 
+// Whether the folder a relative `path` names inside `folder` is, through a symbolic link on the way, somewhere
+// else. A folder that does not exist is not: writing there fails on its own.
+bool linksOut(const std::string& folder, const std::string& path) {
+  const size_t slash = path.rfind('/');
+  char base[PATH_MAX], parent[PATH_MAX];
+  if (slash == std::string::npos || !realpath(folder.c_str(), base) ||
+      !realpath((folder + "/" + path.substr(0, slash)).c_str(), parent)) {
+    return false;
+  }
+  const std::string inside = std::string(base) == "/" ? "/" : std::string(base) + "/";
+  return std::string(parent) != base && std::string(parent).compare(0, inside.size(), inside) != 0;
+}
+
 // One image a command makes: the file it goes to and the .cli `write` that asks for it (none: the whole scene).
 struct Target {
   std::string path;
@@ -47,7 +62,7 @@ struct Target {
 
 // Where the images go: -o or output.png; for a .cli scene with `write`s (when `sceneWrites`), each to its own
 // name, inside the -o folder if there is one, or to the -o file if the scene writes one image. A name the
-// scene gives must stay in the folder (staysInFolder) unless --allow-write-anywhere.
+// scene gives must stay in the folder (staysInFolder, linksOut) unless --allow-write-anywhere.
 std::vector<Target> targets(const Invocation& inv, bool sceneWrites) {
   const std::vector<WriteDesc>& writes = inv.scene.writes;
   const bool folder = !inv.output.empty() && isFolder(inv.output);
@@ -69,6 +84,10 @@ std::vector<Target> targets(const Invocation& inv, bool sceneWrites) {
       if (!inv.writeAnywhere && !staysInFolder(w.path)) {
         throw ParseError(w.loc, "'write' may only name a file in the folder the scene is rendered into and below, "
                                 "found " + quote(w.path) + " (--allow-write-anywhere allows it)");
+      }
+      if (!inv.writeAnywhere && linksOut(folder ? inv.output : ".", w.path)) {
+        throw ParseError(w.loc, "'write' names " + quote(w.path) + ", but a folder on its way is a symbolic link "
+                                "out of the folder the scene is rendered into (--allow-write-anywhere allows it)");
       }
       out.push_back({folder && w.path[0] != '/' ? inv.output + "/" + w.path : w.path, &w});
     }
@@ -179,7 +198,7 @@ int renderImage(const Invocation& inv, std::ostream&) {
       return std::string(text);
     };
     *inv.stats << "raytrace: load " << ms(inv.loadSeconds) << ", build " << ms(times.build) << ", trace "
-               << ms(times.trace) << ", png " << ms(writing) << ", total "
+               << ms(times.trace) << ", write " << ms(writing) << ", total "
                << ms(inv.loadSeconds + times.build + times.trace + writing) << " (" << inv.width << "x" << inv.height
                << ", " << options.samples * options.samples << (options.samples == 1 ? " eye ray" : " eye rays")
                << " per pixel, " << options.threads << (options.threads == 1 ? " thread)\n" : " threads)\n");

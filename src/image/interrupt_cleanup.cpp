@@ -4,7 +4,6 @@
 #include <climits>
 #include <csignal>
 #include <cstring>
-#include <mutex>
 
 #include <unistd.h>
 
@@ -26,11 +25,13 @@ void onInterrupt(int sig) {
   raise(sig);  // held back until this handler returns; then the default action ends the program
 }
 
+// Checked at every registration rather than once, so that a handler someone else put in since (a test
+// harness does) cannot leave a temporary file behind.
 void installHandlers() {
   for (const int sig : kSignals) {
     struct sigaction current {};
     sigaction(sig, nullptr, &current);
-    if (current.sa_handler == SIG_IGN) continue;
+    if (current.sa_handler == SIG_IGN || current.sa_handler == onInterrupt) continue;
     struct sigaction action {};
     action.sa_handler = onInterrupt;
     sigemptyset(&action.sa_mask);
@@ -41,8 +42,7 @@ void installHandlers() {
 }  // namespace
 
 void registerTemporary(const std::string& path) {
-  static std::once_flag installed;
-  std::call_once(installed, installHandlers);
+  installHandlers();
   registered.store(false, std::memory_order_release);
   // A longer path cannot be created (ENAMETOOLONG), so there is nothing to remove.
   std::strncpy(temporary, path.c_str(), PATH_MAX);

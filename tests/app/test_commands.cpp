@@ -164,7 +164,7 @@ TEST_CASE("cli: --stats reports render's steps on the error stream, and only for
   CHECK(r.out.empty());
   // The times vary; the line's shape does not: one line for the file, however many images it writes.
   const std::string ms = "[0-9]+\\.[0-9] ms";
-  CHECK_THAT(r.err, Catch::Matches("raytrace: load " + ms + ", build " + ms + ", trace " + ms + ", png " + ms +
+  CHECK_THAT(r.err, Catch::Matches("raytrace: load " + ms + ", build " + ms + ", trace " + ms + ", write " + ms +
                                    ", total " + ms + " \\(8x6, 4 eye rays per pixel, 1 thread\\)\n"
                                    "raytrace: rays 384 eye, 0 gather, [0-9]+ shadow, 0 secondary; [0-9]+\\.[0-9]{2} M "
                                    "rays/s in trace\n"));

@@ -4,6 +4,9 @@
 
 #include <sstream>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "raytrace/app/commands.hpp"
 #include "raytrace/image/exr_file.hpp"
 #include "raytrace/util/error.hpp"
@@ -112,6 +115,25 @@ TEST_CASE("image commands: -o's folder keeps a .cli scene's writes in it, and a 
   CHECK(rt::runCommand({"render", three, "8", "6", "-o", out}, stdoutText, errors) == 1);
   CHECK(errors.str() == three + ":3:1: error: cannot write '" + out + "/no/second.png': No such file or directory\n");
   CHECK(outDir.names() == std::vector<std::string>{"first.png", "third.png"});
+}
+
+TEST_CASE("image commands: a .cli write through a symbolic link out of -o's folder is refused, one inside is not") {
+  const rt::test::TempDir dir, outDir, elsewhere;
+  const std::string out = outDir.path();
+  REQUIRE(symlink(elsewhere.path().c_str(), outDir.file("away").c_str()) == 0);
+  REQUIRE(mkdir(outDir.file("real").c_str(), 0755) == 0);
+  REQUIRE(symlink("real", outDir.file("near").c_str()) == 0);
+  const std::string away = dir.write("away.cli", "fov 60\nwrite away/x.png\n");
+  CHECK(errorOf({"render", away, "8", "6", "-o", out}) ==
+        away + ":2:1: error: 'write' names 'away/x.png', but a folder on its way is a symbolic link out of the "
+               "folder the scene is rendered into (--allow-write-anywhere allows it)");
+  CHECK(elsewhere.names().empty());
+  CHECK(outputOf({"render", away, "8", "6", "-o", out, "--allow-write-anywhere"}).empty());
+  CHECK(elsewhere.names() == std::vector<std::string>{"x.png"});
+  const std::string near = dir.write("near.cli", "fov 60\nwrite near/y.png\n");
+  CHECK(outputOf({"render", near, "8", "6", "-o", out}).empty());
+  CHECK(outDir.names() == std::vector<std::string>{"away", "near", "real"});
+  CHECK(rt::test::readAll(outDir.file("real/y.png")).substr(1, 3) == "PNG");
 }
 
 TEST_CASE("image commands: tiles of any count and thread count merge into the one-machine bytes, with -ss") {
