@@ -349,12 +349,12 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects, int
 }
 
 template <class T> void Bvh<T>::groupLeaves(const std::vector<std::pair<uint32_t, uint32_t>>& leaves) {
-  firstGroup_.assign(objects_.size(), kNoGroup);
   for (const auto& [first, count] : leaves) {
     const auto triangle = [&](uint32_t o) { return primitives_[o].kind == Primitive<T>::Kind::Triangle; };
     bool all = true;
     for (uint32_t o = first; o < first + count; ++o) all = all && triangle(o);
     if (!all) continue;
+    if (firstGroup_.empty()) firstGroup_.assign(objects_.size(), kNoGroup);
     firstGroup_[first] = uint32_t(groups_.size());
     groups_.resize(groups_.size() + groupsOf(count));
     for (uint32_t k = 0; k < count; ++k) {

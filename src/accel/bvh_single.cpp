@@ -123,7 +123,7 @@ template <class T> const Object<T>* Bvh<T>::occluder(const Ray<T>& ray, Interval
         stack[size++] = node.first[k];
         continue;
       }
-      if (firstGroup_[node.first[k]] != kNoGroup) {
+      if (grouped(node.first[k])) {
         if (const Object<T>* o = occluderInGroups(node.first[k], node.count[k], ray, range)) return o;
         continue;
       }

@@ -106,8 +106,8 @@ template <class T> class Bvh {
   bool closestInLeaf(uint32_t first, uint32_t count, const Ray<T>& ray, T tMin, T& tMax, ClosestSoFar<T>& closest,
                      std::optional<Hit<T>>& best) const {
     const T before = tMax;
-    if (const uint32_t g = firstGroup_[first]; g != kNoGroup) {
-      for (uint32_t j = g; j < g + groupsOf(count); ++j) {
+    if (grouped(first)) {
+      for (uint32_t j = firstGroup_[first]; j < firstGroup_[first] + groupsOf(count); ++j) {
         if (closest.test(groups_[j], objects_.data(), ray, {tMin, tMax})) tMax = nextUp(closest.t());
       }
     } else {
@@ -118,7 +118,7 @@ template <class T> class Bvh {
     return tMax != before;
   }
   // The first object in leaf order of a leaf of triangles only that the ray meets strictly inside `range`;
-  // null when none does. The leaf must have groups (firstGroup_[first] != kNoGroup).
+  // null when none does. The leaf must be grouped().
   const Object<T>* occluderInGroups(uint32_t first, uint32_t count, const Ray<T>& ray, Interval<T> range) const {
     typename TriangleGroup<T>::Lanes t;
     for (uint32_t j = firstGroup_[first]; j < firstGroup_[first] + groupsOf(count); ++j) {
@@ -126,6 +126,8 @@ template <class T> class Bvh {
     }
     return nullptr;
   }
+  // Whether the leaf that starts at objects_[first] is tested in groups.
+  bool grouped(uint32_t first) const { return !groups_.empty() && firstGroup_[first] != kNoGroup; }
   // Makes the groups of the leaves (first, count) that hold triangles only, in the order given.
   void groupLeaves(const std::vector<std::pair<uint32_t, uint32_t>>& leaves);
 
@@ -135,7 +137,8 @@ template <class T> class Bvh {
   std::vector<const Object<T>*> objects_;    // in leaf order
   std::vector<Primitive<T>> primitives_;     // objects_ as the traversals test them
   // A leaf of triangles only, objects_[first, first + count), is tested as the groupsOf(count) groups from
-  // groups_[firstGroup_[first]] on, its triangles in leaf order; any other leaf has kNoGroup there.
+  // groups_[firstGroup_[first]] on, its triangles in leaf order; any other leaf has kNoGroup there (and
+  // firstGroup_ is empty when no leaf has groups).
   std::vector<TriangleGroup<T>> groups_;
   std::vector<uint32_t> firstGroup_;
 };
