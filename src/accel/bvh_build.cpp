@@ -139,7 +139,8 @@ template <class T> class BinaryBuilder {
   }
 
   // The bin boundary with the lowest surface area heuristic cost,
-  // kTraversalCost + (A_left·N_left + A_right·N_right) / A_node, to be weighed against N for a leaf.
+  // kTraversalCost + (A_left·C(N_left) + A_right·C(N_right)) / A_node, to be weighed against C(N) for a leaf,
+  // where C = testCost.
   Cut cheapestCut(uint32_t first, uint32_t count, const Bins& bins, const Bounds& bounds) const {
     Cut best;
     if (!bins.usable) return best;
