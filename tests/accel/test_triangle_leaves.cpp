@@ -27,8 +27,9 @@ void addGrid(rt::SceneDesc& desc, glm::dvec3 corner, glm::dvec3 du, glm::dvec3 d
 }
 
 // Grids at several angles, a soup of random triangles, some repeated exactly (every hit a tie), and grid points
-// to aim at.
-rt::SceneDesc triangleScene(std::mt19937& rng, int soup, std::vector<glm::dvec3>& gridPoints) {
+// to aim at; with `spheres`, that many spheres among them, so that leaves of triangles only (tested in groups)
+// and leaves with spheres meet the same rays.
+rt::SceneDesc triangleScene(std::mt19937& rng, int soup, int spheres, std::vector<glm::dvec3>& gridPoints) {
   std::uniform_real_distribution<double> pos(-10, 10), small(-1, 1), unit(0, 1);
   rt::SceneDesc desc;
   for (int g = 0; g < 3; ++g) {
@@ -44,22 +45,23 @@ rt::SceneDesc triangleScene(std::mt19937& rng, int soup, std::vector<glm::dvec3>
     }
     const glm::dvec3 a(pos(rng), pos(rng), pos(rng));
     add(desc, rt::TriangleDesc{a, a + glm::dvec3(small(rng), small(rng), small(rng)),
-                                         a + glm::dvec3(small(rng), small(rng), small(rng))}, {});
+                               a + glm::dvec3(small(rng), small(rng), small(rng))}, {});
   }
+  for (int i = 0; i < spheres; ++i) add(desc, rt::SphereDesc{{pos(rng), pos(rng), pos(rng)}, 0.2 + unit(rng)}, {});
   return desc;
 }
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("a hierarchy of triangles finds what a scan in file order finds, alone and in packets", "[bvh]",
-                   float, double) {
+TEMPLATE_TEST_CASE("a hierarchy of triangles (and spheres) finds what a scan in file order finds, alone and in packets",
+                   "[bvh]", float, double) {
   using T = TestType;
   constexpr int kPacket = rt::Bvh<T>::kPacket;
   for (unsigned seed = 1; seed <= 8; ++seed) {
     CAPTURE(seed);
     std::mt19937 rng(seed);
     std::vector<glm::dvec3> gridPoints;
-    const rt::SceneDesc desc = triangleScene(rng, int(seed) * 60, gridPoints);
+    const rt::SceneDesc desc = triangleScene(rng, int(seed) * 60, seed % 2 ? 40 : 0, gridPoints);
     const rt::Scene<T> flat(desc, robustArithmetic<T>(), Hierarchy::Never);
     const rt::Scene<T> tree(desc, robustArithmetic<T>(), Hierarchy::Always);
     REQUIRE(tree.hierarchy());
@@ -101,7 +103,7 @@ TEMPLATE_TEST_CASE("a hierarchy of triangles finds what a scan in file order fin
 TEST_CASE("a hierarchy of triangles holds every triangle in exactly one leaf, inside the leaf's box", "[bvh]") {
   std::mt19937 rng(11);
   std::vector<glm::dvec3> gridPoints;
-  const rt::SceneDesc desc = triangleScene(rng, 3000, gridPoints);
+  const rt::SceneDesc desc = triangleScene(rng, 3000, 0, gridPoints);
   const rt::Scene<float> scene(desc, robustArithmetic<float>(), Hierarchy::Always);
   const rt::Bvh<float>& bvh = *scene.hierarchy();
   REQUIRE(bvh.objects().size() == desc.objects.size());
@@ -129,5 +131,5 @@ TEST_CASE("a hierarchy of triangles holds every triangle in exactly one leaf, in
 TEST_CASE("a hierarchy of triangles is the same, node for node, for any number of threads", "[bvh]") {
   std::mt19937 rng(5);
   std::vector<glm::dvec3> gridPoints;
-  checkSameTreeOnAnyThreads(triangleScene(rng, 12000, gridPoints));
+  checkSameTreeOnAnyThreads(triangleScene(rng, 12000, 0, gridPoints));
 }
