@@ -89,9 +89,9 @@ std::string pixelFlags(const RenderOptions& o) {
   add(o.gi.samples != defaults.gi.samples, "-gi_samples=" + counts);
   add(o.gi.bounces.has_value(), "-gi_bounces=" + std::to_string(o.gi.bounces.value_or(0)));
   add(o.gi.seed != defaults.gi.seed, "--seed=" + std::to_string(o.gi.seed));
-  char adaptive[32];
-  std::snprintf(adaptive, sizeof adaptive, "%.9g", double(o.gi.adaptive.value_or(0)));  // the float exactly
-  add(o.gi.adaptive.has_value(), std::string("--gi-adaptive=") + adaptive);
+  char cache[32];
+  std::snprintf(cache, sizeof cache, "%.9g", double(o.gi.cache.value_or(0)));  // the float exactly
+  add(o.gi.cache.has_value(), std::string("--gi-cache=") + cache);
   return flags;
 }
 
@@ -143,14 +143,14 @@ RenderOptions parseFlag(const std::string& flag, RenderOptions o) {
     o.gi.bounces = parseInt(p, "-gi_bounces", 0, kMaxBounces);
     return o;
   }
-  if (const char* p = value("--gi-adaptive")) {
+  if (const char* p = value("--gi-cache")) {
     errno = 0;
     char* end = nullptr;
-    const double e = std::strtod(p, &end);
-    if (*p == '\0' || *end != '\0' || errno == ERANGE || !(e > 0 && e <= 1)) {
-      throw Error(std::string("--gi-adaptive must be a number above 0 and at most 1, found '") + p + "'");
+    const double a = std::strtod(p, &end);
+    if (*p == '\0' || *end != '\0' || errno == ERANGE || !(a > 0 && a <= 1)) {
+      throw Error(std::string("--gi-cache must be a number above 0 and at most 1, found '") + p + "'");
     }
-    o.gi.adaptive = float(e);
+    o.gi.cache = float(a);
     return o;
   }
   if (const char* p = value("--seed")) {

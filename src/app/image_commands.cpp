@@ -208,6 +208,13 @@ int renderImage(const Invocation& inv, std::ostream&) {
                   (unsigned long long)rays.eye, (unsigned long long)rays.gather, (unsigned long long)rays.shadow,
                   (unsigned long long)rays.secondary, times.trace > 0 ? double(rays.total()) / times.trace / 1e6 : 0.0);
     *inv.stats << line;
+    if (options.gi.enabled && options.gi.cache) {
+      std::snprintf(line, sizeof line,
+                    "raytrace: irradiance cache %llu records, %llu lookups, %llu gathered uncached\n",
+                    (unsigned long long)rays.cacheRecords, (unsigned long long)rays.cacheLookups,
+                    (unsigned long long)rays.cacheMisses);
+      *inv.stats << line;
+    }
   }
   return status;
 }

@@ -7,6 +7,7 @@
 #include "raytrace/app/invocation.hpp"
 #include "raytrace/app/report.hpp"
 #include "raytrace/image/image.hpp"
+#include "raytrace/render/irradiance_prepass.hpp"
 #include "raytrace/render/ray_tree.hpp"
 #include "raytrace/render/tracer.hpp"
 #include "raytrace/util/format.hpp"
@@ -14,6 +15,17 @@
 namespace rt {
 
 namespace {
+
+// The tracer of the pixel commands: with --gi-cache it reads the cache the render would make of the whole
+// picture, built here the same way (as long as the render's own passes take), so the pixel is the rendered one.
+template <class T, class F>
+auto withTracer(const Invocation& inv, const Scene<T>& scene, const Camera<T>& camera, F&& f) {
+  Tracer<T> tracer(scene, inv.options);
+  if (!inv.options.gi.enabled || !inv.options.gi.cache) return f(tracer);
+  const IrradianceCache<T> cache = prepareIrradianceCache(scene, camera, inv.options);
+  tracer.useCache(&cache);
+  return f(tracer);
+}
 
 void printPixelRay(std::ostream& out, int x, int y, const glm::dvec3& origin, const glm::dvec3& dir) {
   out << "Pixel: [" << x << ", " << y << "] Ray: " << braces(origin) << " -> " << braces(dir) << "\n";
@@ -31,9 +43,9 @@ std::string bytes(const Color& c, Conventions::ToByte mode) {
 // -gi the colour is the pixel's estimate in the rendered image, the same random numbers included.
 int pixelcolor(const Invocation& inv, std::ostream& out) {
   return withScene(inv, [&](const auto& scene, const auto& camera) {
-    Tracer tracer(scene, inv.options);
     std::vector<RayRecord> trees;
-    const Color color = tracer.pixel(camera, inv.x, inv.y, &trees);
+    const Color color =
+        withTracer(inv, scene, camera, [&](auto& tracer) { return tracer.pixel(camera, inv.x, inv.y, &trees); });
     const RayRecord& eye = trees.front();
     printPixelRay(out, inv.x, inv.y, eye.origin, eye.dir);
     if (!eye.hit) {
@@ -51,10 +63,11 @@ int pixelcolor(const Invocation& inv, std::ostream& out) {
 // With -gi the gather rays are summed up per bounce after the trees (their ambient is the gathered light).
 int rayTrees(const Invocation& inv, std::ostream& out, bool decorated) {
   return withScene(inv, [&](const auto& scene, const auto& camera) {
-    Tracer tracer(scene, inv.options);
     std::vector<RayRecord> trees;
     std::vector<GatherSummary> gathers;
-    const Color color = tracer.pixel(camera, inv.x, inv.y, &trees, &gathers);
+    const Color color = withTracer(inv, scene, camera, [&](auto& tracer) {
+      return tracer.pixel(camera, inv.x, inv.y, &trees, &gathers);
+    });
     printRayTrees(out, inv.x, inv.y, bytes(color, inv.scene.conventions.toByte), trees, decorated, gathers);
     return 0;
   });

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <mutex>
+#include <optional>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include "raytrace/util/parallel.hpp"
 #include "raytrace/util/progress.hpp"
 #include "raytrace/util/stopwatch.hpp"
+#include "raytrace/render/irradiance_prepass.hpp"
 #include "raytrace/render/tracer.hpp"
 
 namespace rt {
@@ -31,7 +33,7 @@ void renderRows(const SceneDesc& desc, int width, int height, const Region& regi
     Stopwatch watch;
     const Scene<T> scene(desc, arithmetic, options.hierarchy, options.threads);
     const Camera<T> camera(desc.camera, width, height);
-    const Tracer<T> tracer(scene, options);
+    Tracer<T> tracer(scene, options);
     const double build = watch.lap();
     // Every pixel is computed on its own from constant state (the tracers' shadow caches change the order of
     // tests, never an answer), so the image is the same for any thread count. One tracer per tile: a tile's
@@ -42,8 +44,16 @@ void renderRows(const SceneDesc& desc, int width, int height, const Region& regi
     // Every pixel's colour depends on its (x, y) alone, so a region's pixels are those of the whole picture.
     const int left = region.x0, bottom = height - region.y1, right = region.x1, top = height - region.y0;
     const int tilesX = (right - left + kTile - 1) / kTile, tilesY = (top - bottom + kTile - 1) / kTile;
-    ProgressMeter progress(monitor.progress, int64_t(region.width()) * region.height(),
+    // --gi-cache: the whole picture's cache first, whatever the region (its passes trace each pixel once more).
+    const bool caching = options.gi.enabled && options.gi.cache;
+    ProgressMeter progress(monitor.progress,
+                           int64_t(region.width()) * region.height() + (caching ? int64_t(width) * height : 0),
                            options.samples * options.samples);
+    std::optional<IrradianceCache<T>> cache;
+    if (caching) {
+      cache = prepareIrradianceCache(scene, camera, options, monitor.rays, &progress);
+      tracer.useCache(&*cache);
+    }
     std::mutex countsMutex;
     parallelFor(tilesX * tilesY, options.threads, [&](int tile) {
       const int x0 = left + tile / tilesY * kTile, y0 = bottom + tile % tilesY * kTile;

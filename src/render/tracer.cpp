@@ -23,11 +23,6 @@ template <class T> Vec3<T> viewerSide(const Hit<T>& hit, const Ray<T>& ray) {
 constexpr uint64_t kReflectionBranch = uint64_t(1) << 40;
 constexpr uint64_t kRefractionBranch = kReflectionBranch + 1;
 
-// --gi-adaptive gathers the first bounce in up to kAdaptiveRounds stratified sets and stops once at least
-// kMinAdaptiveRounds agree well enough (docs/gi.md).
-constexpr int kAdaptiveRounds = 8;
-constexpr int kMinAdaptiveRounds = 3;
-
 float brightest(const Color& c) { return std::max(c.r, std::max(c.g, c.b)); }
 
 // The largest factor a specular term can put on Lc·ks·C: 1 for Blinn-Phong (a clamped cosine to a power
@@ -116,6 +111,7 @@ template <class T> const Color* Tracer<T>::tile(const Camera<T>& camera, int x0,
   eye.rays.resize(count);
   eye.paths.resize(count);
   eye.colors.resize(count);
+  eye.distances.resize(count);
   size_t k = 0;
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x) {
@@ -180,8 +176,9 @@ template <class T> void Tracer<T>::traceBatch(Batch& batch, int count, RayRecord
     for (int i = 0; i < size; ++i) {
       const size_t r = size_t(first + i);
       raysLeft_ = treeRays_ - 1;
-      batch.colors[r] = follow(packet[i], hits[i], kind, batch.paths[r], nullptr, shadows.data() + size_t(i) * lights)
-                            .color;
+      const Traced t = follow(packet[i], hits[i], kind, batch.paths[r], nullptr, shadows.data() + size_t(i) * lights);
+      batch.colors[r] = t.color;
+      batch.distances[r] = t.distance;
     }
   }
   raysLeft_ = outerRaysLeft;
@@ -272,46 +269,50 @@ template <class T> Color Tracer<T>::ambient(const Hit<T>& hit, const Vec3<T>& n,
   if (!options_.gi.enabled) return hit.object->material().ambient;
   // The gathered light takes the place of ka·C (Ca in .cli) as it is: no ka, kd or pigment factor (§c.14; the
   // reference images show it, docs/gi.md).
+  if (cache_ && path.bounce == 0 && options_.gi.bounceCount() > 0) return cached(hit, n, path);
   return gather(hit, n, path);
+}
+
+template <class T> Color Tracer<T>::cached(const Hit<T>& hit, const Vec3<T>& n, const Path& path) {
+  ++counts_.cacheLookups;
+  if (const std::optional<Color> c = cache_->lookup(hit.point, n)) return *c;
+  if (!made_) {
+    ++counts_.cacheMisses;
+    return gather(hit, n, path);
+  }
+  // The same rays and sum as gather(), so a record's value is what the uniform estimator gives at its point.
+  const int count = options_.gi.samplesAt(0);
+  gatherSet(hit, n, path, count);
+  const Batch& batch = batches_[1];
+  directions_.resize(size_t(count));
+  for (int i = 0; i < count; ++i) directions_[size_t(i)] = batch.rays[size_t(i)].dir;
+  IrradianceRecord<T> record =
+      makeRecord(hit.point, n, GatherSamples<T>{strataFor(count), directions_.data(), batch.colors.data(),
+                                                batch.distances.data()},
+                 cache_->clampRadius(hit.point, T(0)));  // the least radius there
+  record.radius = cache_->clampRadius(hit.point, record.radius);
+  made_->push_back(record);
+  ++counts_.cacheRecords;
+  return record.value;
 }
 
 template <class T> Color Tracer<T>::gather(const Hit<T>& hit, const Vec3<T>& n, const Path& path) {
   if (path.bounce >= options_.gi.bounceCount()) return Color(0);  // "use 0 for the last bounce" (§c.14)
   const int count = options_.gi.samplesAt(path.bounce);
-  if (path.bounce == 0 && options_.gi.adaptive) return gatherAdaptive(hit, n, path, count);
-  return gatherSet(hit, n, path, 0, count) / float(count);
+  return gatherSet(hit, n, path, count) / float(count);
 }
 
 template <class T>
-Color Tracer<T>::gatherAdaptive(const Hit<T>& hit, const Vec3<T>& n, const Path& path, int count) {
-  const int size = std::max(1, count / kAdaptiveRounds), rounds = count / size;
-  const float target = *options_.gi.adaptive;
-  Color sum(0), squares(0);
-  int done = 0;
-  while (done < rounds) {
-    const Color mean = gatherSet(hit, n, path, uint64_t(done) * uint64_t(size), size) / float(size);
-    sum += mean;
-    squares += mean * mean;
-    ++done;
-    if (done < kMinAdaptiveRounds) continue;
-    // The rounds are independent estimates: their spread gives the standard error of their mean.
-    const Color m = sum / float(done);
-    const Color variance = glm::max(Color(0), (squares - float(done) * m * m) / float(done - 1));
-    if (brightest(variance) / float(done) <= target * target) break;
-  }
-  return sum / float(done);
-}
-
-template <class T>
-Color Tracer<T>::gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path, uint64_t first, int count) {
+Color Tracer<T>::gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path, int count) {
   const Strata strata = strataFor(count);
   Batch& batch = batches_[size_t(1 + path.bounce)];
   batch.rays.resize(size_t(count));
   batch.paths.resize(size_t(count));
   batch.colors.resize(size_t(count));
+  batch.distances.resize(size_t(count));
   const OffsetPolicy offset = *scene_.arithmetic().offset;
   for (int i = 0; i < count; ++i) {
-    const uint64_t key = childKey(path.key, first + uint64_t(i));
+    const uint64_t key = childKey(path.key, uint64_t(i));
     const Vec3<T> dir = aroundNormal(cosineHemisphere<T>(stratified(strata, i, uniformPair(key))), n);
     batch.rays[size_t(i)] = spawnRay(hit, dir, offset);
     batch.paths[size_t(i)] = Path{path.depth, path.bounce + 1, path.weight, key};

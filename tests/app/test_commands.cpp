@@ -65,10 +65,12 @@ TEST_CASE("cli: the -gi flags and their bad values") {
   CHECK(errorOf({"render", "a.pov", "-gi_bounces=17"}) == "-gi_bounces must be between 0 and 16, found 17");
   CHECK(errorOf({"render", "a.pov", "--seed"}) == "--seed needs a number");
   CHECK(errorOf({"render", "a.pov", "--seed=-1"}) == "--seed must be between 0 and 2147483647, found -1");
-  CHECK(errorOf({"render", "a.pov", "--gi-adaptive=0"}) ==
-        "--gi-adaptive must be a number above 0 and at most 1, found '0'");
-  CHECK(errorOf({"render", "a.pov", "--gi-adaptive=0.1x"}) ==
-        "--gi-adaptive must be a number above 0 and at most 1, found '0.1x'");
+  CHECK(errorOf({"render", "a.pov", "--gi-cache=0"}) ==
+        "--gi-cache must be a number above 0 and at most 1, found '0'");
+  CHECK(errorOf({"render", "a.pov", "--gi-cache=0.1x"}) ==
+        "--gi-cache must be a number above 0 and at most 1, found '0.1x'");
+  CHECK(errorOf({"render", "a.pov", "--gi-cache=1.5"}) ==
+        "--gi-cache must be a number above 0 and at most 1, found '1.5'");
   const rt::RenderOptions o = rt::parseFlag("-gi_bounces=3", rt::parseFlag("-gi_samples=32,8", rt::parseFlag("-gi", {})));
   CHECK(o.gi.enabled);
   CHECK(o.gi.samples == std::vector<int>{32, 8});
@@ -170,6 +172,12 @@ TEST_CASE("cli: --stats reports render's steps on the error stream, and only for
                                    "rays/s in trace\n"));
   CHECK(dir.names() == std::vector<std::string>{"a.png", "b.png", "s.cli"});
   CHECK(run({"render", scene, "8", "6", "--threads", "1", "--allow-write-anywhere"}).err.empty());
+  // --gi-cache adds the cache's line: records made, lookups, and points gathered without a record (none).
+  const Run cached = run({"render", scene, "8", "6", "-gi", "-gi_samples=4,2", "--gi-cache=0.3", "--threads", "1",
+                          "--stats", "--allow-write-anywhere"});
+  CHECK_THAT(cached.err, Catch::Contains(" M rays/s in trace\n"));
+  CHECK_THAT(cached.err, Catch::Matches("(.*\n){2}raytrace: irradiance cache [1-9][0-9]* records, [1-9][0-9]* lookups, "
+                                        "0 gathered uncached\n"));
   CHECK(errorOf({"sceneinfo", scene, "--stats"}) == "--stats is for the render command only");
   CHECK(errorOf({"pixelcolor", scene, "8", "6", "1", "1", "--stats"}) == "--stats is for the render command only");
 }

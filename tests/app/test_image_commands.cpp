@@ -193,10 +193,10 @@ TEST_CASE("image commands: merge refuses tiles that do not make one picture, nam
         "'" + ss + "' is a tile of another render than '" + t0 + "': its raytrace.options is '-ss=2', not ''");
   // -gi's settings are the render's too: another seed or sample list is another picture.
   const std::string gi0 = tile("gi0.exr", "0/2", {"-gi", "-gi_samples=2,1", "--seed", "3"});
-  const std::string gi1 = tile("gi1.exr", "1/2", {"-gi", "-gi_samples=2,1", "--seed", "4", "--gi-adaptive=0.25"});
+  const std::string gi1 = tile("gi1.exr", "1/2", {"-gi", "-gi_samples=2,1", "--seed", "4", "--gi-cache=0.25"});
   CHECK(errorOf({"merge", "-o", out, gi0, gi1}) ==
         "'" + gi1 + "' is a tile of another render than '" + gi0 +
-            "': its raytrace.options is '-gi -gi_samples=2,1 --seed=4 --gi-adaptive=0.25', "
+            "': its raytrace.options is '-gi -gi_samples=2,1 --seed=4 --gi-cache=0.25', "
             "not '-gi -gi_samples=2,1 --seed=3'");
   REQUIRE(outputOf({"render", scene, "32", "25", "--tile", "1/2", "-o", dir.file("tall.exr")}).empty());
   CHECK(errorOf({"merge", "-o", out, t0, dir.file("tall.exr")}) ==
@@ -234,4 +234,37 @@ TEST_CASE("image commands: --version, help <command> and <command> --help") {
   CHECK(outputOf({"help", "merge"}).rfind("usage: raytrace merge -o <image> <tile.exr>... [--threads N]\n", 0) == 0);
   CHECK(errorOf({"help"}) == "help takes one command, as in: raytrace help render");
   CHECK(rt::usage().find("raytrace merge -o <image> <tile.exr>...") != std::string::npos);
+}
+
+TEST_CASE("image commands: with --gi-cache, tiles merge into the one-machine bytes and pixelcolor prints the rendered pixel") {
+  // Each tile and each pixel command builds the whole picture's cache first (docs/gi.md), so all agree.
+  const rt::test::TempDir dir;
+  const std::string scene = dir.write("s.pov", kScene);
+  const std::vector<std::string> gi{"-gi", "-gi_samples=8,2", "--gi-cache=0.3"};
+  const auto with = [&](std::vector<std::string> args) {
+    args.insert(args.end(), gi.begin(), gi.end());
+    return args;
+  };
+  const std::string whole = dir.file("whole.png"), exact = dir.file("whole.exr");
+  REQUIRE(outputOf(with({"render", scene, "40", "30", "-o", whole})).empty());
+  REQUIRE(outputOf(with({"render", scene, "40", "30", "-o", exact})).empty());
+  std::vector<std::string> merge{"merge", "-o", dir.file("merged.png")};
+  for (int i = 2; i >= 0; --i) {
+    const std::string tile = dir.file("t" + std::to_string(i) + ".exr");
+    REQUIRE(outputOf(with({"render", scene, "40", "30", "--threads", std::to_string(1 + i), "--tile",
+                           std::to_string(i) + "/3", "-o", tile}))
+                .empty());
+    merge.push_back(tile);
+  }
+  REQUIRE(outputOf(merge).empty());
+  CHECK(rt::test::readAll(dir.file("merged.png")) == rt::test::readAll(whole));
+  const rt::ExrImage image = rt::readExr(exact);
+  for (const auto& [x, y] : {std::pair{20, 15}, std::pair{5, 3}, std::pair{30, 8}}) {
+    const rt::Color c = image.pixels.at(x, y);
+    const auto byte = [](float v) { return std::to_string(rt::toByte(v, rt::Conventions().toByte)); };
+    const std::string printed = outputOf(with({"pixelcolor", scene, "40", "30", std::to_string(x), std::to_string(y)}));
+    CAPTURE(x, y, printed);
+    REQUIRE(printed.find("No Hit") == std::string::npos);
+    CHECK(printed.find("Color: (" + byte(c.r) + ", " + byte(c.g) + ", " + byte(c.b) + ")") != std::string::npos);
+  }
 }

@@ -2,7 +2,6 @@
 // render, and determinism across threads, tile orders and diagnostics.
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <optional>
 #include <random>
 #include <vector>
@@ -11,57 +10,17 @@
 
 #include "raytrace/render/renderer.hpp"
 #include "raytrace/render/tracer.hpp"
-#include "scene_builder.hpp"
+#include "gi_scenes.hpp"
 
 using namespace rt;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 
 using rt::test::add;
-
-namespace {
-
-Material matte(const Color& ambient, const Color& diffuse) {
-  Material m;
-  m.pigment = Color(1);
-  m.ambient = ambient;
-  m.diffuse = diffuse;
-  return m;
-}
-
-RenderOptions gi(std::vector<int> samples, std::optional<int> bounces = {}, uint64_t seed = 0) {
-  RenderOptions o;
-  o.gi.enabled = true;
-  o.gi.samples = std::move(samples);
-  o.gi.bounces = bounces;
-  o.gi.seed = seed;
-  o.threads = 1;
-  return o;
-}
-
-// A floor, a back wall, two spheres and a light: light reaches most points by one or two bounces.
-SceneDesc smallRoom() {
-  SceneDesc scene;
-  scene.camera.location = {0, 1.5, 6};
-  scene.camera.lookAt = {0, 1, 0};
-  scene.lights.push_back({{2, 5, 3}, Color(1)});
-  add(scene, PlaneDesc{{0, 1, 0}, 0}, matte(Color(0.1f), Color(0.7f, 0.3f, 0.2f)));
-  add(scene, PlaneDesc{{0, 0, 1}, -2}, matte(Color(0.1f), Color(0.2f, 0.6f, 0.3f)));
-  add(scene, SphereDesc{{-0.8, 1, 0}, 1}, matte(Color(0.1f), Color(0.8f)));
-  add(scene, SphereDesc{{1.2, 0.5, 0.8}, 0.5}, matte(Color(0.1f), Color(0.3f, 0.3f, 0.9f)));
-  return scene;
-}
-
-bool sameBits(const Image& a, const Image& b) {
-  for (int y = 0; y < a.height(); ++y) {
-    for (int x = 0; x < a.width(); ++x) {
-      if (std::memcmp(&a.at(x, y), &b.at(x, y), sizeof(Color)) != 0) return false;
-    }
-  }
-  return true;
-}
-
-}  // namespace
+using rt::test::gi;
+using rt::test::matte;
+using rt::test::sameBits;
+using rt::test::smallRoom;
 
 TEST_CASE("GI furnace: inside a sphere lit from its centre each bounce adds the same direct light", "[gi]") {
   // Every point of the inner surface gets the direct light D = Lc·kd·C·(n·l = 1) and gathers only from other
@@ -185,37 +144,6 @@ TEST_CASE("GI images are the same for any thread count and any tile order, and p
     }
     CHECK(sameBits(one, alone));
   });
-}
-
-TEST_CASE("Adaptive gathering stops once its rounds agree, and spends the cap when they do not", "[gi]") {
-  // In the furnace every round returns the same light: three rounds of 64/8 rays, the least it takes.
-  SceneDesc furnace;
-  furnace.camera.right = {1, 0, 0};
-  furnace.lights.push_back({{0, 0, 0}, Color(1)});
-  add(furnace, SphereDesc{{0, 0, 0}, 10}, matte(Color(0.5f), Color(0.3f)));
-  const auto firstBounceRays = [](const SceneDesc& scene, float threshold, int x, int y) {
-    RenderOptions options = gi({64, 4});
-    options.gi.adaptive = threshold;
-    const Arithmetic arithmetic = chooseArithmetic(scene, options.arithmetic);
-    return withPrecision(arithmetic.tier, [&](auto tag) {
-      using T = decltype(tag);
-      const Scene<T> s(scene, arithmetic);
-      Tracer<T> tracer(s, options);
-      std::vector<GatherSummary> gathers;
-      tracer.pixel(Camera<T>(scene.camera, 16, 12), x, y, nullptr, &gathers);
-      return gathers[0].rays;
-    });
-  };
-  CHECK(firstBounceRays(furnace, 1e-6f, 8, 6) == 24);
-  // On the room's floor near the spheres the rounds differ: a tiny threshold takes all 64, a loose one 24.
-  CHECK(firstBounceRays(smallRoom(), 1e-6f, 8, 3) == 64);
-  CHECK(firstBounceRays(smallRoom(), 1.0f, 8, 3) == 24);
-  // And the image stays the same on any number of threads.
-  RenderOptions options = gi({64, 4});
-  options.gi.adaptive = 0.01f;
-  const Image one = render(smallRoom(), 12, 9, options);
-  options.threads = 2;
-  CHECK(sameBits(one, render(smallRoom(), 12, 9, options)));
 }
 
 TEST_CASE("GI diagnostics sum up the gather rays per bounce", "[gi]") {

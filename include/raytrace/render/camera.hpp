@@ -30,6 +30,9 @@ template <class T> class Camera {
   }
 
   int width() const { return width_; }
+  const Vec3<T>& eye() const { return origin_; }
+  // The width of a pixel at unit distance from the eye, at the picture's centre.
+  T pixelSize() const { return glm::length(right_) / T(width_); }
   int height() const { return height_; }
 
  private:

@@ -19,8 +19,8 @@ struct GiOptions {
   std::vector<int> samples{64, 16};  // -gi_samples=N,N…: gather rays per hit at bounce 1, 2, …
   std::optional<int> bounces;        // -gi_bounces=B: levels that gather (default: one per sample count)
   uint64_t seed = 0;                 // --seed N: an independent render of the same scene
-  // --gi-adaptive=E: the first bounce stops gathering once the standard error of its estimate is below E.
-  std::optional<float> adaptive;
+  // --gi-cache=A: the first bounce's gathering comes from an irradiance cache of accuracy A (docs/gi.md).
+  std::optional<float> cache;
 
   int bounceCount() const { return bounces ? *bounces : int(samples.size()); }
   // Gather rays per hit at `bounce` (0 = the eye ray's hit); past the list, its last count.

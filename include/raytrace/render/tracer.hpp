@@ -7,6 +7,7 @@
 
 #include "raytrace/render/camera.hpp"
 #include "raytrace/geometry/math.hpp"
+#include "raytrace/render/irradiance_cache.hpp"
 #include "raytrace/render/ray_counts.hpp"
 #include "raytrace/render/ray_tree.hpp"
 #include "raytrace/render/options.hpp"
@@ -32,6 +33,14 @@ template <class T> class Tracer {
   // eye rays and their shadow rays go through the scene in packets (Scene::closestHits), and so do the gather
   // rays of each hit. They are the tracer's own memory, valid until its next call.
   const Color* tile(const Camera<T>& camera, int x0, int y0, int x1, int y1);
+
+  // With --gi-cache the first bounce's gathered light is looked up in `cache` (docs/gi.md), which must outlive
+  // the tracer; a point no record covers gathers as without it and, if `made` is given, appends its record
+  // there. Null: gather everywhere.
+  void useCache(const IrradianceCache<T>* cache, std::vector<IrradianceRecord<T>>* made = nullptr) {
+    cache_ = cache;
+    made_ = made;
+  }
 
   // The rays traced so far, by kind.
   const RayCounts& counts() const { return counts_; }
@@ -68,6 +77,7 @@ template <class T> class Tracer {
     std::vector<Ray<T>> rays;
     std::vector<Path> paths;
     std::vector<Color> colors;
+    std::vector<T> distances;  // to each ray's hit, +∞ on a miss
     std::vector<std::optional<ShadowRay>> shadows;  // a packet's shadow rays, ray by ray and light by light
   };
 
@@ -90,14 +100,15 @@ template <class T> class Tracer {
   // The term the course calls ambient: the material's constant, or with -gi the indirect light gathered over
   // the hemisphere of n (docs/gi.md).
   Color ambient(const Hit<T>& hit, const Vec3<T>& n, const Path& path);
+  // The first bounce's gathered light with --gi-cache: the cache's, or gathered (and recorded, if records are
+  // being made) where no record covers the point.
+  Color cached(const Hit<T>& hit, const Vec3<T>& n, const Path& path);
   // The mean radiance of options.gi.samplesAt(bounce) stratified cosine-weighted rays from the hit (§c.14);
   // black at the last bounce.
   Color gather(const Hit<T>& hit, const Vec3<T>& n, const Path& path);
-  // --gi-adaptive's first bounce: stratified rounds of count / kAdaptiveRounds rays until the standard error of
-  // their mean is below the threshold, or `count` rays are spent; the mean of the rounds.
-  Color gatherAdaptive(const Hit<T>& hit, const Vec3<T>& n, const Path& path, int count);
-  // The sum of what `count` stratified rays bring back, their random numbers keyed first … first + count − 1.
-  Color gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path, uint64_t first, int count);
+  // The sum of what `count` stratified rays bring back, their random numbers keyed 0 … count − 1 under the
+  // path's key; batches_[1 + path.bounce] keeps the rays, their colours and distances until the next call.
+  Color gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path, int count);
   // Diffuse and specular light from every light the point sees (§c.1, §c.7), before weighting. `n` is the
   // shading normal on the viewer's side, `v` the unit vector to the viewer.
   Local direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
@@ -126,6 +137,9 @@ template <class T> class Tracer {
   std::vector<Batch> batches_;                 // [0] tile()'s eye rays, [1 + b] the gather rays at bounce b
   RayCounts counts_;
   std::vector<GatherSummary>* gathers_ = nullptr;  // pixel()'s per-bounce summary while it is asked for
+  const IrradianceCache<T>* cache_ = nullptr;
+  std::vector<IrradianceRecord<T>>* made_ = nullptr;
+  std::vector<Vec3<T>> directions_;  // a record's gather directions
 };
 
 }  // namespace rt
