@@ -8,6 +8,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "raytrace/accel/triangle_group.hpp"
 #include "raytrace/shapes/object.hpp"
 #include "raytrace/shapes/sphere.hpp"
 #include "raytrace/shapes/triangle.hpp"
@@ -93,6 +94,19 @@ template <class T> class ClosestSoFar {
     if (!p.hitT(ray, range, t) || !(t < t_ || p.id < id_)) return false;
     t_ = t, id_ = p.id, deferred_ = &object, primitive_ = &p;
     return true;
+  }
+  // Tests the triangles of `group` (objects[group.object[k]]) on the ray inside `range`; true when one of them
+  // is the new closest hit. The order (t, then id) makes the answer the one of testing the lanes one by one.
+  bool test(const TriangleGroup<T>& group, const Object<T>* const* objects, const Ray<T>& ray, Interval<T> range) {
+    typename TriangleGroup<T>::Lanes t;
+    bool closer = false;
+    for (uint32_t met = group.hits(ray, range, t); met; met &= met - 1) {
+      const int k = __builtin_ctz(met);
+      if (!(t[k] < t_ || (t[k] == t_ && group.id[k] < id_))) continue;
+      t_ = t[k], id_ = group.id[k], deferred_ = objects[group.object[k]];
+      closer = true;
+    }
+    return closer;
   }
   T t() const { return t_; }
   // The record of a sphere's or triangle's hit: a sphere's made from its t as its intersect() makes it, a
