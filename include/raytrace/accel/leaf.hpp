@@ -92,7 +92,7 @@ template <class T> class ClosestSoFar {
     }
     T t;
     if (!p.hitT(ray, range, t) || !(t < t_ || p.id < id_)) return false;
-    t_ = t, id_ = p.id, deferred_ = &object, primitive_ = &p;
+    t_ = t, id_ = p.id, deferred_ = &object, sphere_ = p.kind == Primitive<T>::Kind::Triangle ? nullptr : &p;
     return true;
   }
   // Tests the triangles of `group` (objects[group.object[k]]) on the ray inside `range`; true when one of them
@@ -103,7 +103,7 @@ template <class T> class ClosestSoFar {
     for (uint32_t met = group.hits(ray, range, t); met; met &= met - 1) {
       const int k = __builtin_ctz(met);
       if (!(t[k] < t_ || (t[k] == t_ && group.id[k] < id_))) continue;
-      t_ = t[k], id_ = group.id[k], deferred_ = objects[group.object[k]];
+      t_ = t[k], id_ = group.id[k], deferred_ = objects[group.object[k]], sphere_ = nullptr;
       closer = true;
     }
     return closer;
@@ -113,10 +113,10 @@ template <class T> class ClosestSoFar {
   // triangle's by its intersect(), which finds the same t again.
   void finish(const Ray<T>& ray, T tMin, std::optional<Hit<T>>& best) const {
     if (!deferred_) return;
-    if (primitive_->kind == Primitive<T>::Kind::Triangle) {
-      best = deferred_->intersect(ray, {tMin, nextUp(t_)});
+    if (sphere_) {
+      best = Sphere<T>::hitAt(sphere_->a, sphere_->ab.x, ray, t_, deferred_);
     } else {
-      best = Sphere<T>::hitAt(primitive_->a, primitive_->ab.x, ray, t_, deferred_);
+      best = deferred_->intersect(ray, {tMin, nextUp(t_)});
     }
   }
 
@@ -124,7 +124,7 @@ template <class T> class ClosestSoFar {
   T t_;
   int id_;
   const Object<T>* deferred_ = nullptr;
-  const Primitive<T>* primitive_ = nullptr;  // deferred_'s, while it is set
+  const Primitive<T>* sphere_ = nullptr;  // deferred_'s leaf entry when it is a sphere; else a triangle's
 };
 
 }  // namespace rt
