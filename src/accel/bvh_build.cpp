@@ -16,6 +16,10 @@ constexpr int kBins = 16;         // Wald 2007: 16 bins lose almost nothing agai
 constexpr uint32_t kMaxLeaf = 4;  // a leaf this small may stay a leaf when no split pays
 // SAH cost of one node visit (two box tests) relative to one object test; measured with raytrace_bench.
 constexpr double kTraversalCost = 1.0;
+// In a tree of triangles only, whose leaves are tested a TriangleGroup at a time: the largest leaf kept when no
+// split pays, and the SAH cost of one group's test relative to a node visit (docs/performance.md).
+constexpr uint32_t kMaxGroupedLeaf = 8;
+constexpr double kGroupCost = 1.0;
 
 template <class T> Vec3<T> centroid(const Aabb<T>& b) { return (b.min + b.max) * T(0.5); }
 
@@ -54,8 +58,11 @@ template <class T> class BinaryBuilder {
     int depth;
   };
 
-  BinaryBuilder(const std::vector<Aabb<T>>& boxes, const std::vector<Vec3<T>>& centroids, std::vector<uint32_t>& order)
-      : boxes_(boxes), centroids_(centroids), order_(order) {}
+  // With `grouped`, the objects are triangles whose leaves are tested in groups: a leaf's cost is that of its
+  // groups, not of its objects one by one.
+  BinaryBuilder(const std::vector<Aabb<T>>& boxes, const std::vector<Vec3<T>>& centroids, std::vector<uint32_t>& order,
+                bool grouped)
+      : boxes_(boxes), centroids_(centroids), order_(order), grouped_(grouped) {}
 
   // Gives the task's node its box and, when a split pays, two children appended to `nodes`, as tasks in `out`.
   // Touches only the node's own range of `order`, so nodes of disjoint ranges may be split at the same time.
@@ -67,7 +74,7 @@ template <class T> class BinaryBuilder {
     if (count == 1 || task.depth >= Bvh<T>::kMaxDepth) return;
     const Bins bins = binsAlongLongestAxis(bounds.centres);
     const Cut cut = cheapestCut(first, count, bins, bounds);
-    if (count <= kMaxLeaf && !(cut.cost < double(count))) return;
+    if (count <= (grouped_ ? kMaxGroupedLeaf : kMaxLeaf) && !(cut.cost < testCost(count))) return;
     const uint32_t middle = partition(first, count, bins, cut);
     const uint32_t left = uint32_t(nodes.size());
     nodes.push_back(BinaryNode<T>{{}, first, middle - first});
@@ -111,6 +118,11 @@ template <class T> class BinaryBuilder {
     double cost = std::numeric_limits<double>::infinity();
   };
 
+  // The SAH cost of testing `count` objects in a leaf.
+  double testCost(uint32_t count) const {
+    return grouped_ ? kGroupCost * double(Bvh<T>::groupsOf(count)) : double(count);
+  }
+
   Bounds boundsOf(uint32_t first, uint32_t count) const {
     Bounds b;
     for (uint32_t i = first; i < first + count; ++i) {
@@ -127,7 +139,8 @@ template <class T> class BinaryBuilder {
   }
 
   // The bin boundary with the lowest surface area heuristic cost,
-  // kTraversalCost + (A_left·N_left + A_right·N_right) / A_node, to be weighed against N for a leaf.
+  // kTraversalCost + (A_left·C(N_left) + A_right·C(N_right)) / A_node, to be weighed against C(N) for a leaf,
+  // where C = testCost.
   Cut cheapestCut(uint32_t first, uint32_t count, const Bins& bins, const Bounds& bounds) const {
     Cut best;
     if (!bins.usable) return best;
@@ -153,7 +166,7 @@ template <class T> class BinaryBuilder {
     for (int j = size - 1; j > 0; --j) {
       right.expand(binBox[full[j]]);
       rightCount += binCount[full[j]];
-      rightCost[j] = area(right) * rightCount;
+      rightCost[j] = area(right) * testCost(rightCount);
     }
     Aabb<T> left;
     uint32_t leftCount = 0;
@@ -161,7 +174,7 @@ template <class T> class BinaryBuilder {
     for (int j = 1; j < size; ++j) {
       left.expand(binBox[full[j - 1]]);
       leftCount += binCount[full[j - 1]];
-      const double cost = kTraversalCost + (area(left) * leftCount + rightCost[j]) / nodeArea;
+      const double cost = kTraversalCost + (area(left) * testCost(leftCount) + rightCost[j]) / nodeArea;
       if (cost < best.cost) best = {full[j - 1] + 1, cost};
     }
     return best;
@@ -178,6 +191,7 @@ template <class T> class BinaryBuilder {
   const std::vector<Aabb<T>>& boxes_;
   const std::vector<Vec3<T>>& centroids_;
   std::vector<uint32_t>& order_;
+  bool grouped_;
 };
 
 // Subtrees built apart on the threads: at least this many, so that the tree is the same for any thread count.
@@ -228,7 +242,7 @@ std::vector<typename BinaryBuilder<T>::Task> splitApart(const BinaryBuilder<T>& 
 // are built on the threads. Every node is split as a one-thread build would split it.
 template <class T>
 std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& objects, std::vector<uint32_t>& order,
-                                       int threads) {
+                                       bool grouped, int threads) {
   const size_t n = objects.size();
   std::vector<Aabb<T>> boxes(n);
   std::vector<Vec3<T>> centroids(n);
@@ -242,7 +256,7 @@ std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& obje
   for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
 
   using Task = typename BinaryBuilder<T>::Task;
-  const BinaryBuilder<T> builder(boxes, centroids, order);
+  const BinaryBuilder<T> builder(boxes, centroids, order, grouped);
   std::vector<BinaryNode<T>> nodes;
   nodes.reserve(2 * n - 1);
   nodes.push_back({{}, 0, uint32_t(n)});
@@ -313,15 +327,42 @@ template <class T> std::vector<typename Bvh<T>::Node> collapse(const std::vector
 
 template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects, int threads) {
   if (objects.empty()) return;
-  std::vector<uint32_t> order;
-  const std::vector<BinaryNode<T>> binary = buildBinary(objects, order, threads);
-  objects_.reserve(objects.size());
-  for (uint32_t i : order) objects_.push_back(objects[i]);
-  primitives_.resize(objects_.size());
-  parallelForChunks(objects_.size(), kObjectChunk, threads, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) primitives_[i] = Primitive<T>::of(*objects_[i]);
+  primitives_.resize(objects.size());
+  parallelForChunks(objects.size(), kObjectChunk, threads, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) primitives_[i] = Primitive<T>::of(*objects[i]);
   });
+  const bool grouped = std::all_of(primitives_.begin(), primitives_.end(),
+                                   [](const Primitive<T>& p) { return p.kind == Primitive<T>::Kind::Triangle; });
+  std::vector<uint32_t> order;
+  const std::vector<BinaryNode<T>> binary = buildBinary(objects, order, grouped, threads);
+  objects_.reserve(objects.size());
+  std::vector<Primitive<T>> unordered = std::move(primitives_);
+  primitives_.clear();
+  primitives_.reserve(objects.size());
+  for (uint32_t i : order) objects_.push_back(objects[i]), primitives_.push_back(unordered[i]);
+  std::vector<std::pair<uint32_t, uint32_t>> leaves;  // first, count
+  for (const BinaryNode<T>& b : binary) {
+    if (b.count) leaves.push_back({b.first, b.count});
+  }
+  std::sort(leaves.begin(), leaves.end());
+  groupLeaves(leaves);
   nodes_ = collapse(binary);
+}
+
+template <class T> void Bvh<T>::groupLeaves(const std::vector<std::pair<uint32_t, uint32_t>>& leaves) {
+  for (const auto& [first, count] : leaves) {
+    const auto triangle = [&](uint32_t o) { return primitives_[o].kind == Primitive<T>::Kind::Triangle; };
+    bool all = true;
+    for (uint32_t o = first; o < first + count; ++o) all = all && triangle(o);
+    if (!all) continue;
+    if (firstGroup_.empty()) firstGroup_.assign(objects_.size(), kNoGroup);
+    firstGroup_[first] = uint32_t(groups_.size());
+    groups_.resize(groups_.size() + groupsOf(count));
+    for (uint32_t k = 0; k < count; ++k) {
+      TriangleGroup<T>& group = groups_[firstGroup_[first] + k / TriangleGroup<T>::kSize];
+      group.set(int(k % TriangleGroup<T>::kSize), static_cast<const Triangle<T>&>(*objects_[first + k]), first + k);
+    }
+  }
 }
 
 template Bvh<float>::Bvh(const std::vector<const Object<float>*>&, int);

@@ -76,9 +76,7 @@ void Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<
   Pending current{range.min, 0, 0};
   for (;;) {
     if (current.count) {
-      for (uint32_t o = current.first; o < current.first + current.count; ++o) {
-        if (closest.test(primitives_[o], *objects_[o], ray, {range.min, tMax}, best)) tMax = nextUp(closest.t());
-      }
+      closestInLeaf(current.first, current.count, ray, range.min, tMax, closest, best);
     } else {
       const Node& node = nodes_[current.first];
       T entry[kWidth];
@@ -125,6 +123,10 @@ template <class T> const Object<T>* Bvh<T>::occluder(const Ray<T>& ray, Interval
       const int k = __builtin_ctz(enters);
       if (!node.count[k]) {
         stack[size++] = node.first[k];
+        continue;
+      }
+      if (grouped(node.first[k])) {
+        if (const Object<T>* o = occluderInGroups(node.first[k], node.count[k], ray, range)) return o;
         continue;
       }
       for (uint32_t o = node.first[k]; o < node.first[k] + node.count[k]; ++o) {

@@ -49,12 +49,11 @@ void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::opti
   Pending current{range.min, 0, 0, (1u << n) - 1};
   for (;;) {
     if (current.count) {
-      for (uint32_t o = current.first; o < current.first + current.count; ++o) {
-        for (uint32_t mask = current.rays; mask; mask &= mask - 1) {
-          const int i = __builtin_ctz(mask);
-          if (closest[i]->test(primitives_[o], *objects_[o], rays[i], {range.min, packet.tMax[i][0]}, best[i])) {
-            std::fill_n(packet.tMax[i], kWidth, nextUp(closest[i]->t()));
-          }
+      for (uint32_t mask = current.rays; mask; mask &= mask - 1) {
+        const int i = __builtin_ctz(mask);
+        T tMax = packet.tMax[i][0];
+        if (closestInLeaf(current.first, current.count, rays[i], range.min, tMax, *closest[i], best[i])) {
+          std::fill_n(packet.tMax[i], kWidth, tMax);
         }
       }
     } else {
@@ -129,6 +128,16 @@ void Bvh<T>::occluders(const Ray<T>* rays, const Interval<T>* ranges, uint32_t a
       if (!childRays[k]) continue;
       if (!node.count[k]) {
         stack[size++] = {node.first[k], childRays[k]};
+        continue;
+      }
+      if (grouped(node.first[k])) {
+        for (uint32_t mask = childRays[k] & active; mask; mask &= mask - 1) {
+          const int i = __builtin_ctz(mask);
+          if (const Object<T>* o = occluderInGroups(node.first[k], node.count[k], rays[i], ranges[i])) {
+            found[i] = o, active &= ~(1u << i);
+          }
+        }
+        if (!active) return;
         continue;
       }
       for (uint32_t o = node.first[k]; o < node.first[k] + node.count[k]; ++o) {

@@ -11,10 +11,15 @@
 #include "raytrace/accel/bvh.hpp"
 #include "raytrace/accel/scene.hpp"
 #include "raytrace/app/hierarchy_report.hpp"
+#include "hierarchy_checks.hpp"
 
 namespace {
 
 using rt::Hierarchy;
+using rt::test::randomUnit;
+using rt::test::requirePacketAsAlone;
+using rt::test::requireSame;
+using rt::test::robustArithmetic;
 
 rt::ObjectDesc sphereDesc(glm::dvec3 center, double radius) {
   rt::ObjectDesc o;
@@ -46,26 +51,6 @@ rt::SceneDesc randomScene(std::mt19937& rng, int count) {
   wall.shape = rt::PlaneDesc{{1, 0, 1}, 11};
   desc.objects.push_back(wall);
   return desc;
-}
-
-template <class T> rt::Vec3<T> randomUnit(std::mt19937& rng) {
-  std::normal_distribution<double> n;
-  return rt::Vec3<T>(glm::normalize(glm::dvec3(n(rng), n(rng), n(rng))));
-}
-
-template <class T> void requireSame(const std::optional<rt::Hit<T>>& a, const std::optional<rt::Hit<T>>& b) {
-  REQUIRE(bool(a) == bool(b));
-  if (!a) return;
-  REQUIRE(a->t == b->t);
-  REQUIRE(a->object->id() == b->object->id());
-  REQUIRE(a->point == b->point);
-  REQUIRE(a->normal == b->normal);
-}
-
-// The robust tier in T: its hits lie inside the objects' padded boxes, so the hierarchy must find exactly what
-// a scan finds.
-template <class T> rt::Arithmetic robustArithmetic() {
-  return {std::is_same_v<T, float> ? rt::Tier::Float : rt::Tier::Double, rt::SphereMethod::Robust};
 }
 
 // What printbvh shows of the hierarchy of `desc` in double.
@@ -159,15 +144,7 @@ TEMPLATE_TEST_CASE("a packet of rays gets the answers each ray gets alone", "[bv
         }
         ranges[i] = {T(0), unit(rng) < 0.5 ? T(std::abs(pos(rng))) : std::numeric_limits<T>::infinity()};
       }
-      std::optional<rt::Hit<T>> hits[kPacket];
-      tree.closestHits(rays, n, {}, hits);
-      bool shadowed[kPacket];
-      tree.occluded(rays, ranges, n, shadowed, &lastOccluder);
-      for (int i = 0; i < n; ++i) {
-        CAPTURE(i);
-        requireSame(hits[i], flat.closestHit(rays[i], {}));
-        REQUIRE(shadowed[i] == flat.occluded(rays[i], ranges[i]));
-      }
+      requirePacketAsAlone(flat, tree, rays, ranges, n, &lastOccluder);
     }
   }
 }
@@ -255,17 +232,7 @@ TEST_CASE("the tree is the same, node for node, for any number of threads", "[bv
   std::mt19937 rng(20000);
   rt::SceneDesc desc = randomScene(rng, 20000);
   for (int i = 0; i < 2000; ++i) desc.objects.push_back(sphereDesc({4, 4, 4}, 0.5));
-  const rt::Arithmetic arithmetic{rt::Tier::Float, rt::SphereMethod::Robust};
-  const auto printed = [&](int threads) {
-    const rt::Scene<float> scene(desc, arithmetic, Hierarchy::Always, threads);
-    std::ostringstream out;
-    rt::printHierarchy(out, *scene.hierarchy());
-    return out.str();
-  };
-  const std::string one = printed(1);
-  CHECK(one.size() > 100000);
-  CHECK(printed(2) == one);
-  CHECK(printed(5) == one);
+  rt::test::checkSameTreeOnAnyThreads(desc);
 }
 
 // Spheres near float's largest value: their boxes are finite, but the sum of two corners, and so their centres,

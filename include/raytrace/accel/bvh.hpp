@@ -6,9 +6,11 @@
 #include <limits>
 #include <optional>
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "raytrace/accel/leaf.hpp"
+#include "raytrace/accel/triangle_group.hpp"
 #include "raytrace/shapes/object.hpp"
 
 namespace rt {
@@ -33,6 +35,8 @@ template <class T> class Bvh {
   static constexpr int kPacket = 16;
   // Deeper subtrees become leaves, so that a traversal stack of kMaxDepth·kWidth entries is enough.
   static constexpr int kMaxDepth = 64;
+  // How many TriangleGroups a leaf of `count` triangles takes.
+  static uint32_t groupsOf(uint32_t count) { return (count + TriangleGroup<T>::kSize - 1) / TriangleGroup<T>::kSize; }
 
   // A node of the flattened 4-wide tree (Wald et al., "Getting Rid of Packets", 2008; Dammertz et al.,
   // "Shallow Bounding Volume Hierarchies", 2008). Child k < size is a leaf holding
@@ -97,9 +101,46 @@ template <class T> class Bvh {
   const Object<T>* occluder(const Ray<T>& ray, Interval<T> range) const;
 
  private:
+  // The leaf objects_[first, first + count) tested for the ray's closest hit inside [tMin, tMax), as a
+  // traversal does: tMax comes down to just above each closer hit found. True when it came down.
+  bool closestInLeaf(uint32_t first, uint32_t count, const Ray<T>& ray, T tMin, T& tMax, ClosestSoFar<T>& closest,
+                     std::optional<Hit<T>>& best) const {
+    const T before = tMax;
+    if (grouped(first)) {
+      for (uint32_t j = firstGroup_[first]; j < firstGroup_[first] + groupsOf(count); ++j) {
+        if (closest.test(groups_[j], objects_.data(), ray, {tMin, tMax})) tMax = nextUp(closest.t());
+      }
+    } else {
+      for (uint32_t o = first; o < first + count; ++o) {
+        if (closest.test(primitives_[o], *objects_[o], ray, {tMin, tMax}, best)) tMax = nextUp(closest.t());
+      }
+    }
+    return tMax != before;
+  }
+  // The first object in leaf order of a leaf of triangles only that the ray meets strictly inside `range`;
+  // null when none does. The leaf must be grouped().
+  const Object<T>* occluderInGroups(uint32_t first, uint32_t count, const Ray<T>& ray, Interval<T> range) const {
+    typename TriangleGroup<T>::Lanes t;
+    for (uint32_t j = firstGroup_[first]; j < firstGroup_[first] + groupsOf(count); ++j) {
+      if (const uint32_t met = groups_[j].hits(ray, range, t)) return objects_[groups_[j].object[__builtin_ctz(met)]];
+    }
+    return nullptr;
+  }
+  // Whether the leaf that starts at objects_[first] is tested in groups.
+  bool grouped(uint32_t first) const { return !groups_.empty() && firstGroup_[first] != kNoGroup; }
+  // Makes the groups of the leaves (first, count) that hold triangles only, in the order given.
+  void groupLeaves(const std::vector<std::pair<uint32_t, uint32_t>>& leaves);
+
+  static constexpr uint32_t kNoGroup = ~uint32_t(0);
+
   std::vector<Node> nodes_;                  // nodes_[0] is the root; empty when there are no objects
   std::vector<const Object<T>*> objects_;    // in leaf order
   std::vector<Primitive<T>> primitives_;     // objects_ as the traversals test them
+  // A leaf of triangles only, objects_[first, first + count), is tested as the groupsOf(count) groups from
+  // groups_[firstGroup_[first]] on, its triangles in leaf order; any other leaf has kNoGroup there (and
+  // firstGroup_ is empty when no leaf has groups).
+  std::vector<TriangleGroup<T>> groups_;
+  std::vector<uint32_t> firstGroup_;
 };
 
 }  // namespace rt

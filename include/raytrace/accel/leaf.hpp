@@ -8,6 +8,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "raytrace/accel/triangle_group.hpp"
 #include "raytrace/shapes/object.hpp"
 #include "raytrace/shapes/sphere.hpp"
 #include "raytrace/shapes/triangle.hpp"
@@ -91,18 +92,31 @@ template <class T> class ClosestSoFar {
     }
     T t;
     if (!p.hitT(ray, range, t) || !(t < t_ || p.id < id_)) return false;
-    t_ = t, id_ = p.id, deferred_ = &object, primitive_ = &p;
+    t_ = t, id_ = p.id, deferred_ = &object, sphere_ = p.kind == Primitive<T>::Kind::Triangle ? nullptr : &p;
     return true;
+  }
+  // Tests the triangles of `group` (objects[group.object[k]]) on the ray inside `range`; true when one of them
+  // is the new closest hit. The order (t, then id) makes the answer the one of testing the lanes one by one.
+  bool test(const TriangleGroup<T>& group, const Object<T>* const* objects, const Ray<T>& ray, Interval<T> range) {
+    typename TriangleGroup<T>::Lanes t;
+    bool closer = false;
+    for (uint32_t met = group.hits(ray, range, t); met; met &= met - 1) {
+      const int k = __builtin_ctz(met);
+      if (!(t[k] < t_ || (t[k] == t_ && group.id[k] < id_))) continue;
+      t_ = t[k], id_ = group.id[k], deferred_ = objects[group.object[k]], sphere_ = nullptr;
+      closer = true;
+    }
+    return closer;
   }
   T t() const { return t_; }
   // The record of a sphere's or triangle's hit: a sphere's made from its t as its intersect() makes it, a
   // triangle's by its intersect(), which finds the same t again.
   void finish(const Ray<T>& ray, T tMin, std::optional<Hit<T>>& best) const {
     if (!deferred_) return;
-    if (primitive_->kind == Primitive<T>::Kind::Triangle) {
-      best = deferred_->intersect(ray, {tMin, nextUp(t_)});
+    if (sphere_) {
+      best = Sphere<T>::hitAt(sphere_->a, sphere_->ab.x, ray, t_, deferred_);
     } else {
-      best = Sphere<T>::hitAt(primitive_->a, primitive_->ab.x, ray, t_, deferred_);
+      best = deferred_->intersect(ray, {tMin, nextUp(t_)});
     }
   }
 
@@ -110,7 +124,7 @@ template <class T> class ClosestSoFar {
   T t_;
   int id_;
   const Object<T>* deferred_ = nullptr;
-  const Primitive<T>* primitive_ = nullptr;  // deferred_'s, while it is set
+  const Primitive<T>* sphere_ = nullptr;  // deferred_'s leaf entry when it is a sphere; else a triangle's
 };
 
 }  // namespace rt

@@ -1,0 +1,86 @@
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <limits>
+#include <random>
+
+#include "raytrace/accel/triangle_group.hpp"
+
+namespace {
+
+const rt::Material kMaterial;
+
+template <class T> rt::Vec3<T> randomPoint(std::mt19937& rng, double extent) {
+  std::uniform_real_distribution<double> pos(-extent, extent);
+  return rt::Vec3<T>(pos(rng), pos(rng), pos(rng));
+}
+
+// A triangle of the sweep: most at random, some lying in the plane z = 1 (so that a ray with dir.z = 0 is
+// exactly parallel, det = 0), some thin slivers; none degenerate.
+template <class T> rt::Triangle<T> randomTriangle(std::mt19937& rng, int id) {
+  for (;;) {
+    rt::Vec3<T> a = randomPoint<T>(rng, 4), b = randomPoint<T>(rng, 4), c = randomPoint<T>(rng, 4);
+    if (id % 4 == 1) a.z = b.z = c.z = T(1);
+    if (id % 4 == 2) c = a + (b - a) * T(0.5) + randomPoint<T>(rng, 1e-3);
+    rt::Triangle<T> t(a, b, c, kMaterial, id);
+    if (!t.degenerate()) return t;
+  }
+}
+
+// A ray toward the triangle: at a vertex, a point of an edge, an inside point or anywhere; some parallel to the
+// plane z = 1.
+template <class T> rt::Ray<T> rayToward(std::mt19937& rng, const rt::Triangle<T>& t, int kind) {
+  std::uniform_real_distribution<double> unit(0, 1);
+  const T s = T(unit(rng)), r = T(unit(rng));
+  const rt::Vec3<T> targets[] = {t.a(), t.a() + t.ab(), t.a() + t.ac(), t.a() + s * t.ab(),
+                                 t.a() + t.ab() + s * (t.ac() - t.ab()), t.a() + s * t.ab() + (1 - s) * r * t.ac(),
+                                 randomPoint<T>(rng, 4)};
+  const rt::Vec3<T> origin = randomPoint<T>(rng, 10);
+  rt::Ray<T> ray{origin, targets[kind % 7] - origin};
+  if (kind % 5 == 4) ray.dir.z = T(0), ray.origin.z = kind % 2 ? T(1) : T(0.5);
+  return ray;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("each lane of a triangle group gives Triangle::solve's answer and bits", "[bvh]", float, double) {
+  using T = TestType;
+  std::mt19937 rng(2024);
+  int hits = 0, boundary = 0;  // lanes hit, and hits on an edge or vertex (u, v or u + v exactly 0 or 1)
+  for (int trial = 0; trial < 20000; ++trial) {
+    CAPTURE(trial);
+    const int used = 1 + trial % rt::TriangleGroup<T>::kSize;
+    std::vector<rt::Triangle<T>> triangles;
+    rt::TriangleGroup<T> group;
+    for (int k = 0; k < used; ++k) {
+      triangles.push_back(randomTriangle<T>(rng, trial + k));
+      group.set(k, triangles.back(), uint32_t(10 + k));
+    }
+    const rt::Ray<T> ray = rayToward<T>(rng, triangles[size_t(trial) % triangles.size()], trial / 4);
+    rt::Interval<T> range{T(0), std::numeric_limits<T>::infinity()};
+    T tAny, u, v;
+    // Some ranges end exactly at the hit's t (excluded) or start there.
+    if (trial % 3 && rt::Triangle<T>::solve(triangles[0].a(), triangles[0].ab(), triangles[0].ac(), ray, range, tAny,
+                                            u, v)) {
+      if (trial % 3 == 1) range.max = tAny;
+      if (trial % 6 == 2) range.min = tAny;
+    }
+    typename rt::TriangleGroup<T>::Lanes t;
+    const uint32_t met = group.hits(ray, range, t);
+    CHECK(met >> used == 0);
+    for (int k = 0; k < used; ++k) {
+      CAPTURE(k);
+      const rt::Triangle<T>& tri = triangles[size_t(k)];
+      T expected;
+      const bool hit = rt::Triangle<T>::solve(tri.a(), tri.ab(), tri.ac(), ray, range, expected, u, v);
+      REQUIRE(bool(met >> k & 1) == hit);
+      if (hit) REQUIRE(std::memcmp(&t[k], &expected, sizeof(T)) == 0);
+      hits += hit;
+      boundary += hit && (u == T(0) || v == T(0) || u + v == T(1));
+      CHECK(group.object[k] == uint32_t(10 + k));
+      CHECK(group.id[k] == tri.id());
+    }
+  }
+  CHECK(hits > 5000);
+  CHECK(boundary > 500);
+}
