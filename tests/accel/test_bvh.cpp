@@ -283,6 +283,9 @@ TEST_CASE("an empty hierarchy answers nothing", "[bvh]") {
   const rt::Object<float>* occluder = nullptr;
   empty.occluders(&ray, &range, 1u, &occluder);
   CHECK(!occluder);
+  empty.closestHit(ray, {}, hit);
+  CHECK(!hit);
+  CHECK(!empty.occluder(ray, range));
   std::ostringstream out;
   rt::printHierarchy(out, empty);
   CHECK(out.str() == "BVH: 0 objects, 0 nodes of up to 4 children, 0 leaves, largest leaf 0\n");
