@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """End-to-end wall time of our renderer against POV-Ray 3.7 on the shared benchmark scenes.
 
-    bench/compare_povray.py [--bin build/raytrace] [--runs 3] [--threads 2] [--size 1280x960]
+    bench/compare_povray.py [--bin build/raytrace] [--runs 3] [--threads 2] [--size 1280x960] [--baseline OLD]
 
 Every scene of ../shared/bench (regenerated into a work directory by its gen.py, so that the large one
 need not be committed) is rendered by `raytrace render` and by `povray`, without anti-aliasing and with 3x3
@@ -9,7 +9,9 @@ supersampling (our -ss=3 against POV-Ray's +A0.0 +AM1 +R3), on the same number o
 interleaved (ours, POV-Ray, ours, ...) so that a change in machine load hits both alike. Wall time is what
 the user waits for: process start to exit, scene loading and PNG writing included. POV-Ray gets the scene
 that tools/povref/povref.py --emit-only writes, and the command line of its README. Prints a Markdown table
-of medians, their ratio POV-Ray / ours, and the median of the ratios of the interleaved pairs.
+of medians, their ratio POV-Ray / ours, and the median of the ratios of the interleaved pairs. With
+--baseline, an earlier raytrace binary runs in the same rounds too, and the table adds its time and the median
+of its runs over ours.
 """
 
 import argparse
@@ -71,16 +73,17 @@ def prepare(args):
     return width, height, os.path.abspath(args.bin), work
 
 
-def paired_ratio(times):
-    """Median of POV-Ray / ours over the runs made one right after the other. The load of a shared machine
+def paired_ratio(times, other):
+    """Median of `other` / ours over the runs made one right after the other. The load of a shared machine
     drifts over a benchmark; a pair sees nearly the same load, so this ratio is steadier than the ratio of the
     two medians."""
-    return statistics.median(p / o for o, p in zip(times["ours"], times["pov"]))
+    return statistics.median(p / o for o, p in zip(times["ours"], times[other]))
 
 
 def main():
     ap = arguments(__doc__, 3, "runs of each command (median reported)")
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--baseline", help="an earlier raytrace to time in the same rounds")
     args = ap.parse_args()
     width, height, binary, work = prepare(args)
 
@@ -96,20 +99,26 @@ def main():
             theirs = ["povray", "+I" + pov37, "+O" + scene + ".povray.png", "+W" + width, "+H" + height,
                       "-D", "-P", "-UA", "+Q9", "+MB", "-J", "File_Gamma=1.0", "+FN8",
                       "+WT%d" % args.threads] + pov_aa
-            times = {"ours": [], "pov": []}
+            times = {"ours": [], "pov": [], "baseline": []}
             for _ in range(args.runs):
                 times["ours"].append(wall(ours, work))
                 times["pov"].append(wall(theirs, work))
+                if args.baseline:
+                    times["baseline"].append(wall([os.path.abspath(args.baseline)] + ours[1:], work))
             ours_s, pov_s = statistics.median(times["ours"]), statistics.median(times["pov"])
             rows.append((scene, name, ours_s, pov_s, times))
             print("%s %s: ours %s, POV-Ray %s" % (scene, name, ["%.2f" % t for t in times["ours"]],
                                                    ["%.2f" % t for t in times["pov"]]), file=sys.stderr)
 
-    print("| scene | AA | ours s | POV-Ray 3.7 s | POV-Ray / ours | per-run ratio |")
-    print("|---|---|---|---|---|---|")
+    extra = " baseline s | baseline / ours, per run |" if args.baseline else ""
+    print("| scene | AA | ours s | POV-Ray 3.7 s | POV-Ray / ours | per-run ratio |" + extra)
+    print("|---|---|---|---|---|---|" + ("---|---|" if args.baseline else ""))
     for scene, name, ours_s, pov_s, times in rows:
-        print("| %s | %s | %.3f | %.3f | %.1f× | %.1f× |" % (scene, name, ours_s, pov_s, pov_s / ours_s,
-                                                           paired_ratio(times)))
+        line = "| %s | %s | %.3f | %.3f | %.1f× | %.1f× |" % (scene, name, ours_s, pov_s, pov_s / ours_s,
+                                                             paired_ratio(times, "pov"))
+        if args.baseline:
+            line += " %.3f | %.2f× |" % (statistics.median(times["baseline"]), paired_ratio(times, "baseline"))
+        print(line)
     print("\n%s×%s, %d threads each, wall time, median of %d interleaved runs; the per-run ratio is the median"
           " of each POV-Ray run over our run just before it." % (width, height, args.threads, args.runs))
 
