@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <random>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -15,12 +14,7 @@
 using namespace rt;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
-
-using rt::test::add;
-using rt::test::gi;
-using rt::test::matte;
-using rt::test::sameBits;
-using rt::test::smallRoom;
+using namespace rt::test;
 
 TEST_CASE("GI furnace: inside a sphere lit from its centre each bounce adds the same direct light", "[gi]") {
   // Every point of the inner surface gets the direct light D = Lc·kd·C·(n·l = 1) and gathers only from other
@@ -65,31 +59,17 @@ TEST_CASE("GI is unbiased: the mean of many low-sample renders agrees with a hig
   // times √(4/256) (it has 64 times the first-bounce samples). A block fails beyond 5 combined standard errors.
   const SceneDesc scene = smallRoom();
   constexpr int kW = 16, kH = 12, kBlock = 4, kRuns = 48;
-  constexpr int kBlocks = (kW / kBlock) * (kH / kBlock);
-  const auto blockMeans = [&](const Image& image) {
-    std::vector<double> means(kBlocks * 3, 0);
-    for (int y = 0; y < kH; ++y) {
-      for (int x = 0; x < kW; ++x) {
-        for (int k = 0; k < 3; ++k) {
-          means[size_t(((y / kBlock) * (kW / kBlock) + x / kBlock) * 3 + k)] += image.at(x, y)[k] / (kBlock * kBlock);
-        }
-      }
-    }
-    return means;
-  };
-  const std::vector<double> high = blockMeans(render(scene, kW, kH, gi({256, 16})));
+  const std::vector<double> high = blockMeans(render(scene, kW, kH, gi({256, 16})), kBlock);
   const auto worstZ = [&](std::optional<int> bounces) {
-    std::vector<double> sum(kBlocks * 3, 0), squares(kBlocks * 3, 0);
+    std::vector<std::vector<double>> runs;
     for (int run = 1; run <= kRuns; ++run) {
-      const std::vector<double> m = blockMeans(render(scene, kW, kH, gi({4, 2}, bounces, uint64_t(run))));
-      for (size_t i = 0; i < m.size(); ++i) sum[i] += m[i], squares[i] += m[i] * m[i];
+      runs.push_back(blockMeans(render(scene, kW, kH, gi({4, 2}, bounces, uint64_t(run))), kBlock));
     }
+    const Spread low = spreadOf(runs);
     double worst = 0;
-    for (size_t i = 0; i < sum.size(); ++i) {
-      const double mean = sum[i] / kRuns;
-      const double variance = std::max(0.0, (squares[i] - kRuns * mean * mean) / (kRuns - 1));
-      const double se = std::sqrt(variance / kRuns + variance * 4 / 256) + 1e-7;
-      worst = std::max(worst, std::abs(mean - high[i]) / se);
+    for (size_t i = 0; i < high.size(); ++i) {
+      const double se = std::sqrt(low.variance[i] / kRuns + low.variance[i] * 4 / 256) + 1e-7;
+      worst = std::max(worst, std::abs(low.mean[i] - high[i]) / se);
     }
     return worst;
   };
@@ -124,25 +104,8 @@ TEST_CASE("GI images are the same for any thread count and any tile order, and p
     const Scene<T> s(scene, arithmetic);
     const Camera<T> camera(scene.camera, kW, kH);
     Tracer<T> tracer(s, options);
-    std::vector<std::pair<int, int>> blocks;
-    for (int y = 0; y < kH; y += 4) {
-      for (int x = 0; x < kW; x += 5) blocks.emplace_back(x, y);
-    }
-    std::shuffle(blocks.begin(), blocks.end(), std::mt19937(12345));
-    Image shuffled(kW, kH);
-    for (const auto& [x0, y0] : blocks) {
-      const int x1 = std::min(kW, x0 + 5), y1 = std::min(kH, y0 + 4);
-      const Color* colors = tracer.tile(camera, x0, y0, x1, y1);
-      for (int y = y0; y < y1; ++y) {
-        for (int x = x0; x < x1; ++x) shuffled.at(x, y) = *colors++;
-      }
-    }
-    CHECK(sameBits(one, shuffled));
-    Image alone(kW, kH);
-    for (int y = 0; y < kH; ++y) {
-      for (int x = 0; x < kW; ++x) alone.at(x, y) = tracer.pixel(camera, x, y);
-    }
-    CHECK(sameBits(one, alone));
+    CHECK(sameBits(one, shuffledTiles(tracer, camera)));
+    CHECK(sameBits(one, pixelByPixel(tracer, camera)));
   });
 }
 

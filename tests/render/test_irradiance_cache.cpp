@@ -17,12 +17,7 @@
 using namespace rt;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
-
-using rt::test::add;
-using rt::test::gi;
-using rt::test::matte;
-using rt::test::sameBits;
-using rt::test::smallRoom;
+using namespace rt::test;
 
 namespace {
 
@@ -249,25 +244,8 @@ TEST_CASE("A cached image is the same for any threads, tiles and order, and the 
     const IrradianceCache<T> cache = prepareIrradianceCache(s, camera, options);
     Tracer<T> tracer(s, options);
     tracer.useCache(&cache);
-    std::vector<std::pair<int, int>> blocks;
-    for (int y = 0; y < kH; y += 4) {
-      for (int x = 0; x < kW; x += 5) blocks.emplace_back(x, y);
-    }
-    std::shuffle(blocks.begin(), blocks.end(), std::mt19937(12345));
-    Image shuffled(kW, kH);
-    for (const auto& [x0, y0] : blocks) {
-      const int x1 = std::min(kW, x0 + 5), y1 = std::min(kH, y0 + 4);
-      const Color* colors = tracer.tile(camera, x0, y0, x1, y1);
-      for (int y = y0; y < y1; ++y) {
-        for (int x = x0; x < x1; ++x) shuffled.at(x, y) = *colors++;
-      }
-    }
-    CHECK(sameBits(one, shuffled));
-    Image alone(kW, kH);
-    for (int y = 0; y < kH; ++y) {
-      for (int x = 0; x < kW; ++x) alone.at(x, y) = tracer.pixel(camera, x, y);
-    }
-    CHECK(sameBits(one, alone));
+    CHECK(sameBits(one, shuffledTiles(tracer, camera)));
+    CHECK(sameBits(one, pixelByPixel(tracer, camera)));
     CHECK(tracer.counts().cacheMisses == 0);
   });
 }
@@ -278,33 +256,19 @@ TEST_CASE("The cache's bias against the uniform estimator stays within a bound",
   // remains beyond 4 combined standard errors is the cache's bias: interpolation between records.
   const SceneDesc scene = smallRoom();
   constexpr int kW = 32, kH = 24, kBlock = 4, kRuns = 12;
-  constexpr int kBlocks = (kW / kBlock) * (kH / kBlock);
-  const auto blockMeans = [&](const Image& image) {
-    std::vector<double> means(kBlocks * 3, 0);
-    for (int y = 0; y < kH; ++y) {
-      for (int x = 0; x < kW; ++x) {
-        for (int k = 0; k < 3; ++k) {
-          means[size_t(((y / kBlock) * (kW / kBlock) + x / kBlock) * 3 + k)] += image.at(x, y)[k] / (kBlock * kBlock);
-        }
-      }
-    }
-    return means;
-  };
-  const std::vector<double> uniform = blockMeans(render(scene, kW, kH, gi({256, 16})));
+  const std::vector<double> uniform = blockMeans(render(scene, kW, kH, gi({256, 16})), kBlock);
   // The largest difference beyond 4 standard errors (the uniform render's taken as that of one cached render
   // over 4: it has 16 times the samples where they count), over blocks and channels.
   const auto worstBias = [&](float accuracy) {
-    std::vector<double> sum(kBlocks * 3, 0), squares(kBlocks * 3, 0);
+    std::vector<std::vector<double>> runs;
     for (int run = 1; run <= kRuns; ++run) {
-      const std::vector<double> m = blockMeans(render(scene, kW, kH, cached({64, 16}, accuracy, uint64_t(run))));
-      for (size_t i = 0; i < m.size(); ++i) sum[i] += m[i], squares[i] += m[i] * m[i];
+      runs.push_back(blockMeans(render(scene, kW, kH, cached({64, 16}, accuracy, uint64_t(run))), kBlock));
     }
+    const Spread spread = spreadOf(runs);
     double worst = 0;
-    for (size_t i = 0; i < sum.size(); ++i) {
-      const double mean = sum[i] / kRuns;
-      const double variance = std::max(0.0, (squares[i] - kRuns * mean * mean) / (kRuns - 1));
-      const double se = std::sqrt(variance / kRuns + variance / 16);
-      worst = std::max(worst, std::abs(mean - uniform[i]) - 4 * se);
+    for (size_t i = 0; i < uniform.size(); ++i) {
+      const double se = std::sqrt(spread.variance[i] / kRuns + spread.variance[i] / 16);
+      worst = std::max(worst, std::abs(spread.mean[i] - uniform[i]) - 4 * se);
     }
     return worst;
   };
