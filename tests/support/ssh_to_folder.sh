@@ -16,4 +16,5 @@ shift
 home=${SSH_TO_FOLDER_ROOT:?the folder that holds the hosts}/$host
 mkdir -p "$home"
 cd "$home"
-HOME=$home exec bash -c "$*"
+# sshd gives the command a login environment: HOME and SHELL (GNU parallel runs jobs with $SHELL).
+HOME=$home SHELL=/bin/bash exec bash -c "$*"
