@@ -45,7 +45,6 @@ BENCHMARK_TEMPLATE(BM_RaySphere, double, rt::SphereMethod::Robust);
 template <class T> void BM_RayBox4(benchmark::State& state) {
   using Bvh = rt::Bvh<T>;
   typename Bvh::Node node;
-  node.size = 4;
   for (int k = 0; k < 4; ++k) {
     for (int a = 0; a < 3; ++a) node.lo[a][k] = T(-1 + 0.1 * k), node.hi[a][k] = T(1 - 0.1 * k);
   }

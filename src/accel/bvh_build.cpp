@@ -16,10 +16,12 @@ constexpr int kBins = 16;         // Wald 2007: 16 bins lose almost nothing agai
 constexpr uint32_t kMaxLeaf = 4;  // a leaf this small may stay a leaf when no split pays
 // SAH cost of one node visit (two box tests) relative to one object test; measured with raytrace_bench.
 constexpr double kTraversalCost = 1.0;
-// In a tree of triangles only, whose leaves are tested a TriangleGroup at a time: the largest leaf kept when no
-// split pays, and the SAH cost of one group's test relative to a node visit (docs/performance.md).
+// In a tree of triangles only or of spheres only, whose leaves are tested a TriangleGroup or SphereGroup at a
+// time: the largest leaf kept when no split pays, and the SAH cost of one group's test relative to a node visit
+// (docs/performance.md, "Against Embree": a sphere group's square root and divisions cost more).
 constexpr uint32_t kMaxGroupedLeaf = 8;
-constexpr double kGroupCost = 1.0;
+constexpr double kTriangleGroupCost = 1.0;
+constexpr double kSphereGroupCost = 3.0;
 
 template <class T> Vec3<T> centroid(const Aabb<T>& b) { return (b.min + b.max) * T(0.5); }
 
@@ -58,11 +60,11 @@ template <class T> class BinaryBuilder {
     int depth;
   };
 
-  // With `grouped`, the objects are triangles whose leaves are tested in groups: a leaf's cost is that of its
-  // groups, not of its objects one by one.
+  // With a `groupCost` above 0, the objects are triangles or spheres whose leaves are tested in groups of four,
+  // each costing that: a leaf's cost is that of its groups, not of its objects one by one.
   BinaryBuilder(const std::vector<Aabb<T>>& boxes, const std::vector<Vec3<T>>& centroids, std::vector<uint32_t>& order,
-                bool grouped)
-      : boxes_(boxes), centroids_(centroids), order_(order), grouped_(grouped) {}
+                double groupCost)
+      : boxes_(boxes), centroids_(centroids), order_(order), groupCost_(groupCost) {}
 
   // Gives the task's node its box and, when a split pays, two children appended to `nodes`, as tasks in `out`.
   // Touches only the node's own range of `order`, so nodes of disjoint ranges may be split at the same time.
@@ -74,7 +76,7 @@ template <class T> class BinaryBuilder {
     if (count == 1 || task.depth >= Bvh<T>::kMaxDepth) return;
     const Bins bins = binsAlongLongestAxis(bounds.centres);
     const Cut cut = cheapestCut(first, count, bins, bounds);
-    if (count <= (grouped_ ? kMaxGroupedLeaf : kMaxLeaf) && !(cut.cost < testCost(count))) return;
+    if (count <= (groupCost_ > 0 ? kMaxGroupedLeaf : kMaxLeaf) && !(cut.cost < testCost(count))) return;
     const uint32_t middle = partition(first, count, bins, cut);
     const uint32_t left = uint32_t(nodes.size());
     nodes.push_back(BinaryNode<T>{{}, first, middle - first});
@@ -120,7 +122,7 @@ template <class T> class BinaryBuilder {
 
   // The SAH cost of testing `count` objects in a leaf.
   double testCost(uint32_t count) const {
-    return grouped_ ? kGroupCost * double(Bvh<T>::groupsOf(count)) : double(count);
+    return groupCost_ > 0 ? groupCost_ * double(Bvh<T>::groupsOf(count)) : double(count);
   }
 
   Bounds boundsOf(uint32_t first, uint32_t count) const {
@@ -191,7 +193,7 @@ template <class T> class BinaryBuilder {
   const std::vector<Aabb<T>>& boxes_;
   const std::vector<Vec3<T>>& centroids_;
   std::vector<uint32_t>& order_;
-  bool grouped_;
+  double groupCost_;
 };
 
 // Subtrees built apart on the threads: at least this many, so that the tree is the same for any thread count.
@@ -242,7 +244,7 @@ std::vector<typename BinaryBuilder<T>::Task> splitApart(const BinaryBuilder<T>& 
 // are built on the threads. Every node is split as a one-thread build would split it.
 template <class T>
 std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& objects, std::vector<uint32_t>& order,
-                                       bool grouped, int threads) {
+                                       double groupCost, int threads) {
   const size_t n = objects.size();
   std::vector<Aabb<T>> boxes(n);
   std::vector<Vec3<T>> centroids(n);
@@ -256,7 +258,7 @@ std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& obje
   for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
 
   using Task = typename BinaryBuilder<T>::Task;
-  const BinaryBuilder<T> builder(boxes, centroids, order, grouped);
+  const BinaryBuilder<T> builder(boxes, centroids, order, groupCost);
   std::vector<BinaryNode<T>> nodes;
   nodes.reserve(2 * n - 1);
   nodes.push_back({{}, 0, uint32_t(n)});
@@ -305,9 +307,8 @@ template <class T> std::vector<typename Bvh<T>::Node> collapse(const std::vector
       children[widest] = split;
       children[size++] = split + 1;
     }
-    Node node{};
-    node.size = size;
-    for (int k = 0; k < node.size; ++k) {
+    Node node;
+    for (int k = 0; k < size; ++k) {
       const BinaryNode<T>& b = binary[children[k]];
       for (int a = 0; a < 3; ++a) node.lo[a][k] = b.box.min[a], node.hi[a][k] = b.box.max[a];
       node.count[k] = b.count;
@@ -331,10 +332,16 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects, int
   parallelForChunks(objects.size(), kObjectChunk, threads, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) primitives_[i] = Primitive<T>::of(*objects[i]);
   });
-  const bool grouped = std::all_of(primitives_.begin(), primitives_.end(),
-                                   [](const Primitive<T>& p) { return p.kind == Primitive<T>::Kind::Triangle; });
+  // A tree of one kind of primitive only (triangles, or spheres of one formula) is built for its groups.
+  using Kind = typename Primitive<T>::Kind;
+  const Kind kind = primitives_.front().kind;
+  const bool oneKind = std::all_of(primitives_.begin(), primitives_.end(),
+                                   [&](const Primitive<T>& p) { return p.kind == kind; });
+  const double groupCost = !oneKind || kind == Kind::Other ? 0.0
+                           : kind == Kind::Triangle        ? kTriangleGroupCost
+                                                           : kSphereGroupCost;
   std::vector<uint32_t> order;
-  const std::vector<BinaryNode<T>> binary = buildBinary(objects, order, grouped, threads);
+  const std::vector<BinaryNode<T>> binary = buildBinary(objects, order, groupCost, threads);
   objects_.reserve(objects.size());
   std::vector<Primitive<T>> unordered = std::move(primitives_);
   primitives_.clear();
@@ -350,17 +357,30 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects, int
 }
 
 template <class T> void Bvh<T>::groupLeaves(const std::vector<std::pair<uint32_t, uint32_t>>& leaves) {
-  for (const auto& [first, count] : leaves) {
-    const auto triangle = [&](uint32_t o) { return primitives_[o].kind == Primitive<T>::Kind::Triangle; };
-    bool all = true;
-    for (uint32_t o = first; o < first + count; ++o) all = all && triangle(o);
-    if (!all) continue;
-    if (firstGroup_.empty()) firstGroup_.assign(objects_.size(), kNoGroup);
-    firstGroup_[first] = uint32_t(groups_.size());
-    groups_.resize(groups_.size() + groupsOf(count));
+  using Kind = typename Primitive<T>::Kind;
+  // Lane k of group g holds the leaf's object k, g = k / kSize, whatever the kind of group.
+  const auto fill = [&](auto& groups, uint32_t first, uint32_t count, auto shape) {
+    const uint32_t start = uint32_t(groups.size());
+    groups.resize(groups.size() + groupsOf(count));
     for (uint32_t k = 0; k < count; ++k) {
-      TriangleGroup<T>& group = groups_[firstGroup_[first] + k / TriangleGroup<T>::kSize];
-      group.set(int(k % TriangleGroup<T>::kSize), static_cast<const Triangle<T>&>(*objects_[first + k]), first + k);
+      groups[start + k / TriangleGroup<T>::kSize].set(int(k % TriangleGroup<T>::kSize), shape(*objects_[first + k]),
+                                                      first + k);
+    }
+    return start;
+  };
+  for (const auto& [first, count] : leaves) {
+    const Kind kind = primitives_[first].kind;
+    bool same = kind != Kind::Other;
+    for (uint32_t o = first; o < first + count; ++o) same = same && primitives_[o].kind == kind;
+    if (!same) continue;
+    if (firstGroup_.empty()) firstGroup_.assign(objects_.size(), kNoGroup);
+    if (kind == Kind::Triangle) {
+      firstGroup_[first] = fill(triangleGroups_, first, count,
+                                [](const Object<T>& o) -> const Triangle<T>& { return static_cast<const Triangle<T>&>(o); });
+    } else {
+      firstGroup_[first] = kSphereGroups | fill(sphereGroups_, first, count, [](const Object<T>& o) -> const Sphere<T>& {
+                             return static_cast<const Sphere<T>&>(o);
+                           });
     }
   }
 }

@@ -46,13 +46,12 @@ template <class T> struct Slabs {
     }
     const auto enters = (enter <= leave * kFarScale<T>) & (enter < inf);
     std::memcpy(entry, &enter, sizeof enter);
-    const uint32_t used = (1u << node.size) - 1;
 #if defined(__SSE__)
-    if constexpr (sizeof(T) == 4) return uint32_t(_mm_movemask_ps(reinterpret_cast<const __m128&>(enters))) & used;
+    if constexpr (sizeof(T) == 4) return uint32_t(_mm_movemask_ps(reinterpret_cast<const __m128&>(enters)));
 #endif
     uint32_t bits = 0;
     for (int k = 0; k < W; ++k) bits |= uint32_t(enters[k] & 1) << k;
-    return bits & used;
+    return bits;
   }
 };
 
@@ -125,7 +124,7 @@ template <class T> const Object<T>* Bvh<T>::occluder(const Ray<T>& ray, Interval
         stack[size++] = node.first[k];
         continue;
       }
-      if (grouped(node.first[k])) {
+      if (groupOf(node.first[k]) != kNoGroup) {
         if (const Object<T>* o = occluderInGroups(node.first[k], node.count[k], ray, range)) return o;
         continue;
       }

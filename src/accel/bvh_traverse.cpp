@@ -63,7 +63,7 @@ void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::opti
       entries(node, packet, range.min, current.rays, childRays, childEntry);
       const int base = size;
       int nearest = -1;
-      for (int k = 0; k < node.size; ++k) {
+      for (int k = 0; k < kWidth; ++k) {
         if (!childRays[k]) continue;
         int later = k;
         if (nearest < 0 || childEntry[k] < childEntry[nearest]) std::swap(later, nearest);
@@ -124,13 +124,13 @@ void Bvh<T>::occluders(const Ray<T>* rays, const Interval<T>* ranges, uint32_t a
     uint32_t childRays[kWidth];
     T childEntry[kWidth];
     entries(node, packet, tMin, live, childRays, childEntry);
-    for (int k = 0; k < node.size; ++k) {
+    for (int k = 0; k < kWidth; ++k) {
       if (!childRays[k]) continue;
       if (!node.count[k]) {
         stack[size++] = {node.first[k], childRays[k]};
         continue;
       }
-      if (grouped(node.first[k])) {
+      if (groupOf(node.first[k]) != kNoGroup) {
         for (uint32_t mask = childRays[k] & active; mask; mask &= mask - 1) {
           const int i = __builtin_ctz(mask);
           if (const Object<T>* o = occluderInGroups(node.first[k], node.count[k], rays[i], ranges[i])) {

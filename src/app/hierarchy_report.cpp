@@ -13,7 +13,7 @@ template <class T> void printHierarchy(std::ostream& out, const Bvh<T>& bvh) {
   const std::vector<Node>& nodes = bvh.nodes();
   size_t leaves = 0, largest = 0;
   for (const Node& n : nodes) {
-    for (int k = 0; k < n.size; ++k) {
+    for (int k = 0; k < n.size(); ++k) {
       if (n.count[k]) ++leaves, largest = std::max<size_t>(largest, n.count[k]);
     }
   }
@@ -34,13 +34,13 @@ template <class T> void printHierarchy(std::ostream& out, const Bvh<T>& bvh) {
     stack.pop_back();
     const Node& n = nodes[item.node];
     Aabb<T> box;
-    for (int k = 0; k < n.size; ++k) box.expand(n.box(k));
+    for (int k = 0; k < n.size(); ++k) box.expand(n.box(k));
     line(item.depth, ("Node " + std::to_string(item.node) + ": ").c_str(), box);
     out << "\n";
-    for (int k = n.size - 1; k >= 0; --k) {
+    for (int k = n.size() - 1; k >= 0; --k) {
       if (!n.count[k]) stack.push_back({n.first[k], item.depth + 1});
     }
-    for (int k = 0; k < n.size; ++k) {
+    for (int k = 0; k < n.size(); ++k) {
       if (!n.count[k]) continue;
       line(item.depth + 1, "Leaf: ", n.box(k));
       out << " objects";

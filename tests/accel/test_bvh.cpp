@@ -54,6 +54,14 @@ rt::SceneDesc randomScene(std::mt19937& rng, int count) {
 }
 
 // What printbvh shows of the hierarchy of `desc` in double.
+// The box of the unit sphere at `center`: an object the hierarchy tests through its own intersect(), so that a
+// tree of them is built one object to a test (a tree of spheres only is built for SphereGroups).
+rt::ObjectDesc cubeDesc(glm::dvec3 center) {
+  rt::ObjectDesc o;
+  o.shape = rt::BoxDesc{center - 1.0, center + 1.0};
+  return o;
+}
+
 std::string printedTree(const rt::SceneDesc& desc) {
   const rt::Scene<double> scene(desc, robustArithmetic<double>(), Hierarchy::Always);
   std::ostringstream out;
@@ -158,9 +166,9 @@ TEMPLATE_TEST_CASE("every SIMD kernel of the node test gives the baseline's bits
   std::uniform_real_distribution<double> pos(-4, 4), unit(0, 1);
   for (int trial = 0; trial < 2000; ++trial) {
     CAPTURE(trial);
-    typename Bvh::Node node{};
-    node.size = 1 + trial % Bvh::kWidth;
-    for (int k = 0; k < node.size; ++k) {
+    typename Bvh::Node node;
+    const int used = 1 + trial % Bvh::kWidth;  // the others keep the unused child's box, which no ray enters
+    for (int k = 0; k < used; ++k) {
       for (int a = 0; a < 3; ++a) {
         const double x = pos(rng), y = pos(rng);
         node.lo[a][k] = T(std::min(x, y)), node.hi[a][k] = T(std::max(x, y));
@@ -180,10 +188,11 @@ TEMPLATE_TEST_CASE("every SIMD kernel of the node test gives the baseline's bits
     kernels.back()(node, packet, T(0), rays, expectedRays, expectedEntry);
     for (const auto kernel : kernels) {
       kernel(node, packet, T(0), rays, childRays, childEntry);
-      for (int k = 0; k < node.size; ++k) {
+      for (int k = 0; k < Bvh::kWidth; ++k) {
         CAPTURE(k);
         REQUIRE(childRays[k] == expectedRays[k]);
         REQUIRE(std::memcmp(&childEntry[k], &expectedEntry[k], sizeof(T)) == 0);
+        if (k >= used) REQUIRE(childRays[k] == 0);
       }
     }
   }
@@ -215,13 +224,13 @@ TEST_CASE("the tree holds every bounded object once, inside nested boxes", "[bvh
     return glm::all(glm::lessThanEqual(outer.min, inner.min)) && glm::all(glm::lessThanEqual(inner.max, outer.max));
   };
   for (const auto& node : bvh.nodes()) {
-    for (int k = 0; k < node.size; ++k) {
+    for (int k = 0; k < node.size(); ++k) {
       for (uint32_t i = node.first[k]; i < node.first[k] + node.count[k]; ++i) {
         CHECK(contains(node.box(k), *bvh.objects()[i]->bounds()));
       }
       if (node.count[k]) continue;
       const auto& child = bvh.nodes()[node.first[k]];
-      for (int c = 0; c < child.size; ++c) CHECK(contains(node.box(k), child.box(c)));
+      for (int c = 0; c < child.size(); ++c) CHECK(contains(node.box(k), child.box(c)));
     }
   }
 }
@@ -262,15 +271,19 @@ TEST_CASE("a hierarchy is built only where it pays", "[bvh]") {
 }
 
 TEST_CASE("coincident objects still split into small leaves", "[bvh]") {
-  rt::SceneDesc desc;
-  for (int i = 0; i < 1000; ++i) desc.objects.push_back(sphereDesc({1, 2, 3}, 1));
-  const rt::Scene<float> scene(desc, {rt::Tier::Float, rt::SphereMethod::Robust}, Hierarchy::Always);
-  for (const auto& node : scene.hierarchy()->nodes()) {
-    for (int k = 0; k < node.size; ++k) CHECK(node.count[k] <= 4);
+  // Leaves of up to 4 objects tested one by one, or of up to 8 spheres (two SphereGroups) in a tree of spheres.
+  for (const bool grouped : {false, true}) {
+    CAPTURE(grouped);
+    rt::SceneDesc desc;
+    for (int i = 0; i < 1000; ++i) desc.objects.push_back(grouped ? sphereDesc({1, 2, 3}, 1) : cubeDesc({1, 2, 3}));
+    const rt::Scene<float> scene(desc, {rt::Tier::Float, rt::SphereMethod::Robust}, Hierarchy::Always);
+    for (const auto& node : scene.hierarchy()->nodes()) {
+      for (int k = 0; k < node.size(); ++k) CHECK(node.count[k] <= (grouped ? 8u : 4u));
+    }
+    const auto hit = scene.closestHit({{1, 2, 10}, {0, 0, -1}}, {});
+    REQUIRE(hit);
+    CHECK(hit->object->id() == 1);
   }
-  const auto hit = scene.closestHit({{1, 2, 10}, {0, 0, -1}}, {});
-  REQUIRE(hit);
-  CHECK(hit->object->id() == 1);
 }
 
 TEST_CASE("an empty hierarchy answers nothing", "[bvh]") {
@@ -293,8 +306,8 @@ TEST_CASE("an empty hierarchy answers nothing", "[bvh]") {
 
 TEST_CASE("printbvh shows each node's box and the object ids in the leaves", "[bvh]") {
   rt::SceneDesc desc;
-  desc.objects.push_back(sphereDesc({0, 0, 0}, 1));
-  desc.objects.push_back(sphereDesc({10, 0, 0}, 1));
+  desc.objects.push_back(cubeDesc({0, 0, 0}));
+  desc.objects.push_back(cubeDesc({10, 0, 0}));
   CHECK(printedTree(desc) ==
         "BVH: 2 objects, 1 nodes of up to 4 children, 2 leaves, largest leaf 1\n"
         "Node 0: {-1.0020 -1.0020 -1.0020} - {11.0020 1.0020 1.0020}\n"
@@ -307,7 +320,7 @@ TEST_CASE("printbvh shows each node's box and the object ids in the leaves", "[b
 // comes from): each gap is split where the surface area heuristic is lowest, and no cluster is cut.
 TEST_CASE("splits fall in the gaps between clusters, as a sweep over every bin boundary puts them", "[bvh]") {
   rt::SceneDesc desc;
-  for (const double x : {0, 3, 4, 10, 30, 31, 33, 60, 61}) desc.objects.push_back(sphereDesc({x, 0, 0}, 1));
+  for (const double x : {0, 3, 4, 10, 30, 31, 33, 60, 61}) desc.objects.push_back(cubeDesc({x, 0, 0}));
   CHECK(printedTree(desc) ==
         "BVH: 9 objects, 3 nodes of up to 4 children, 6 leaves, largest leaf 2\n"
         "Node 0: {-1.0020 -1.0020 -1.0020} - {62.0020 1.0020 1.0020}\n"

@@ -113,7 +113,7 @@ TEST_CASE("a hierarchy of triangles holds every triangle in exactly one leaf, in
   };
   uint32_t largest = 0;
   for (const auto& node : bvh.nodes()) {
-    for (int k = 0; k < node.size; ++k) {
+    for (int k = 0; k < node.size(); ++k) {
       largest = std::max(largest, node.count[k]);
       for (uint32_t i = node.first[k]; i < node.first[k] + node.count[k]; ++i) {
         ++leavesOf[bvh.objects()[i]->id()];

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "raytrace/accel/leaf.hpp"
+#include "raytrace/accel/sphere_group.hpp"
 #include "raytrace/accel/triangle_group.hpp"
 #include "raytrace/shapes/object.hpp"
 
@@ -35,17 +36,29 @@ template <class T> class Bvh {
   static constexpr int kPacket = 16;
   // Deeper subtrees become leaves, so that a traversal stack of kMaxDepth·kWidth entries is enough.
   static constexpr int kMaxDepth = 64;
-  // How many TriangleGroups a leaf of `count` triangles takes.
+  // How many groups (TriangleGroup, SphereGroup: four lanes each) a leaf of `count` objects takes.
   static uint32_t groupsOf(uint32_t count) { return (count + TriangleGroup<T>::kSize - 1) / TriangleGroup<T>::kSize; }
 
   // A node of the flattened 4-wide tree (Wald et al., "Getting Rid of Packets", 2008; Dammertz et al.,
-  // "Shallow Bounding Volume Hierarchies", 2008). Child k < size is a leaf holding
-  // objects_[first[k], first[k] + count[k]) when count[k] > 0, else the node nodes_[first[k]].
-  struct Node {
+  // "Shallow Bounding Volume Hierarchies", 2008). Child k < size() is a leaf holding
+  // objects_[first[k], first[k] + count[k]) when count[k] > 0, else the node nodes_[first[k]] (never the root,
+  // 0). An unused child has first = count = 0 and a box at +∞ on every axis, which no ray enters: the slab test
+  // puts the entry at +∞ or the exit at −∞. So the node tests need no count of children, and a node of floats
+  // is 128 bytes, two cache lines (Embree's 4-wide nodes are the same size).
+  struct alignas(64) Node {
     T lo[3][kWidth], hi[3][kWidth];  // [axis][child]
-    uint32_t first[kWidth], count[kWidth];
-    int size = 0;  // children in use
+    uint32_t first[kWidth]{}, count[kWidth]{};
 
+    Node() {
+      std::fill_n(&lo[0][0], 3 * kWidth, std::numeric_limits<T>::infinity());
+      std::fill_n(&hi[0][0], 3 * kWidth, std::numeric_limits<T>::infinity());
+    }
+    // The children in use, which come first.
+    int size() const {
+      int n = 0;
+      while (n < kWidth && (first[n] || count[n])) ++n;
+      return n;
+    }
     Aabb<T> box(int k) const {
       return {{lo[0][k], lo[1][k], lo[2][k]}, {hi[0][k], hi[1][k], hi[2][k]}};
     }
@@ -103,43 +116,65 @@ template <class T> class Bvh {
  private:
   // The leaf objects_[first, first + count) tested for the ray's closest hit inside [tMin, tMax), as a
   // traversal does: tMax comes down to just above each closer hit found. True when it came down.
-  bool closestInLeaf(uint32_t first, uint32_t count, const Ray<T>& ray, T tMin, T& tMax, ClosestSoFar<T>& closest,
-                     std::optional<Hit<T>>& best) const {
+  [[gnu::always_inline]] bool closestInLeaf(uint32_t first, uint32_t count, const Ray<T>& ray, T tMin, T& tMax, ClosestSoFar<T>& closest,
+                                             std::optional<Hit<T>>& best) const {
     const T before = tMax;
-    if (grouped(first)) {
-      for (uint32_t j = firstGroup_[first]; j < firstGroup_[first] + groupsOf(count); ++j) {
-        if (closest.test(groups_[j], objects_.data(), ray, {tMin, tMax})) tMax = nextUp(closest.t());
-      }
-    } else {
+    const uint32_t group = groupOf(first);
+    if (group == kNoGroup) {
       for (uint32_t o = first; o < first + count; ++o) {
         if (closest.test(primitives_[o], *objects_[o], ray, {tMin, tMax}, best)) tMax = nextUp(closest.t());
+      }
+    } else if (group & kSphereGroups) {
+      const uint32_t j0 = group & ~kSphereGroups;
+      for (uint32_t j = j0; j < j0 + groupsOf(count); ++j) {
+        if (closest.test(sphereGroups_[j], objects_.data(), primitives_.data(), ray, {tMin, tMax})) {
+          tMax = nextUp(closest.t());
+        }
+      }
+    } else {
+      for (uint32_t j = group; j < group + groupsOf(count); ++j) {
+        if (closest.test(triangleGroups_[j], objects_.data(), ray, {tMin, tMax})) tMax = nextUp(closest.t());
       }
     }
     return tMax != before;
   }
-  // The first object in leaf order of a leaf of triangles only that the ray meets strictly inside `range`;
-  // null when none does. The leaf must be grouped().
+  // The first object in leaf order of a grouped leaf (groupOf(first) != kNoGroup) that the ray meets strictly
+  // inside `range`; null when none does.
   const Object<T>* occluderInGroups(uint32_t first, uint32_t count, const Ray<T>& ray, Interval<T> range) const {
+    const uint32_t group = groupOf(first);
+    if (group & kSphereGroups) {
+      const uint32_t j0 = group & ~kSphereGroups;
+      for (uint32_t j = j0; j < j0 + groupsOf(count); ++j) {
+        const SphereGroup<T>& g = sphereGroups_[j];
+        if (const uint32_t met = g.meets(ray, range)) return objects_[g.object[__builtin_ctz(met)]];
+      }
+      return nullptr;
+    }
     typename TriangleGroup<T>::Lanes t;
-    for (uint32_t j = firstGroup_[first]; j < firstGroup_[first] + groupsOf(count); ++j) {
-      if (const uint32_t met = groups_[j].hits(ray, range, t)) return objects_[groups_[j].object[__builtin_ctz(met)]];
+    for (uint32_t j = group; j < group + groupsOf(count); ++j) {
+      const TriangleGroup<T>& g = triangleGroups_[j];
+      if (const uint32_t met = g.hits(ray, range, t)) return objects_[g.object[__builtin_ctz(met)]];
     }
     return nullptr;
   }
-  // Whether the leaf that starts at objects_[first] is tested in groups.
-  bool grouped(uint32_t first) const { return !groups_.empty() && firstGroup_[first] != kNoGroup; }
-  // Makes the groups of the leaves (first, count) that hold triangles only, in the order given.
+  // Where the groups of the leaf that starts at objects_[first] begin (see firstGroup_), or kNoGroup.
+  uint32_t groupOf(uint32_t first) const { return firstGroup_.empty() ? kNoGroup : firstGroup_[first]; }
+  // Makes the groups of the leaves (first, count) that hold triangles only or spheres of one formula only, in
+  // the order given.
   void groupLeaves(const std::vector<std::pair<uint32_t, uint32_t>>& leaves);
 
   static constexpr uint32_t kNoGroup = ~uint32_t(0);
+  static constexpr uint32_t kSphereGroups = uint32_t(1) << 31;
 
   std::vector<Node> nodes_;                  // nodes_[0] is the root; empty when there are no objects
   std::vector<const Object<T>*> objects_;    // in leaf order
   std::vector<Primitive<T>> primitives_;     // objects_ as the traversals test them
   // A leaf of triangles only, objects_[first, first + count), is tested as the groupsOf(count) groups from
-  // groups_[firstGroup_[first]] on, its triangles in leaf order; any other leaf has kNoGroup there (and
-  // firstGroup_ is empty when no leaf has groups).
-  std::vector<TriangleGroup<T>> groups_;
+  // triangleGroups_[firstGroup_[first]] on, its triangles in leaf order; a leaf of spheres of one formula only
+  // the same way from sphereGroups_[firstGroup_[first] & ~kSphereGroups] on, kSphereGroups being set; any
+  // other leaf has kNoGroup there (and firstGroup_ is empty when no leaf has groups).
+  std::vector<TriangleGroup<T>> triangleGroups_;
+  std::vector<SphereGroup<T>> sphereGroups_;
   std::vector<uint32_t> firstGroup_;
 };
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "raytrace/accel/sphere_group.hpp"
 #include "raytrace/accel/triangle_group.hpp"
 #include "raytrace/shapes/object.hpp"
 #include "raytrace/shapes/sphere.hpp"
@@ -104,6 +105,19 @@ template <class T> class ClosestSoFar {
       const int k = __builtin_ctz(met);
       if (!(t[k] < t_ || (t[k] == t_ && group.id[k] < id_))) continue;
       t_ = t[k], id_ = group.id[k], deferred_ = objects[group.object[k]], sphere_ = nullptr;
+      closer = true;
+    }
+    return closer;
+  }
+  // The same for the spheres of `group`, whose entries in the hierarchy's primitives are primitives[group.object[k]].
+  bool test(const SphereGroup<T>& group, const Object<T>* const* objects, const Primitive<T>* primitives,
+            const Ray<T>& ray, Interval<T> range) {
+    typename SphereGroup<T>::Lanes t;
+    bool closer = false;
+    for (uint32_t met = group.hits(ray, range, t); met; met &= met - 1) {
+      const int k = __builtin_ctz(met);
+      if (!(t[k] < t_ || (t[k] == t_ && group.id[k] < id_))) continue;
+      t_ = t[k], id_ = group.id[k], deferred_ = objects[group.object[k]], sphere_ = &primitives[group.object[k]];
       closer = true;
     }
     return closer;
