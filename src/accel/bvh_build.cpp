@@ -347,16 +347,11 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects, int
   primitives_.clear();
   primitives_.reserve(objects.size());
   for (uint32_t i : order) objects_.push_back(objects[i]), primitives_.push_back(unordered[i]);
-  std::vector<std::pair<uint32_t, uint32_t>> leaves;  // first, count
-  for (const BinaryNode<T>& b : binary) {
-    if (b.count) leaves.push_back({b.first, b.count});
-  }
-  std::sort(leaves.begin(), leaves.end());
-  groupLeaves(leaves);
   nodes_ = collapse(binary);
+  groupLeaves();
 }
 
-template <class T> void Bvh<T>::groupLeaves(const std::vector<std::pair<uint32_t, uint32_t>>& leaves) {
+template <class T> void Bvh<T>::groupLeaves() {
   using Kind = typename Primitive<T>::Kind;
   // Lane k of group g holds the leaf's object k, g = k / kSize, whatever the kind of group.
   const auto fill = [&](auto& groups, uint32_t first, uint32_t count, auto shape) {
@@ -368,19 +363,23 @@ template <class T> void Bvh<T>::groupLeaves(const std::vector<std::pair<uint32_t
     }
     return start;
   };
-  for (const auto& [first, count] : leaves) {
-    const Kind kind = primitives_[first].kind;
-    bool same = kind != Kind::Other;
-    for (uint32_t o = first; o < first + count; ++o) same = same && primitives_[o].kind == kind;
-    if (!same) continue;
-    if (firstGroup_.empty()) firstGroup_.assign(objects_.size(), kNoGroup);
-    if (kind == Kind::Triangle) {
-      firstGroup_[first] = fill(triangleGroups_, first, count,
-                                [](const Object<T>& o) -> const Triangle<T>& { return static_cast<const Triangle<T>&>(o); });
-    } else {
-      firstGroup_[first] = kSphereGroups | fill(sphereGroups_, first, count, [](const Object<T>& o) -> const Sphere<T>& {
-                             return static_cast<const Sphere<T>&>(o);
-                           });
+  for (Node& node : nodes_) {
+    for (int k = 0; k < kWidth; ++k) {
+      const uint32_t first = node.first[k], count = node.count[k];
+      if (!count) continue;
+      const Kind kind = primitives_[first].kind;
+      bool same = kind != Kind::Other;
+      for (uint32_t o = first; o < first + count; ++o) same = same && primitives_[o].kind == kind;
+      if (!same) continue;
+      if (kind == Kind::Triangle) {
+        node.first[k] = fill(triangleGroups_, first, count,
+                             [](const Object<T>& o) -> const Triangle<T>& { return static_cast<const Triangle<T>&>(o); });
+        node.count[k] |= kTriangleLeaf;
+      } else {
+        node.first[k] = fill(sphereGroups_, first, count,
+                             [](const Object<T>& o) -> const Sphere<T>& { return static_cast<const Sphere<T>&>(o); });
+        node.count[k] |= kSphereLeaf;
+      }
     }
   }
 }

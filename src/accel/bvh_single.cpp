@@ -124,7 +124,7 @@ template <class T> const Object<T>* Bvh<T>::occluder(const Ray<T>& ray, Interval
         stack[size++] = node.first[k];
         continue;
       }
-      if (groupOf(node.first[k]) != kNoGroup) {
+      if (node.count[k] & (kTriangleLeaf | kSphereLeaf)) {
         if (const Object<T>* o = occluderInGroups(node.first[k], node.count[k], ray, range)) return o;
         continue;
       }

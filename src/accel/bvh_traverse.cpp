@@ -130,7 +130,7 @@ void Bvh<T>::occluders(const Ray<T>* rays, const Interval<T>* ranges, uint32_t a
         stack[size++] = {node.first[k], childRays[k]};
         continue;
       }
-      if (groupOf(node.first[k]) != kNoGroup) {
+      if (node.count[k] & (kTriangleLeaf | kSphereLeaf)) {
         for (uint32_t mask = childRays[k] & active; mask; mask &= mask - 1) {
           const int i = __builtin_ctz(mask);
           if (const Object<T>* o = occluderInGroups(node.first[k], node.count[k], rays[i], ranges[i])) {

@@ -14,7 +14,7 @@ template <class T> void printHierarchy(std::ostream& out, const Bvh<T>& bvh) {
   size_t leaves = 0, largest = 0;
   for (const Node& n : nodes) {
     for (int k = 0; k < n.size(); ++k) {
-      if (n.count[k]) ++leaves, largest = std::max<size_t>(largest, n.count[k]);
+      if (n.count[k]) ++leaves, largest = std::max<size_t>(largest, bvh.leafObjects(n, k).second);
     }
   }
   out << "BVH: " << bvh.objects().size() << " objects, " << nodes.size() << " nodes of up to " << Bvh<T>::kWidth
@@ -44,7 +44,8 @@ template <class T> void printHierarchy(std::ostream& out, const Bvh<T>& bvh) {
       if (!n.count[k]) continue;
       line(item.depth + 1, "Leaf: ", n.box(k));
       out << " objects";
-      for (uint32_t i = n.first[k]; i < n.first[k] + n.count[k]; ++i) out << " " << bvh.objects()[i]->id();
+      const auto [first, count] = bvh.leafObjects(n, k);
+      for (uint32_t i = first; i < first + count; ++i) out << " " << bvh.objects()[i]->id();
       out << "\n";
     }
   }

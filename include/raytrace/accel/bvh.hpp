@@ -38,13 +38,18 @@ template <class T> class Bvh {
   static constexpr int kMaxDepth = 64;
   // How many groups (TriangleGroup, SphereGroup: four lanes each) a leaf of `count` objects takes.
   static uint32_t groupsOf(uint32_t count) { return (count + TriangleGroup<T>::kSize - 1) / TriangleGroup<T>::kSize; }
+  // A leaf's count in a Node: how many objects, and whether they are tested in groups, of which kind.
+  static constexpr uint32_t kTriangleLeaf = uint32_t(1) << 31, kSphereLeaf = uint32_t(1) << 30;
+  static constexpr uint32_t kLeafCount = kSphereLeaf - 1;
 
   // A node of the flattened 4-wide tree (Wald et al., "Getting Rid of Packets", 2008; Dammertz et al.,
-  // "Shallow Bounding Volume Hierarchies", 2008). Child k < size() is a leaf holding
-  // objects_[first[k], first[k] + count[k]) when count[k] > 0, else the node nodes_[first[k]] (never the root,
-  // 0). An unused child has first = count = 0 and a box at +∞ on every axis, which no ray enters: the slab test
-  // puts the entry at +∞ or the exit at −∞. So the node tests need no count of children, and a node of floats
-  // is 128 bytes, two cache lines (Embree's 4-wide nodes are the same size).
+  // "Shallow Bounding Volume Hierarchies", 2008). Child k < size() is the node nodes_[first[k]] (never the root,
+  // 0) when count[k] = 0, else a leaf of count[k] & kLeafCount objects: objects_[first[k], ...) tested one by
+  // one, or, with kTriangleLeaf or kSphereLeaf set in count[k], the groups triangleGroups_[first[k], ...) or
+  // sphereGroups_[first[k], ...) (leafObjects() tells which objects). An unused child has first = count = 0
+  // and a box at +∞ on every axis, which no ray enters: the slab test puts the entry at +∞ or the exit at −∞.
+  // So the node tests need no count of children, and a node of floats is 128 bytes, two cache lines (Embree's
+  // 4-wide nodes are the same size).
   struct alignas(64) Node {
     T lo[3][kWidth], hi[3][kWidth];  // [axis][child]
     uint32_t first[kWidth]{}, count[kWidth]{};
@@ -107,6 +112,14 @@ template <class T> class Bvh {
   // The tree, for those who walk it: nodes()[0] is the root (none when there are no objects).
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<const Object<T>*>& objects() const { return objects_; }
+  // The objects of the leaf that is child k of `node` (count[k] > 0): objects()[first, first + count), as
+  // (first, count).
+  std::pair<uint32_t, uint32_t> leafObjects(const Node& node, int k) const {
+    const uint32_t count = node.count[k] & kLeafCount, first = node.first[k];
+    if (node.count[k] & kTriangleLeaf) return {triangleGroups_[first].object[0], count};
+    if (node.count[k] & kSphereLeaf) return {sphereGroups_[first].object[0], count};
+    return {first, count};
+  }
 
   // The queries for one ray, which packets of one take too (bvh_single.cpp): the ray's node test fills one
   // register, without a packet's bookkeeping. occluder() returns an object with a hit strictly inside `range`.
@@ -114,68 +127,55 @@ template <class T> class Bvh {
   const Object<T>* occluder(const Ray<T>& ray, Interval<T> range) const;
 
  private:
-  // The leaf objects_[first, first + count) tested for the ray's closest hit inside [tMin, tMax), as a
+  // The leaf (first, count) of a node's child tested for the ray's closest hit inside [tMin, tMax), as a
   // traversal does: tMax comes down to just above each closer hit found. True when it came down.
-  [[gnu::always_inline]] bool closestInLeaf(uint32_t first, uint32_t count, const Ray<T>& ray, T tMin, T& tMax, ClosestSoFar<T>& closest,
-                                             std::optional<Hit<T>>& best) const {
+  [[gnu::always_inline]] bool closestInLeaf(uint32_t first, uint32_t count, const Ray<T>& ray, T tMin, T& tMax,
+                                             ClosestSoFar<T>& closest, std::optional<Hit<T>>& best) const {
     const T before = tMax;
-    const uint32_t group = groupOf(first);
-    if (group == kNoGroup) {
-      for (uint32_t o = first; o < first + count; ++o) {
-        if (closest.test(primitives_[o], *objects_[o], ray, {tMin, tMax}, best)) tMax = nextUp(closest.t());
-      }
-    } else if (group & kSphereGroups) {
-      const uint32_t j0 = group & ~kSphereGroups;
-      for (uint32_t j = j0; j < j0 + groupsOf(count); ++j) {
+    const uint32_t end = first + groupsOf(count & kLeafCount);
+    if (count & kSphereLeaf) {
+      for (uint32_t j = first; j < end; ++j) {
         if (closest.test(sphereGroups_[j], objects_.data(), primitives_.data(), ray, {tMin, tMax})) {
           tMax = nextUp(closest.t());
         }
       }
-    } else {
-      for (uint32_t j = group; j < group + groupsOf(count); ++j) {
+    } else if (count & kTriangleLeaf) {
+      for (uint32_t j = first; j < end; ++j) {
         if (closest.test(triangleGroups_[j], objects_.data(), ray, {tMin, tMax})) tMax = nextUp(closest.t());
+      }
+    } else {
+      for (uint32_t o = first; o < first + count; ++o) {
+        if (closest.test(primitives_[o], *objects_[o], ray, {tMin, tMax}, best)) tMax = nextUp(closest.t());
       }
     }
     return tMax != before;
   }
-  // The first object in leaf order of a grouped leaf (groupOf(first) != kNoGroup) that the ray meets strictly
-  // inside `range`; null when none does.
+  // The first object in leaf order of a grouped leaf (first, count) that the ray meets strictly inside
+  // `range`; null when none does.
   const Object<T>* occluderInGroups(uint32_t first, uint32_t count, const Ray<T>& ray, Interval<T> range) const {
-    const uint32_t group = groupOf(first);
-    if (group & kSphereGroups) {
-      const uint32_t j0 = group & ~kSphereGroups;
-      for (uint32_t j = j0; j < j0 + groupsOf(count); ++j) {
+    const uint32_t end = first + groupsOf(count & kLeafCount);
+    if (count & kSphereLeaf) {
+      for (uint32_t j = first; j < end; ++j) {
         const SphereGroup<T>& g = sphereGroups_[j];
         if (const uint32_t met = g.meets(ray, range)) return objects_[g.object[__builtin_ctz(met)]];
       }
       return nullptr;
     }
     typename TriangleGroup<T>::Lanes t;
-    for (uint32_t j = group; j < group + groupsOf(count); ++j) {
+    for (uint32_t j = first; j < end; ++j) {
       const TriangleGroup<T>& g = triangleGroups_[j];
       if (const uint32_t met = g.hits(ray, range, t)) return objects_[g.object[__builtin_ctz(met)]];
     }
     return nullptr;
   }
-  // Where the groups of the leaf that starts at objects_[first] begin (see firstGroup_), or kNoGroup.
-  uint32_t groupOf(uint32_t first) const { return firstGroup_.empty() ? kNoGroup : firstGroup_[first]; }
-  // Makes the groups of the leaves (first, count) that hold triangles only or spheres of one formula only, in
-  // the order given.
-  void groupLeaves(const std::vector<std::pair<uint32_t, uint32_t>>& leaves);
-
-  static constexpr uint32_t kNoGroup = ~uint32_t(0);
-  static constexpr uint32_t kSphereGroups = uint32_t(1) << 31;
+  // Turns the leaves that hold triangles only or spheres of one formula only into groups.
+  void groupLeaves();
 
   std::vector<Node> nodes_;                  // nodes_[0] is the root; empty when there are no objects
   std::vector<const Object<T>*> objects_;    // in leaf order
   std::vector<Primitive<T>> primitives_;     // objects_ as the traversals test them
-  // A leaf of triangles only, objects_[first, first + count), is tested as the groupsOf(count) groups from
-  // triangleGroups_[firstGroup_[first]] on, its triangles in leaf order; a leaf of spheres of one formula only
-  // the same way from sphereGroups_[firstGroup_[first] & ~kSphereGroups] on, kSphereGroups being set; any
-  // other leaf has kNoGroup there (and firstGroup_ is empty when no leaf has groups).
-  std::vector<TriangleGroup<T>> triangleGroups_;
+  std::vector<TriangleGroup<T>> triangleGroups_;  // the grouped leaves' (Node), in the order of nodes_
   std::vector<SphereGroup<T>> sphereGroups_;
-  std::vector<uint32_t> firstGroup_;
 };
 
 }  // namespace rt
