@@ -45,7 +45,7 @@ template <class T> struct alignas(64) SphereGroup {
     Lanes t0, t1;
     Mask met;
     if (!roots(ray, t0, t1, met)) return 0;
-    t = (range.min < t0) & (t0 < range.max) ? t0 : t1;
+    t = ((range.min < t0) & (t0 < range.max)) ? t0 : t1;
     met &= (range.min < t) & (t < range.max);
     return bits(met);
   }
