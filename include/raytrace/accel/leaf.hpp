@@ -97,30 +97,16 @@ template <class T> class ClosestSoFar {
     return true;
   }
   // Tests the triangles of `group` (objects[group.object[k]]) on the ray inside `range`; true when one of them
-  // is the new closest hit. The order (t, then id) makes the answer the one of testing the lanes one by one.
+  // is the new closest hit.
   bool test(const TriangleGroup<T>& group, const Object<T>* const* objects, const Ray<T>& ray, Interval<T> range) {
     typename TriangleGroup<T>::Lanes t;
-    bool closer = false;
-    for (uint32_t met = group.hits(ray, range, t); met; met &= met - 1) {
-      const int k = __builtin_ctz(met);
-      if (!(t[k] < t_ || (t[k] == t_ && group.id[k] < id_))) continue;
-      t_ = t[k], id_ = group.id[k], deferred_ = objects[group.object[k]], sphere_ = nullptr;
-      closer = true;
-    }
-    return closer;
+    return take(group, group.hits(ray, range, t), t, objects, nullptr);
   }
   // The same for the spheres of `group`, whose entries in the hierarchy's primitives are primitives[group.object[k]].
   bool test(const SphereGroup<T>& group, const Object<T>* const* objects, const Primitive<T>* primitives,
             const Ray<T>& ray, Interval<T> range) {
     typename SphereGroup<T>::Lanes t;
-    bool closer = false;
-    for (uint32_t met = group.hits(ray, range, t); met; met &= met - 1) {
-      const int k = __builtin_ctz(met);
-      if (!(t[k] < t_ || (t[k] == t_ && group.id[k] < id_))) continue;
-      t_ = t[k], id_ = group.id[k], deferred_ = objects[group.object[k]], sphere_ = &primitives[group.object[k]];
-      closer = true;
-    }
-    return closer;
+    return take(group, group.hits(ray, range, t), t, objects, primitives);
   }
   T t() const { return t_; }
   // The record of a sphere's or triangle's hit: a sphere's made from its t as its intersect() makes it, a
@@ -135,6 +121,22 @@ template <class T> class ClosestSoFar {
   }
 
  private:
+  // The lanes `met` of a group, hit at t[k], taken in the order (t, then id) that makes the answer the one of
+  // testing the lanes one by one; a sphere group's `primitives` hold the entries finish() makes a record from.
+  template <class Group, class Lanes>
+  bool take(const Group& group, uint32_t met, const Lanes& t, const Object<T>* const* objects,
+            const Primitive<T>* primitives) {
+    bool closer = false;
+    for (; met; met &= met - 1) {
+      const int k = __builtin_ctz(met);
+      if (!(t[k] < t_ || (t[k] == t_ && group.id[k] < id_))) continue;
+      t_ = t[k], id_ = group.id[k], deferred_ = objects[group.object[k]];
+      sphere_ = primitives ? &primitives[group.object[k]] : nullptr;
+      closer = true;
+    }
+    return closer;
+  }
+
   T t_;
   int id_;
   const Object<T>* deferred_ = nullptr;
