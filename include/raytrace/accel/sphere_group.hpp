@@ -11,32 +11,28 @@
 #include <immintrin.h>
 #endif
 
+#include "raytrace/accel/lane_group.hpp"
 #include "raytrace/geometry/interval.hpp"
 #include "raytrace/geometry/ray.hpp"
 #include "raytrace/shapes/sphere.hpp"
 
 namespace rt {
 
-// Aligned to a cache line: a group of floats (100 bytes) takes two lines.
-template <class T> struct alignas(64) SphereGroup {
-  static constexpr int kSize = 4;
-  typedef T Lanes __attribute__((vector_size(kSize * sizeof(T))));
+// Aligned to a cache line: a group of floats (128 bytes) takes two lines.
+template <class T> struct alignas(64) SphereGroup : LaneGroup<T> {
+  using typename LaneGroup<T>::Lanes;
   using Mask = decltype(Lanes{} < Lanes{});  // integer lanes, all bits set where a comparison holds
+  using LaneGroup<T>::kSize;
 
   Lanes center[3]{}, radius{};  // [axis]: lane k holds sphere k's centre and radius
-  uint32_t object[kSize]{};     // lane k's index into the hierarchy's objects
-  int id[kSize]{};              // lane k's object id: equal t go to the lower
-  uint32_t used = 0;            // bit k set when lane k holds a sphere
   bool robust = false;          // the formula of every sphere of the group (Sphere::robust())
 
   // Lane `k` becomes the sphere s; the group's spheres must share their formula.
   void set(int k, const Sphere<T>& s, uint32_t index) {
     for (int axis = 0; axis < 3; ++axis) center[axis][k] = s.center()[axis];
     radius[k] = s.radius();
-    object[k] = index;
-    id[k] = s.id();
     robust = s.robust();
-    used |= 1u << k;
+    this->hold(k, index, s.id());
   }
 
   // The lanes whose sphere has a root strictly inside `range`, as bit k for lane k, with the nearer such root
@@ -47,14 +43,14 @@ template <class T> struct alignas(64) SphereGroup {
     if (!roots(ray, t0, t1, met)) return 0;
     t = ((range.min < t0) & (t0 < range.max)) ? t0 : t1;
     met &= (range.min < t) & (t < range.max);
-    return bits(met);
+    return this->bits(met);
   }
   uint32_t meets(const Ray<T>& ray, Interval<T> range) const {
     Lanes t0, t1;
     Mask met;
     if (!roots(ray, t0, t1, met)) return 0;
     met &= ((range.min < t0) & (t0 < range.max)) | ((range.min < t1) & (t1 < range.max));
-    return bits(met);
+    return this->bits(met);
   }
 
  private:
@@ -68,15 +64,6 @@ template <class T> struct alignas(64) SphereGroup {
     }
 #endif
     for (int k = 0; k < kSize; ++k) x[k] = std::sqrt(x[k]);
-  }
-
-  uint32_t bits(const Mask& met) const {
-#if defined(__SSE2__)
-    if constexpr (sizeof(T) == 4) return uint32_t(_mm_movemask_ps(reinterpret_cast<const __m128&>(met))) & used;
-#endif
-    uint32_t out = 0;
-    for (int k = 0; k < kSize; ++k) out |= uint32_t(met[k] & 1) << k;
-    return out & used;
   }
 
   // Both roots of every lane's quadratic, by the group's formula: each lane does textbookRoots' or
@@ -94,7 +81,7 @@ template <class T> struct alignas(64) SphereGroup {
       const Lanes c = ff - radius * radius;
       const Lanes disc = b * b - T(4) * a * c;
       real = ~(disc < T(0));
-      if (!bits(real)) return false;
+      if (!this->bits(real)) return false;
       Lanes root = disc;
       sqrtOf(root);
       t0 = (-b - root) / (T(2) * a);
@@ -107,7 +94,7 @@ template <class T> struct alignas(64) SphereGroup {
     sqrtOf(lLen);
     const Lanes rr = (radius - lLen) * (radius + lLen);
     real = ~(rr < T(0));
-    if (!bits(real)) return false;
+    if (!this->bits(real)) return false;
     // q = −(b + copysign(√(a·rr), b)): the sign bit of b on the magnitude of the root.
     using Int = std::conditional_t<sizeof(T) == 4, int32_t, int64_t>;
     const Int sign = Int(1) << (8 * sizeof(T) - 1);

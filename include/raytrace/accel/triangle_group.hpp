@@ -5,10 +5,7 @@
 #include <cstdint>
 #include <limits>
 
-#if defined(__SSE__)
-#include <immintrin.h>
-#endif
-
+#include "raytrace/accel/lane_group.hpp"
 #include "raytrace/geometry/interval.hpp"
 #include "raytrace/geometry/ray.hpp"
 #include "raytrace/shapes/triangle.hpp"
@@ -16,23 +13,17 @@
 namespace rt {
 
 // Aligned to a cache line: a group of floats (192 bytes) then spans three lines, not four.
-template <class T> struct alignas(64) TriangleGroup {
-  static constexpr int kSize = 4;
-  typedef T Lanes __attribute__((vector_size(kSize * sizeof(T))));
+template <class T> struct alignas(64) TriangleGroup : LaneGroup<T> {
+  using typename LaneGroup<T>::Lanes;
 
   Lanes a[3]{}, ab[3]{}, ac[3]{};  // [axis]: lane k holds triangle k's vertex a and edges ab, ac
-  uint32_t object[kSize]{};        // lane k's index into the hierarchy's objects
-  int id[kSize]{};                 // lane k's object id: equal t go to the lower
-  uint32_t used = 0;               // bit k set when lane k holds a triangle
 
   // Lane `k` becomes the triangle t, which must not be degenerate (it would never be hit).
   void set(int k, const Triangle<T>& t, uint32_t index) {
     for (int axis = 0; axis < 3; ++axis) {
       a[axis][k] = t.a()[axis], ab[axis][k] = t.ab()[axis], ac[axis][k] = t.ac()[axis];
     }
-    object[k] = index;
-    id[k] = t.id();
-    used |= 1u << k;
+    this->hold(k, index, t.id());
   }
 
   // The lanes whose triangle the ray meets strictly inside `range`, as bit k for lane k, with the hit's
@@ -51,12 +42,7 @@ template <class T> struct alignas(64) TriangleGroup {
     t = (ac[0] * q[0] + ac[1] * q[1] + ac[2] * q[2]) / det;
     const auto met = (det != T(0)) & (u >= T(0)) & (u <= T(1)) & (v >= T(0)) & (u + v <= T(1)) & (range.min < t) &
                      (t < range.max);
-#if defined(__SSE__)
-    if constexpr (sizeof(T) == 4) return uint32_t(_mm_movemask_ps(reinterpret_cast<const __m128&>(met))) & used;
-#endif
-    uint32_t bits = 0;
-    for (int k = 0; k < kSize; ++k) bits |= uint32_t(met[k] & 1) << k;
-    return bits & used;
+    return this->bits(met);
   }
 };
 
