@@ -95,9 +95,9 @@ template <class T>
 
 // Four rays in one AVX-512 register, written with intrinsics (GCC's vector extensions made this width three
 // times slower than AVX2): the same steps as entriesOf, each min and max the instruction whose operand order
-// gives entriesOf's choice (minps(a, b) = a < b ? a : b), so the same bits. For floats only. Every intrinsic
-// is the masked form with all lanes set: GCC 12's unmasked ones pass an undefined register through, which its
-// -Wuninitialized reports.
+// gives entriesOf's choice (minps(a, b) = a < b ? a : b), so the same bits. For floats only. The min, max,
+// broadcast and extract are the masked forms with every lane set: GCC 12's unmasked ones pass an undefined
+// register through, which its -Wuninitialized reports.
 [[gnu::target("avx512f,bmi2")]] void entriesAvx512(const Bvh<float>::Node& node, const Bvh<float>::Packet& packet,
                                                   float tMin, uint32_t rays, uint32_t (&childRays)[Bvh<float>::kWidth],
                                                   float (&childEntry)[Bvh<float>::kWidth]) {
