@@ -135,7 +135,7 @@ template <class T> class Bvh {
     const uint32_t end = first + groupsOf(count & kLeafCount);
     if (count & kSphereLeaf) {
       for (uint32_t j = first; j < end; ++j) {
-        if (closest.test(sphereGroups_[j], objects_.data(), primitives_.data(), ray, {tMin, tMax})) {
+        if (closest.test(sphereGroups_[j], objects_.data(), ray, {tMin, tMax})) {
           tMax = nextUp(closest.t());
         }
       }

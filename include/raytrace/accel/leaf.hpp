@@ -93,20 +93,20 @@ template <class T> class ClosestSoFar {
     }
     T t;
     if (!p.hitT(ray, range, t) || !(t < t_ || p.id < id_)) return false;
-    t_ = t, id_ = p.id, deferred_ = &object, sphere_ = p.kind == Primitive<T>::Kind::Triangle ? nullptr : &p;
+    t_ = t, id_ = p.id, deferred_ = &object, sphere_ = p.kind != Primitive<T>::Kind::Triangle;
+    if (sphere_) center_ = p.a, radius_ = p.ab.x;
     return true;
   }
   // Tests the triangles of `group` (objects[group.object[k]]) on the ray inside `range`; true when one of them
   // is the new closest hit.
   bool test(const TriangleGroup<T>& group, const Object<T>* const* objects, const Ray<T>& ray, Interval<T> range) {
     typename TriangleGroup<T>::Lanes t;
-    return take(group, group.hits(ray, range, t), t, objects, nullptr);
+    return take(group, group.hits(ray, range, t), t, objects);
   }
-  // The same for the spheres of `group`, whose entries in the hierarchy's primitives are primitives[group.object[k]].
-  bool test(const SphereGroup<T>& group, const Object<T>* const* objects, const Primitive<T>* primitives,
-            const Ray<T>& ray, Interval<T> range) {
+  // The same for the spheres of `group`.
+  bool test(const SphereGroup<T>& group, const Object<T>* const* objects, const Ray<T>& ray, Interval<T> range) {
     typename SphereGroup<T>::Lanes t;
-    return take(group, group.hits(ray, range, t), t, objects, primitives);
+    return take(group, group.hits(ray, range, t), t, objects);
   }
   T t() const { return t_; }
   // The record of a sphere's or triangle's hit: a sphere's made from its t as its intersect() makes it, a
@@ -114,7 +114,7 @@ template <class T> class ClosestSoFar {
   void finish(const Ray<T>& ray, T tMin, std::optional<Hit<T>>& best) const {
     if (!deferred_) return;
     if (sphere_) {
-      best = Sphere<T>::hitAt(sphere_->a, sphere_->ab.x, ray, t_, deferred_);
+      best = Sphere<T>::hitAt(center_, radius_, ray, t_, deferred_);
     } else {
       best = deferred_->intersect(ray, {tMin, nextUp(t_)});
     }
@@ -122,16 +122,20 @@ template <class T> class ClosestSoFar {
 
  private:
   // The lanes `met` of a group, hit at t[k], taken in the order (t, then id) that makes the answer the one of
-  // testing the lanes one by one; a sphere group's `primitives` hold the entries finish() makes a record from.
+  // testing the lanes one by one. A sphere's centre and radius are kept from the group, whose lanes are in
+  // cache, for finish(): on a large scene its entry elsewhere would be one more miss per ray.
   template <class Group, class Lanes>
-  bool take(const Group& group, uint32_t met, const Lanes& t, const Object<T>* const* objects,
-            const Primitive<T>* primitives) {
+  bool take(const Group& group, uint32_t met, const Lanes& t, const Object<T>* const* objects) {
     bool closer = false;
     for (; met; met &= met - 1) {
       const int k = __builtin_ctz(met);
       if (!(t[k] < t_ || (t[k] == t_ && group.id[k] < id_))) continue;
       t_ = t[k], id_ = group.id[k], deferred_ = objects[group.object[k]];
-      sphere_ = primitives ? &primitives[group.object[k]] : nullptr;
+      sphere_ = std::is_same_v<Group, SphereGroup<T>>;
+      if constexpr (std::is_same_v<Group, SphereGroup<T>>) {
+        center_ = {group.center[0][k], group.center[1][k], group.center[2][k]};
+        radius_ = group.radius[k];
+      }
       closer = true;
     }
     return closer;
@@ -140,7 +144,9 @@ template <class T> class ClosestSoFar {
   T t_;
   int id_;
   const Object<T>* deferred_ = nullptr;
-  const Primitive<T>* sphere_ = nullptr;  // deferred_'s leaf entry when it is a sphere; else a triangle's
+  bool sphere_ = false;  // whether deferred_ is a sphere, of centre_ and radius_; else a triangle
+  Vec3<T> center_{0};
+  T radius_ = 0;
 };
 
 }  // namespace rt
