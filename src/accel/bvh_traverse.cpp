@@ -34,8 +34,12 @@ void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::opti
   if (nodes_.empty() || n == 0) return;
   if (n == 1) return closestHit(rays[0], range, best[0]);
   Packet& packet = scratchPacket<T>();
+  const auto manyRays = triangleGroups_.empty() ? nullptr : TriangleGroup<T>::manyRays();
   // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
-  for (int i = 0; i < n; ++i) packet.set(i, rays[i], best[i] ? nextUp(best[i]->t) : range.max);
+  for (int i = 0; i < n; ++i) {
+    packet.set(i, rays[i], best[i] ? nextUp(best[i]->t) : range.max);
+    if (manyRays) packet.lanes.set(i, rays[i], {range.min, packet.tMax[i][0]});
+  }
   std::optional<ClosestSoFar<T>> closest[kPacket];
   for (int i = 0; i < n; ++i) closest[i].emplace(best[i]);
   // Children still to visit, each with the rays that enter it, nearest on top: the child the packet enters
@@ -48,12 +52,16 @@ void Bvh<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::opti
   int size = 0;
   Pending current{range.min, 0, 0, (1u << n) - 1};
   for (;;) {
-    if (current.count) {
+    if (current.count && manyRays && (current.count & kTriangleLeaf) &&
+        __builtin_popcount(current.rays) >= kManyRays) {
+      closestInTriangles(manyRays, current.first, current.count, current.rays, packet, closest);
+    } else if (current.count) {
       for (uint32_t mask = current.rays; mask; mask &= mask - 1) {
         const int i = __builtin_ctz(mask);
         T tMax = packet.tMax[i][0];
         if (closestInLeaf(current.first, current.count, rays[i], range.min, tMax, *closest[i], best[i])) {
           std::fill_n(packet.tMax[i], kWidth, tMax);
+          packet.lanes.max[i] = tMax;
         }
       }
     } else {
@@ -102,12 +110,14 @@ void Bvh<T>::occluders(const Ray<T>* rays, const Interval<T>* ranges, uint32_t a
     return;
   }
   Packet& packet = scratchPacket<T>();
+  const auto manyRays = triangleGroups_.empty() ? nullptr : TriangleGroup<T>::manyRays();
   // Every ray has its own tMin; the smallest, tested against all, only admits more boxes, whose objects are
   // then tested with each ray's own range.
   T tMin = std::numeric_limits<T>::infinity();
   for (uint32_t mask = active; mask; mask &= mask - 1) {
     const int i = __builtin_ctz(mask);
     packet.set(i, rays[i], ranges[i].max);
+    if (manyRays) packet.lanes.set(i, rays[i], ranges[i]);
     tMin = std::min(tMin, ranges[i].min);
   }
   struct Pending {
@@ -128,6 +138,12 @@ void Bvh<T>::occluders(const Ray<T>* rays, const Interval<T>* ranges, uint32_t a
       if (!childRays[k]) continue;
       if (!node.count[k]) {
         stack[size++] = {node.first[k], childRays[k]};
+        continue;
+      }
+      if (manyRays && (node.count[k] & kTriangleLeaf) && __builtin_popcount(childRays[k] & active) >= kManyRays) {
+        active &= ~occludersInTriangles(manyRays, node.first[k], node.count[k], packet.lanes, childRays[k] & active,
+                                        found);
+        if (!active) return;
         continue;
       }
       if (node.count[k] & (kTriangleLeaf | kSphereLeaf)) {

@@ -76,6 +76,8 @@ template <class T> class Bvh {
     alignas(64) T origin[3][kPacket][kWidth];
     alignas(64) T invDir[3][kPacket][kWidth];
     alignas(64) T tMax[kPacket][kWidth];
+    RayLanes<T> lanes;  // the rays and their ranges, for tests of a group against many rays at once
+
 
     void set(int i, const Ray<T>& ray, T max) {
       for (int a = 0; a < 3; ++a) std::fill_n(origin[a][i], kWidth, ray.origin[a]);
@@ -95,6 +97,9 @@ template <class T> class Bvh {
   // The implementations of entries() this processor can run, widest SIMD first; entries() uses the first.
   using Kernel = void (*)(const Node&, const Packet&, T, uint32_t, uint32_t (&)[kWidth], T (&)[kWidth]);
   static const std::vector<Kernel>& kernels();
+  // Leaves of triangles that at least this many of a packet's rays reach are tested against them all at once
+  // where the processor can (TriangleGroup::manyRays): measured on the bunny and a million triangles.
+  static constexpr int kManyRays = 4;
 
   // Builds over `objects`, all of which must have bounds(), in O(n log n): a binary tree by the binned
   // surface area heuristic, then collapsed to 4 children per node. The tree is the same for any number of
@@ -167,6 +172,47 @@ template <class T> class Bvh {
       if (const uint32_t met = g.hits(ray, range, t)) return objects_[g.object[__builtin_ctz(met)]];
     }
     return nullptr;
+  }
+  // closestInLeaf for the rays `rays` of a packet at once, in a leaf of triangle groups, with the test of many
+  // rays (`manyRays`, not null); the rays whose closest hit came closer get their tMax in `packet` lowered.
+  // The groups after a hit are tested up to the ray's earlier tMax, not the lowered one: the hits that admits
+  // in addition are farther than the closest, which ClosestSoFar::take then turns down.
+  void closestInTriangles(typename TriangleGroup<T>::ManyRays manyRays, uint32_t first, uint32_t count, uint32_t rays,
+                          Packet& packet, std::optional<ClosestSoFar<T>>* closest) const {
+    uint32_t met[TriangleGroup<T>::kSize], closer = 0;
+    alignas(64) T t[TriangleGroup<T>::kSize][RayLanes<T>::kSize];
+    for (uint32_t j = first; j < first + groupsOf(count & kLeafCount); ++j) {
+      const TriangleGroup<T>& g = triangleGroups_[j];
+      manyRays(g, packet.lanes, rays, met, t);
+      for (uint32_t mask = met[0] | met[1] | met[2] | met[3]; mask; mask &= mask - 1) {
+        const int i = __builtin_ctz(mask);
+        uint32_t lanesMet = 0;
+        typename TriangleGroup<T>::Lanes lanesT;
+        for (int k = 0; k < TriangleGroup<T>::kSize; ++k) lanesMet |= (met[k] >> i & 1) << k, lanesT[k] = t[k][i];
+        if (closest[i]->take(g, lanesMet, lanesT, objects_.data())) closer |= 1u << i;
+      }
+    }
+    for (; closer; closer &= closer - 1) {
+      const int i = __builtin_ctz(closer);
+      packet.lanes.max[i] = nextUp(closest[i]->t());
+      std::fill_n(packet.tMax[i], kWidth, packet.lanes.max[i]);
+    }
+  }
+  // occluderInGroups for the rays `rays` of a packet at once, in a leaf of triangle groups, with the test of
+  // many rays (`manyRays`, not null): found[i] for every ray i that meets one. Returns those rays.
+  uint32_t occludersInTriangles(typename TriangleGroup<T>::ManyRays manyRays, uint32_t first, uint32_t count,
+                                const RayLanes<T>& lanes, uint32_t rays, const Object<T>** found) const {
+    uint32_t met[TriangleGroup<T>::kSize], done = 0;
+    alignas(64) T t[TriangleGroup<T>::kSize][RayLanes<T>::kSize];
+    for (uint32_t j = first; j < first + groupsOf(count & kLeafCount) && done != rays; ++j) {
+      const TriangleGroup<T>& g = triangleGroups_[j];
+      manyRays(g, lanes, rays & ~done, met, t);
+      for (int k = 0; k < TriangleGroup<T>::kSize; ++k) {
+        for (uint32_t mask = met[k] & ~done; mask; mask &= mask - 1) found[__builtin_ctz(mask)] = objects_[g.object[k]];
+        done |= met[k];
+      }
+    }
+    return done;
   }
   // Turns the leaves that hold triangles only or spheres of one formula only into groups.
   void groupLeaves();

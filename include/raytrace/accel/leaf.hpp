@@ -109,21 +109,10 @@ template <class T> class ClosestSoFar {
     return take(group, group.hits(ray, range, t), t, objects);
   }
   T t() const { return t_; }
-  // The record of a sphere's or triangle's hit: a sphere's made from its t as its intersect() makes it, a
-  // triangle's by its intersect(), which finds the same t again.
-  void finish(const Ray<T>& ray, T tMin, std::optional<Hit<T>>& best) const {
-    if (!deferred_) return;
-    if (sphere_) {
-      best = Sphere<T>::hitAt(center_, radius_, ray, t_, deferred_);
-    } else {
-      best = deferred_->intersect(ray, {tMin, nextUp(t_)});
-    }
-  }
-
- private:
   // The lanes `met` of a group, hit at t[k], taken in the order (t, then id) that makes the answer the one of
-  // testing the lanes one by one. A sphere's centre and radius are kept from the group, whose lanes are in
-  // cache, for finish(): on a large scene its entry elsewhere would be one more miss per ray.
+  // testing the lanes one by one; true when one is the new closest hit. A sphere's centre and radius are kept
+  // from the group, whose lanes are in cache, for finish(): on a large scene its entry elsewhere would be one
+  // more miss per ray.
   template <class Group, class Lanes>
   bool take(const Group& group, uint32_t met, const Lanes& t, const Object<T>* const* objects) {
     bool closer = false;
@@ -140,7 +129,18 @@ template <class T> class ClosestSoFar {
     }
     return closer;
   }
+  // The record of a sphere's or triangle's hit: a sphere's made from its t as its intersect() makes it, a
+  // triangle's by its intersect(), which finds the same t again.
+  void finish(const Ray<T>& ray, T tMin, std::optional<Hit<T>>& best) const {
+    if (!deferred_) return;
+    if (sphere_) {
+      best = Sphere<T>::hitAt(center_, radius_, ray, t_, deferred_);
+    } else {
+      best = deferred_->intersect(ray, {tMin, nextUp(t_)});
+    }
+  }
 
+ private:
   T t_;
   int id_;
   const Object<T>* deferred_ = nullptr;

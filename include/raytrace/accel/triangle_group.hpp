@@ -12,6 +12,17 @@
 
 namespace rt {
 
+// Up to kSize rays lane by lane (structure of arrays): what a test of one triangle against many rays reads.
+template <class T> struct RayLanes {
+  static constexpr int kSize = 16;
+  alignas(64) T origin[3][kSize], dir[3][kSize], min[kSize], max[kSize];
+
+  void set(int i, const Ray<T>& ray, Interval<T> range) {
+    for (int a = 0; a < 3; ++a) origin[a][i] = ray.origin[a], dir[a][i] = ray.dir[a];
+    min[i] = range.min, max[i] = range.max;
+  }
+};
+
 // Aligned to a cache line: a group of floats (192 bytes) then spans three lines, not four.
 template <class T> struct alignas(64) TriangleGroup : LaneGroup<T> {
   using typename LaneGroup<T>::Lanes;
@@ -44,6 +55,17 @@ template <class T> struct alignas(64) TriangleGroup : LaneGroup<T> {
                      (t < range.max);
     return this->bits(met);
   }
+
+  // Every triangle of a group against the rays whose bits are set in `rays` at once, one lane per ray: bit i
+  // of met[k] is set when ray i meets triangle k strictly inside [lanes.min[i], lanes.max[i]], at t[k][i]
+  // (written for those rays only). Each lane does hits()' operations in their order, so the same bits.
+  using ManyRays = void (*)(const TriangleGroup& group, const RayLanes<T>& lanes, uint32_t rays,
+                            uint32_t (&met)[LaneGroup<T>::kSize], T (&t)[LaneGroup<T>::kSize][RayLanes<T>::kSize]);
+  // The test of many rays, on processors with AVX-512 (16 rays of floats to a register); null elsewhere, and
+  // for doubles.
+  static ManyRays manyRays();
 };
+template <> TriangleGroup<float>::ManyRays TriangleGroup<float>::manyRays();
+template <> TriangleGroup<double>::ManyRays TriangleGroup<double>::manyRays();
 
 }  // namespace rt
