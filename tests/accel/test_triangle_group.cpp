@@ -85,3 +85,59 @@ TEMPLATE_TEST_CASE("each lane of a triangle group gives Triangle::solve's answer
   CHECK(hits > 5000);
   CHECK(boundary > 500);
 }
+
+TEST_CASE("the test of many rays at once gives each ray Triangle::solve's answer and bits", "[bvh]") {
+  using T = float;
+  constexpr int kRays = rt::RayLanes<T>::kSize;
+  const auto manyRays = rt::TriangleGroup<T>::manyRays();
+  __builtin_cpu_init();
+  REQUIRE(bool(manyRays) == bool(__builtin_cpu_supports("avx512f")));
+  if (!manyRays) return;
+  REQUIRE(rt::TriangleGroup<double>::manyRays() == nullptr);
+  std::mt19937 rng(7);
+  int hits = 0, boundary = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    CAPTURE(trial);
+    const int used = 1 + trial % rt::TriangleGroup<T>::kSize;
+    std::vector<rt::Triangle<T>> triangles;
+    rt::TriangleGroup<T> group;
+    for (int k = 0; k < used; ++k) {
+      triangles.push_back(randomTriangle<T>(rng, trial + k));
+      group.set(k, triangles.back(), uint32_t(k));
+    }
+    // Rays toward the group's triangles, some ranges ending or starting exactly at a hit; a random subset asked.
+    rt::RayLanes<T> lanes;
+    rt::Ray<T> rays[kRays];
+    rt::Interval<T> ranges[kRays];
+    for (int i = 0; i < kRays; ++i) {
+      const rt::Triangle<T>& aim = triangles[size_t(i) % triangles.size()];
+      rays[i] = rayToward<T>(rng, aim, int(rng() % 35));
+      ranges[i] = {T(0), std::numeric_limits<T>::infinity()};
+      T t, u, v;
+      if (i % 3 && rt::Triangle<T>::solve(aim.a(), aim.ab(), aim.ac(), rays[i], ranges[i], t, u, v)) {
+        (i % 3 == 1 ? ranges[i].max : ranges[i].min) = t;
+      }
+      lanes.set(i, rays[i], ranges[i]);
+    }
+    const uint32_t asked = trial % 5 ? uint32_t(rng()) & 0xffff : 0xffff;
+    uint32_t met[rt::TriangleGroup<T>::kSize];
+    T t[rt::TriangleGroup<T>::kSize][kRays];
+    manyRays(group, lanes, asked, met, t);
+    for (int k = 0; k < rt::TriangleGroup<T>::kSize; ++k) {
+      CAPTURE(k);
+      for (int i = 0; i < kRays; ++i) {
+        CAPTURE(i);
+        T expected = 0, u = 0, v = 0;
+        const bool hit = k < used && (asked >> i & 1) &&
+                         rt::Triangle<T>::solve(triangles[size_t(k)].a(), triangles[size_t(k)].ab(),
+                                                triangles[size_t(k)].ac(), rays[i], ranges[i], expected, u, v);
+        REQUIRE(bool(met[k] >> i & 1) == hit);
+        if (hit) REQUIRE(std::memcmp(&t[k][i], &expected, sizeof(T)) == 0);
+        hits += hit;
+        boundary += hit && (u == T(0) || v == T(0) || u + v == T(1));
+      }
+    }
+  }
+  CHECK(hits > 3000);
+  CHECK(boundary > 300);
+}
