@@ -11,6 +11,11 @@ namespace rt {
 
 namespace {
 
+// Leaves of triangles that at least this many of a packet's rays reach are tested against them all at once
+// where the processor can (TriangleGroup::manyRays): thresholds of 2 to 8 measured on the bunny and a million
+// triangles (docs/performance.md).
+constexpr int kManyRays = 6;
+
 // The packet a query fills in, one per thread. A kernel computes on whole registers, so it may read the lanes
 // of rays that are not in the query: they hold what an earlier query left there, or zeros, and the results
 // are masked out. Zeroing a fresh packet for every query would cost more than the rest of a short one.

@@ -97,9 +97,6 @@ template <class T> class Bvh {
   // The implementations of entries() this processor can run, widest SIMD first; entries() uses the first.
   using Kernel = void (*)(const Node&, const Packet&, T, uint32_t, uint32_t (&)[kWidth], T (&)[kWidth]);
   static const std::vector<Kernel>& kernels();
-  // Leaves of triangles that at least this many of a packet's rays reach are tested against them all at once
-  // where the processor can (TriangleGroup::manyRays): measured on the bunny and a million triangles.
-  static constexpr int kManyRays = 4;
 
   // Builds over `objects`, all of which must have bounds(), in O(n log n): a binary tree by the binned
   // surface area heuristic, then collapsed to 4 children per node. The tree is the same for any number of
