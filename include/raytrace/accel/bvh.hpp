@@ -78,7 +78,6 @@ template <class T> class Bvh {
     alignas(64) T tMax[kPacket][kWidth];
     RayLanes<T> lanes;  // the rays and their ranges, for tests of a group against many rays at once
 
-
     void set(int i, const Ray<T>& ray, T max) {
       for (int a = 0; a < 3; ++a) std::fill_n(origin[a][i], kWidth, ray.origin[a]);
       for (int a = 0; a < 3; ++a) std::fill_n(invDir[a][i], kWidth, T(1) / ray.dir[a]);
