@@ -11,6 +11,16 @@ std::optional<Hit<T>> Sphere<T>::intersect(const Ray<T>& ray, Interval<T> range)
   return hitAt(center_, radius_, ray, t, this);
 }
 
+// intersect() on each ray without a call per ray, and a hit record made only for a closer hit.
+template <class T>
+void Sphere<T>::closerHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const {
+  for (int i = 0; i < n; ++i) {
+    T t;
+    if (!nearestRoot(center_, radius_, robust_, rays[i], {range.min, best[i] ? best[i]->t : range.max}, t)) continue;
+    if (auto hit = hitAt(center_, radius_, rays[i], t, this)) best[i] = hit;
+  }
+}
+
 // A shadow ray needs no hit record: only whether a root lies inside its segment.
 template <class T>
 uint32_t Sphere<T>::occludes(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const {

@@ -11,6 +11,7 @@ template <class T> class Sphere final : public Object<T> {
       : Object<T>(material, id), center_(center), radius_(radius), robust_(method != SphereMethod::Textbook) {}
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
+  void closerHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const override;
   uint32_t occludes(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const override;
   Vec3<T> normalAt(const Vec3<T>& point, const Hit<T>& hit) const override;
   std::optional<Aabb<T>> bounds() const override;
