@@ -26,9 +26,11 @@ template <class T> class EmbreeScene {
  public:
   static constexpr int kPacket = 16;
 
-  // Builds Embree's hierarchy with `threads` threads; `high` asks for its best (and slowest) build.
-  EmbreeScene(const Scene<T>& scene, int threads, bool high) {
-    device_ = rtcNewDevice(("threads=" + std::to_string(threads)).c_str());
+  // Builds Embree's hierarchy with `threads` threads; `high` asks for its best (and slowest) build. `config`:
+  // more of rtcNewDevice's settings, comma-separated (such as hair_accel=bvh4obb.virtualcurve4v, the 4-wide
+  // hierarchy for spheres where Embree would build an 8-wide one).
+  EmbreeScene(const Scene<T>& scene, int threads, bool high, const std::string& config) {
+    device_ = rtcNewDevice(("threads=" + std::to_string(threads) + (config.empty() ? "" : "," + config)).c_str());
     if (!device_) throw std::runtime_error("Embree: no device");
     scene_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(scene_, high ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM);

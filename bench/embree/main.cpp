@@ -33,6 +33,7 @@ struct Options {
   bool high = true;
   SphereMethod sphere = SphereMethod::Auto;  // the scene's own unless asked
   std::vector<std::string> kinds;            // the ray sets to trace; empty: all
+  std::string embreeConfig;                  // more of Embree's device settings, such as its hierarchy's kind
 };
 
 // Rays per task handed to a thread, as many as in one of the renderer's 32×32 tiles.
@@ -229,7 +230,7 @@ template <class T> int run(const Options& options, const SceneDesc& desc, const 
       ourBuild.push_back(watch.lap());
       embree.reset();
       watch.lap();
-      embree = std::make_unique<EmbreeScene<T>>(scene, threads, options.high);
+      embree = std::make_unique<EmbreeScene<T>>(scene, threads, options.high, options.embreeConfig);
       embreeBuild.push_back(watch.lap());
     }
     const double ours = median(ourBuild) * 1e3, theirs = median(embreeBuild) * 1e3;
@@ -305,6 +306,8 @@ Options parse(int argc, char** argv) {
         o.kinds.push_back(v.substr(p, comma - p));
         p = comma + 1;
       }
+    } else if (a == "--embree-config") {
+      o.embreeConfig = value();
     } else if (a == "--name") {
       o.name = value();
     } else if (o.scene.empty() && a[0] != '-') {
@@ -315,7 +318,8 @@ Options parse(int argc, char** argv) {
   }
   if (o.scene.empty()) {
     throw std::runtime_error("usage: raytrace_embree SCENE [--size WxH] [--runs N] [--threads 1,2] "
-                             "[--quality high|medium] [--sphere robust|textbook] [--kinds K1,K2] [--name NAME]");
+                             "[--quality high|medium] [--sphere robust|textbook] [--kinds K1,K2] [--name NAME] "
+                             "[--embree-config SETTINGS]");
   }
   if (o.name.empty()) {
     const size_t slash = o.scene.find_last_of('/') + 1, dot = o.scene.find_last_of('.');
