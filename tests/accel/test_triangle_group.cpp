@@ -41,6 +41,17 @@ template <class T> rt::Ray<T> rayToward(std::mt19937& rng, const rt::Triangle<T>
   return ray;
 }
 
+// A group of `used` triangles of the sweep (randomTriangle), lane k holding triangles[k] as object 10 + k.
+template <class T>
+rt::TriangleGroup<T> randomGroup(std::mt19937& rng, int trial, int used, std::vector<rt::Triangle<T>>& triangles) {
+  rt::TriangleGroup<T> group;
+  for (int k = 0; k < used; ++k) {
+    triangles.push_back(randomTriangle<T>(rng, trial + k));
+    group.set(k, triangles.back(), uint32_t(10 + k));
+  }
+  return group;
+}
+
 }  // namespace
 
 TEMPLATE_TEST_CASE("each lane of a triangle group gives Triangle::solve's answer and bits", "[bvh]", float, double) {
@@ -51,11 +62,7 @@ TEMPLATE_TEST_CASE("each lane of a triangle group gives Triangle::solve's answer
     CAPTURE(trial);
     const int used = 1 + trial % rt::TriangleGroup<T>::kSize;
     std::vector<rt::Triangle<T>> triangles;
-    rt::TriangleGroup<T> group;
-    for (int k = 0; k < used; ++k) {
-      triangles.push_back(randomTriangle<T>(rng, trial + k));
-      group.set(k, triangles.back(), uint32_t(10 + k));
-    }
+    const rt::TriangleGroup<T> group = randomGroup<T>(rng, trial, used, triangles);
     const rt::Ray<T> ray = rayToward<T>(rng, triangles[size_t(trial) % triangles.size()], trial / 4);
     rt::Interval<T> range{T(0), std::numeric_limits<T>::infinity()};
     T tAny, u, v;
@@ -100,11 +107,7 @@ TEST_CASE("the test of many rays at once gives each ray Triangle::solve's answer
     CAPTURE(trial);
     const int used = 1 + trial % rt::TriangleGroup<T>::kSize;
     std::vector<rt::Triangle<T>> triangles;
-    rt::TriangleGroup<T> group;
-    for (int k = 0; k < used; ++k) {
-      triangles.push_back(randomTriangle<T>(rng, trial + k));
-      group.set(k, triangles.back(), uint32_t(k));
-    }
+    const rt::TriangleGroup<T> group = randomGroup<T>(rng, trial, used, triangles);
     // Rays toward the group's triangles, some ranges ending or starting exactly at a hit; a random subset asked.
     rt::RayLanes<T> lanes;
     rt::Ray<T> rays[kRays];
