@@ -272,11 +272,12 @@ std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& obje
   return nodes;
 }
 
-// The 4-wide tree of `binary`: a node takes its binary node's children, then, while it has room, replaces the
+// The W-wide tree of `binary`: a node takes its binary node's children, then, while it has room, replaces the
 // inner child with the largest surface area by that child's two children (Wald et al. 2008).
-template <class T> std::vector<typename Bvh<T>::Node> collapse(const std::vector<BinaryNode<T>>& binary) {
-  using Node = typename Bvh<T>::Node;
-  constexpr int kWidth = Bvh<T>::kWidth;
+template <class T, int W>
+std::vector<typename Bvh<T>::template NodeOf<W>> collapse(const std::vector<BinaryNode<T>>& binary) {
+  using Node = typename Bvh<T>::template NodeOf<W>;
+  constexpr int kWidth = W;
   struct Task {
     uint32_t binary, node;
   };
@@ -347,12 +348,16 @@ template <class T> Bvh<T>::Bvh(const std::vector<const Object<T>*>& objects, int
   primitives_.clear();
   primitives_.reserve(objects.size());
   for (uint32_t i : order) objects_.push_back(objects[i]), primitives_.push_back(unordered[i]);
-  nodes_ = collapse(binary);
+  nodes_ = collapse<T, kWidth>(binary);
+  wideNodes_ = collapse<T, kWideWidth>(binary);
   groupLeaves();
 }
 
 template <class T> void Bvh<T>::groupLeaves() {
   using Kind = typename Primitive<T>::Kind;
+  // The first group and the kind of group that the leaf starting at object o became: the wide tree's leaves
+  // are the same and take them over.
+  std::vector<std::pair<uint32_t, uint32_t>> grouped(objects_.size());
   // Lane k of group g holds the leaf's object k, g = k / kSize, whatever the kind of group.
   const auto fill = [&](auto& groups, uint32_t first, uint32_t count, auto shape) {
     const uint32_t start = uint32_t(groups.size());
@@ -380,6 +385,15 @@ template <class T> void Bvh<T>::groupLeaves() {
                              [](const Object<T>& o) -> const Sphere<T>& { return static_cast<const Sphere<T>&>(o); });
         node.count[k] |= kSphereLeaf;
       }
+      grouped[first] = {node.first[k], node.count[k] & ~kLeafCount};
+    }
+  }
+  for (WideNode& node : wideNodes_) {
+    for (int k = 0; k < kWideWidth; ++k) {
+      if (!node.count[k]) continue;
+      const auto [group, kind] = grouped[node.first[k]];
+      node.first[k] = kind ? group : node.first[k];
+      node.count[k] |= kind;
     }
   }
 }

@@ -15,12 +15,10 @@ namespace rt {
 
 namespace {
 
-// The ray as the node test uses it, each value in every lane.
+// The ray as the node test uses it, each value in every lane of a register of four.
 template <class T> struct Slabs {
-  static constexpr int W = Bvh<T>::kWidth;
+  static constexpr int W = Bvh<T>::kWidth, kWide = Bvh<T>::kWideWidth;
   typedef T Quad __attribute__((vector_size(W * sizeof(T))));
-
-  using Node = typename Bvh<T>::Node;
 
   Quad origin[3], invDir[3];
 
@@ -28,16 +26,24 @@ template <class T> struct Slabs {
     for (int a = 0; a < 3; ++a) origin[a] = Quad{} + ray.origin[a], invDir[a] = Quad{} + T(1) / ray.dir[a];
   }
 
-  // The children of the node the ray enters within [tMin, tMax], as bit k for child k, and in entry[k] the
-  // distance at which it enters them: the packet kernels' slab test (bvh_kernels.cpp, the same operations)
-  // for one ray.
-  uint32_t entries(const Node& node, T tMin, T tMax, T (&entry)[W]) const {
+  // The children of the wide node the ray enters within [tMin, tMax], as bit k for child k, and in entry[k]
+  // the distance at which it enters them: the packet kernels' slab test (bvh_kernels.cpp, the same
+  // operations) for one ray, on four children at a time.
+  uint32_t entries(const typename Bvh<T>::WideNode& node, T tMin, T tMax, T (&entry)[kWide]) const {
+    uint32_t bits = 0;
+    for (int first = 0; first < kWide; first += W) bits |= quad(node, first, tMin, tMax, entry + first) << first;
+    return bits;
+  }
+
+ private:
+  // Children first to first + W − 1.
+  uint32_t quad(const typename Bvh<T>::WideNode& node, int first, T tMin, T tMax, T* entry) const {
     constexpr T inf = std::numeric_limits<T>::infinity();
     Quad enter = Quad{} + tMin, leave = Quad{} + tMax;
     for (int a = 0; a < 3; ++a) {
       Quad lo, hi;
-      std::memcpy(&lo, node.lo[a], sizeof lo);
-      std::memcpy(&hi, node.hi[a], sizeof hi);
+      std::memcpy(&lo, node.lo[a] + first, sizeof lo);
+      std::memcpy(&hi, node.hi[a] + first, sizeof hi);
       const Quad t0 = (lo - origin[a]) * invDir[a], t1 = (hi - origin[a]) * invDir[a];
       // min and max written so that a NaN from 0·∞ in t0 or t1 never replaces enter or leave.
       const Quad tNear = t1 < t0 ? t1 : t0, tFar = t0 < t1 ? t1 : t0;
@@ -59,7 +65,7 @@ template <class T> struct Slabs {
 
 template <class T>
 void Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>>& best) const {
-  if (nodes_.empty()) return;
+  if (wideNodes_.empty()) return;
   const Slabs<T> slabs(ray);
   ClosestSoFar<T> closest(best);
   // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
@@ -70,15 +76,15 @@ void Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<
     T t;
     uint32_t first, count;
   };
-  std::array<Pending, kMaxDepth * kWidth> stack;
+  std::array<Pending, kMaxDepth * kWideWidth> stack;
   int size = 0;
   Pending current{range.min, 0, 0};
   for (;;) {
     if (current.count) {
       closestInLeaf(current.first, current.count, ray, range.min, tMax, closest, best);
     } else {
-      const Node& node = nodes_[current.first];
-      T entry[kWidth];
+      const WideNode& node = wideNodes_[current.first];
+      T entry[kWideWidth];
       uint32_t enters = slabs.entries(node, range.min, tMax, entry);
       if (enters && !(enters & (enters - 1))) {  // one child, the most common case below the top
         const int k = __builtin_ctz(enters);
@@ -110,14 +116,14 @@ void Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<
 }
 
 template <class T> const Object<T>* Bvh<T>::occluder(const Ray<T>& ray, Interval<T> range) const {
-  if (nodes_.empty()) return nullptr;
+  if (wideNodes_.empty()) return nullptr;
   const Slabs<T> slabs(ray);
-  std::array<uint32_t, kMaxDepth * kWidth> stack;
+  std::array<uint32_t, kMaxDepth * kWideWidth> stack;
   int size = 0;
   stack[size++] = 0;
   while (size > 0) {
-    const Node& node = nodes_[stack[--size]];
-    T entry[kWidth];
+    const WideNode& node = wideNodes_[stack[--size]];
+    T entry[kWideWidth];
     for (uint32_t enters = slabs.entries(node, range.min, range.max, entry); enters; enters &= enters - 1) {
       const int k = __builtin_ctz(enters);
       if (!node.count[k]) {

@@ -237,6 +237,16 @@ TEST_CASE("the tree holds every bounded object once, inside nested boxes", "[bvh
   }
 }
 
+TEST_CASE("the 8-wide tree of single rays has the 4-wide tree's leaves", "[bvh]") {
+  std::mt19937 rng(8);
+  // With ellipsoids, leaves tested one object at a time; spheres only, leaves of sphere groups.
+  for (const double ellipsoids : {0.2, 0.0}) {
+    const rt::SceneDesc desc = randomScene(rng, 3000, ellipsoids);
+    rt::test::checkWideTree(*rt::Scene<float>(desc, rt::test::robustArithmetic<float>(), Hierarchy::Always)
+                                 .hierarchy());
+  }
+}
+
 // Large enough that the top of the tree is split first and the subtrees under it are built on the threads; a
 // tenth of the spheres coincide, so that some subtrees stop early.
 TEST_CASE("the tree is the same, node for node, for any number of threads", "[bvh]") {

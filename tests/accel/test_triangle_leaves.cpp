@@ -125,6 +125,7 @@ TEST_CASE("a hierarchy of triangles holds every triangle in exactly one leaf, in
   }
   CHECK(leavesOf.size() == desc.objects.size());
   for (const auto& [id, leaves] : leavesOf) CHECK(leaves == 1);
+  checkWideTree(bvh);
   // Leaves of up to two groups: larger than those tested one object at a time (4), as a group's four tests cost
   // about one.
   CHECK(largest > 4);

@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <array>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -50,6 +52,44 @@ void requirePacketAsAlone(const Scene<T>& flat, const Scene<T>& tree, const Ray<
     requireSame(hits[i], flat.closestHit(rays[i], {}));
     REQUIRE(shadowed[i] == flat.occluded(rays[i], ranges[i]));
   }
+}
+
+// The leaves of nodes, as (first object, count, kind of group): each in a node's box that holds them, every
+// inner child's box holding its node's boxes.
+template <class T, class Nodes> std::vector<std::array<uint32_t, 3>> leavesInNestedBoxes(const Bvh<T>& bvh,
+                                                                                         const Nodes& nodes) {
+  const auto contains = [](const Aabb<T>& outer, const Aabb<T>& inner) {
+    return glm::all(glm::lessThanEqual(outer.min, inner.min)) && glm::all(glm::lessThanEqual(inner.max, outer.max));
+  };
+  std::vector<std::array<uint32_t, 3>> leaves;
+  for (const auto& node : nodes) {
+    for (int k = 0; k < node.size(); ++k) {
+      if (node.count[k]) {
+        const auto [first, count] = bvh.leafObjects(node, k);
+        for (uint32_t i = first; i < first + count; ++i) CHECK(contains(node.box(k), *bvh.objects()[i]->bounds()));
+        leaves.push_back({first, count, node.count[k] & ~Bvh<T>::kLeafCount});
+        continue;
+      }
+      const auto& child = nodes[node.first[k]];
+      for (int c = 0; c < child.size(); ++c) CHECK(contains(node.box(k), child.box(c)));
+    }
+  }
+  std::sort(leaves.begin(), leaves.end());
+  return leaves;
+}
+
+// The 8-wide tree that single rays walk has the 4-wide tree's leaves, tested as the same groups, and holds
+// every object of the hierarchy once.
+template <class T> void checkWideTree(const Bvh<T>& bvh) {
+  const auto leaves = leavesInNestedBoxes(bvh, bvh.nodes());
+  REQUIRE(leavesInNestedBoxes(bvh, bvh.wideNodes()) == leaves);
+  uint32_t next = 0;  // the leaves, in order of their first object, cover the objects without a gap
+  for (const auto& leaf : leaves) {
+    REQUIRE(leaf[0] == next);
+    next += leaf[1];
+  }
+  CHECK(next == bvh.objects().size());
+  CHECK(bvh.wideNodes().size() < bvh.nodes().size());
 }
 
 // The float hierarchy of `desc`, built on 1, 2 and 5 threads, is the same node for node (as printbvh shows it),

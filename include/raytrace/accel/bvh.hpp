@@ -42,32 +42,39 @@ template <class T> class Bvh {
   static constexpr uint32_t kTriangleLeaf = uint32_t(1) << 31, kSphereLeaf = uint32_t(1) << 30;
   static constexpr uint32_t kLeafCount = kSphereLeaf - 1;
 
-  // A node of the flattened 4-wide tree (Wald et al., "Getting Rid of Packets", 2008; Dammertz et al.,
+  // A node of the flattened W-wide tree (Wald et al., "Getting Rid of Packets", 2008; Dammertz et al.,
   // "Shallow Bounding Volume Hierarchies", 2008). Child k < size() is the node nodes_[first[k]] (never the root,
   // 0) when count[k] = 0, else a leaf of count[k] & kLeafCount objects: objects_[first[k], ...) tested one by
   // one, or, with kTriangleLeaf or kSphereLeaf set in count[k], the groups triangleGroups_[first[k], ...) or
   // sphereGroups_[first[k], ...) (leafObjects() tells which objects). An unused child has first = count = 0
   // and a box at +∞ on every axis, which no ray enters: the slab test puts the entry at +∞ or the exit at −∞.
-  // So the node tests need no count of children, and a node of floats is 128 bytes, two cache lines (Embree's
-  // 4-wide nodes are the same size).
-  struct alignas(64) Node {
-    T lo[3][kWidth], hi[3][kWidth];  // [axis][child]
-    uint32_t first[kWidth]{}, count[kWidth]{};
+  // So the node tests need no count of children, and a 4-wide node of floats is 128 bytes, two cache lines
+  // (Embree's 4-wide nodes are the same size).
+  template <int W> struct alignas(64) NodeOf {
+    T lo[3][W], hi[3][W];  // [axis][child]
+    uint32_t first[W]{}, count[W]{};
 
-    Node() {
-      std::fill_n(&lo[0][0], 3 * kWidth, std::numeric_limits<T>::infinity());
-      std::fill_n(&hi[0][0], 3 * kWidth, std::numeric_limits<T>::infinity());
+    NodeOf() {
+      std::fill_n(&lo[0][0], 3 * W, std::numeric_limits<T>::infinity());
+      std::fill_n(&hi[0][0], 3 * W, std::numeric_limits<T>::infinity());
     }
     // The children in use, which come first.
     int size() const {
       int n = 0;
-      while (n < kWidth && (first[n] || count[n])) ++n;
+      while (n < W && (first[n] || count[n])) ++n;
       return n;
     }
     Aabb<T> box(int k) const {
       return {{lo[0][k], lo[1][k], lo[2][k]}, {hi[0][k], hi[1][k], hi[2][k]}};
     }
   };
+  using Node = NodeOf<kWidth>;
+  // The same tree with up to 8 children a node, which the queries of one ray walk (bvh_single.cpp): the same
+  // leaves in fewer steps down, a node's boxes tested four at a time. Packets keep the 4-wide tree, which
+  // their rays share a register of (8 children a node cost them 15–20 %, docs/performance.md); Embree builds
+  // 8-wide trees on processors with AVX.
+  static constexpr int kWideWidth = 8;
+  using WideNode = NodeOf<kWideWidth>;
 
   // A packet laid out for the node test (bvh_kernels.cpp): each of ray i's values repeated kWidth times, once per
   // child, so that a SIMD register holds the values of one or more whole rays. tMax[i] is where ray i stops,
@@ -112,10 +119,11 @@ template <class T> class Bvh {
 
   // The tree, for those who walk it: nodes()[0] is the root (none when there are no objects).
   const std::vector<Node>& nodes() const { return nodes_; }
+  const std::vector<WideNode>& wideNodes() const { return wideNodes_; }
   const std::vector<const Object<T>*>& objects() const { return objects_; }
   // The objects of the leaf that is child k of `node` (count[k] > 0): objects()[first, first + count), as
   // (first, count).
-  std::pair<uint32_t, uint32_t> leafObjects(const Node& node, int k) const {
+  template <int W> std::pair<uint32_t, uint32_t> leafObjects(const NodeOf<W>& node, int k) const {
     const uint32_t count = node.count[k] & kLeafCount, first = node.first[k];
     if (node.count[k] & kTriangleLeaf) return {triangleGroups_[first].object[0], count};
     if (node.count[k] & kSphereLeaf) return {sphereGroups_[first].object[0], count};
@@ -214,6 +222,7 @@ template <class T> class Bvh {
   void groupLeaves();
 
   std::vector<Node> nodes_;                  // nodes_[0] is the root; empty when there are no objects
+  std::vector<WideNode> wideNodes_;          // the same tree, 8-wide; its leaves are those of nodes_
   std::vector<const Object<T>*> objects_;    // in leaf order
   std::vector<Primitive<T>> primitives_;     // objects_ as the traversals test them
   std::vector<TriangleGroup<T>> triangleGroups_;  // the grouped leaves' (Node), in the order of nodes_
