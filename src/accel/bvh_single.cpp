@@ -1,6 +1,6 @@
 // The hierarchy's two queries for one ray: the incoherent rays (reflections, refractions, diffuse bounces)
-// and every query of the diagnostics. One ray against a node's four boxes fills one register; nothing of a
-// packet's bookkeeping (masks of rays, entry distances gathered over rays) is needed.
+// and every query of the diagnostics, on the 8-wide tree. One ray against four of a node's boxes fills one
+// register; nothing of a packet's bookkeeping (masks of rays, entry distances gathered over rays) is needed.
 #include "raytrace/accel/bvh.hpp"
 
 #include <array>
