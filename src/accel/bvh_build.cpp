@@ -277,7 +277,6 @@ std::vector<BinaryNode<T>> buildBinary(const std::vector<const Object<T>*>& obje
 template <class T, int W>
 std::vector<typename Bvh<T>::template NodeOf<W>> collapse(const std::vector<BinaryNode<T>>& binary) {
   using Node = typename Bvh<T>::template NodeOf<W>;
-  constexpr int kWidth = W;
   struct Task {
     uint32_t binary, node;
   };
@@ -290,14 +289,14 @@ std::vector<typename Bvh<T>::template NodeOf<W>> collapse(const std::vector<Bina
   while (!tasks.empty()) {
     const Task task = tasks.back();
     tasks.pop_back();
-    uint32_t children[kWidth];
+    uint32_t children[W];
     int size;
     if (binary[task.binary].count) {
       children[0] = task.binary, size = 1;  // a root that is a leaf: one child
     } else {
       children[0] = binary[task.binary].first, children[1] = children[0] + 1, size = 2;
     }
-    while (size < kWidth) {
+    while (size < W) {
       int widest = -1;
       for (int c = 0; c < size; ++c) {
         const BinaryNode<T>& b = binary[children[c]];
@@ -392,7 +391,8 @@ template <class T> void Bvh<T>::groupLeaves() {
     for (int k = 0; k < kWideWidth; ++k) {
       if (!node.count[k]) continue;
       const auto [group, kind] = grouped[node.first[k]];
-      node.first[k] = kind ? group : node.first[k];
+      if (!kind) continue;
+      node.first[k] = group;
       node.count[k] |= kind;
     }
   }

@@ -43,8 +43,8 @@ template <class T> class Bvh {
   static constexpr uint32_t kLeafCount = kSphereLeaf - 1;
 
   // A node of the flattened W-wide tree (Wald et al., "Getting Rid of Packets", 2008; Dammertz et al.,
-  // "Shallow Bounding Volume Hierarchies", 2008). Child k < size() is the node nodes_[first[k]] (never the root,
-  // 0) when count[k] = 0, else a leaf of count[k] & kLeafCount objects: objects_[first[k], ...) tested one by
+  // "Shallow Bounding Volume Hierarchies", 2008). Child k < size() is the node nodes_[first[k]] (wideNodes_ in
+  // the wide tree; never the root, 0) when count[k] = 0, else a leaf of count[k] & kLeafCount objects: objects_[first[k], ...) tested one by
   // one, or, with kTriangleLeaf or kSphereLeaf set in count[k], the groups triangleGroups_[first[k], ...) or
   // sphereGroups_[first[k], ...) (leafObjects() tells which objects). An unused child has first = count = 0
   // and a box at +∞ on every axis, which no ray enters: the slab test puts the entry at +∞ or the exit at −∞.
