@@ -11,13 +11,12 @@ std::optional<Hit<T>> Sphere<T>::intersect(const Ray<T>& ray, Interval<T> range)
   return hitAt(center_, radius_, ray, t, this);
 }
 
-// intersect() on each ray without a call per ray, and a hit record made only for a closer hit.
+// Object::closerHits with Sphere's own intersect() named, so that it is inlined rather than called through
+// the virtual table once per ray.
 template <class T>
 void Sphere<T>::closerHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* best) const {
   for (int i = 0; i < n; ++i) {
-    T t;
-    if (!nearestRoot(center_, radius_, robust_, rays[i], {range.min, best[i] ? best[i]->t : range.max}, t)) continue;
-    if (auto hit = hitAt(center_, radius_, rays[i], t, this)) best[i] = hit;
+    if (auto hit = Sphere::intersect(rays[i], {range.min, best[i] ? best[i]->t : range.max})) best[i] = hit;
   }
 }
 

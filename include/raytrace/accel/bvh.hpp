@@ -44,9 +44,9 @@ template <class T> class Bvh {
 
   // A node of the flattened W-wide tree (Wald et al., "Getting Rid of Packets", 2008; Dammertz et al.,
   // "Shallow Bounding Volume Hierarchies", 2008). Child k < size() is the node nodes_[first[k]] (wideNodes_ in
-  // the wide tree; never the root, 0) when count[k] = 0, else a leaf of count[k] & kLeafCount objects: objects_[first[k], ...) tested one by
-  // one, or, with kTriangleLeaf or kSphereLeaf set in count[k], the groups triangleGroups_[first[k], ...) or
-  // sphereGroups_[first[k], ...) (leafObjects() tells which objects). An unused child has first = count = 0
+  // the wide tree; never the root, 0) when count[k] = 0, else a leaf of count[k] & kLeafCount objects:
+  // objects_[first[k], ...) tested one by one, or, with kTriangleLeaf or kSphereLeaf set in count[k], the groups
+  // triangleGroups_[first[k], ...) or sphereGroups_[first[k], ...) (leafObjects() tells which objects). An unused child has first = count = 0
   // and a box at +∞ on every axis, which no ray enters: the slab test puts the entry at +∞ or the exit at −∞.
   // So the node tests need no count of children, and a 4-wide node of floats is 128 bytes, two cache lines
   // (Embree's 4-wide nodes are the same size).
@@ -141,17 +141,15 @@ template <class T> class Bvh {
   [[gnu::always_inline]] bool closestInLeaf(uint32_t first, uint32_t count, const Ray<T>& ray, T tMin, T& tMax,
                                              ClosestSoFar<T>& closest, std::optional<Hit<T>>& best) const {
     const T before = tMax;
-    const uint32_t end = first + groupsOf(count & kLeafCount);
+    const auto testGroups = [&](const auto& groups) {
+      for (uint32_t j = first; j < first + groupsOf(count & kLeafCount); ++j) {
+        if (closest.test(groups[j], objects_.data(), ray, {tMin, tMax})) tMax = nextUp(closest.t());
+      }
+    };
     if (count & kSphereLeaf) {
-      for (uint32_t j = first; j < end; ++j) {
-        if (closest.test(sphereGroups_[j], objects_.data(), ray, {tMin, tMax})) {
-          tMax = nextUp(closest.t());
-        }
-      }
+      testGroups(sphereGroups_);
     } else if (count & kTriangleLeaf) {
-      for (uint32_t j = first; j < end; ++j) {
-        if (closest.test(triangleGroups_[j], objects_.data(), ray, {tMin, tMax})) tMax = nextUp(closest.t());
-      }
+      testGroups(triangleGroups_);
     } else {
       for (uint32_t o = first; o < first + count; ++o) {
         if (closest.test(primitives_[o], *objects_[o], ray, {tMin, tMax}, best)) tMax = nextUp(closest.t());

@@ -97,15 +97,11 @@ template <class T> class ClosestSoFar {
     if (sphere_) center_ = p.a, radius_ = p.ab.x;
     return true;
   }
-  // Tests the triangles of `group` (objects[group.object[k]]) on the ray inside `range`; true when one of them
-  // is the new closest hit.
-  bool test(const TriangleGroup<T>& group, const Object<T>* const* objects, const Ray<T>& ray, Interval<T> range) {
-    typename TriangleGroup<T>::Lanes t;
-    return take(group, group.hits(ray, range, t), t, objects);
-  }
-  // The same for the spheres of `group`.
-  bool test(const SphereGroup<T>& group, const Object<T>* const* objects, const Ray<T>& ray, Interval<T> range) {
-    typename SphereGroup<T>::Lanes t;
+  // Tests the triangles or spheres of `group` (objects[group.object[k]]) on the ray inside `range`; true when
+  // one of them is the new closest hit.
+  template <class Group>
+  bool test(const Group& group, const Object<T>* const* objects, const Ray<T>& ray, Interval<T> range) {
+    typename Group::Lanes t;
     return take(group, group.hits(ray, range, t), t, objects);
   }
   T t() const { return t_; }
