@@ -1,13 +1,15 @@
 // The hierarchy's two queries for one ray: the incoherent rays (reflections, refractions, diffuse bounces)
-// and every query of the diagnostics, on the 8-wide tree. One ray against four of a node's boxes fills one
-// register; nothing of a packet's bookkeeping (masks of rays, entry distances gathered over rays) is needed.
+// and every query of the diagnostics, on the 8-wide tree. One ray against a node's boxes fills one register
+// (eight boxes with AVX2, else four at a time); nothing of a packet's bookkeeping (masks of rays, entry
+// distances gathered over rays) is needed.
 #include "raytrace/accel/bvh.hpp"
 
 #include <array>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
-#if defined(__SSE__)
+#if defined(__x86_64__)
 #include <immintrin.h>
 #endif
 
@@ -15,58 +17,69 @@ namespace rt {
 
 namespace {
 
-// The ray as the node test uses it, each value in every lane of a register of four.
-template <class T> struct Slabs {
-  static constexpr int W = Bvh<T>::kWidth, kWide = Bvh<T>::kWideWidth;
-  typedef T Quad __attribute__((vector_size(W * sizeof(T))));
+// The lanes of a comparison's result as bits, lane k as bit k: one instruction where the processor has it.
+template <class Mask> uint32_t bitsOf(const Mask& met) {
+  uint32_t bits = 0;
+  for (int k = 0; k < int(sizeof met / sizeof met[0]); ++k) bits |= uint32_t(met[k] & 1) << k;
+  return bits;
+}
+#if defined(__x86_64__)
+typedef int32_t Int4 __attribute__((vector_size(16)));
+typedef int32_t Int8 __attribute__((vector_size(32)));
+inline uint32_t bitsOf(const Int4& met) { return uint32_t(_mm_movemask_ps(reinterpret_cast<const __m128&>(met))); }
+[[gnu::target("avx2")]] inline uint32_t bitsOf(const Int8& met) {
+  return uint32_t(_mm256_movemask_ps(reinterpret_cast<const __m256&>(met)));
+}
+#endif
 
-  Quad origin[3], invDir[3];
+// The ray as the node test uses it, each value in every one of a register's L lanes.
+template <class T, int L> struct Slabs {
+  static constexpr int kWide = Bvh<T>::kWideWidth;
+  typedef T Lanes __attribute__((vector_size(L * sizeof(T))));
+
+  Lanes origin[3], invDir[3];
 
   explicit Slabs(const Ray<T>& ray) {
-    for (int a = 0; a < 3; ++a) origin[a] = Quad{} + ray.origin[a], invDir[a] = Quad{} + T(1) / ray.dir[a];
+    for (int a = 0; a < 3; ++a) origin[a] = Lanes{} + ray.origin[a], invDir[a] = Lanes{} + T(1) / ray.dir[a];
   }
 
   // The children of the wide node the ray enters within [tMin, tMax], as bit k for child k, and in entry[k]
   // the distance at which it enters them: the packet kernels' slab test (bvh_kernels.cpp, the same
-  // operations) for one ray, on four children at a time.
+  // operations) for one ray, on L children at a time.
   uint32_t entries(const typename Bvh<T>::WideNode& node, T tMin, T tMax, T (&entry)[kWide]) const {
     uint32_t bits = 0;
-    for (int first = 0; first < kWide; first += W) bits |= quad(node, first, tMin, tMax, entry + first) << first;
+    for (int first = 0; first < kWide; first += L) bits |= lanes(node, first, tMin, tMax, entry + first) << first;
     return bits;
   }
 
  private:
-  // Children first to first + W − 1.
-  uint32_t quad(const typename Bvh<T>::WideNode& node, int first, T tMin, T tMax, T* entry) const {
+  // Children first to first + L − 1.
+  uint32_t lanes(const typename Bvh<T>::WideNode& node, int first, T tMin, T tMax, T* entry) const {
     constexpr T inf = std::numeric_limits<T>::infinity();
-    Quad enter = Quad{} + tMin, leave = Quad{} + tMax;
+    Lanes enter = Lanes{} + tMin, leave = Lanes{} + tMax;
     for (int a = 0; a < 3; ++a) {
-      Quad lo, hi;
+      Lanes lo, hi;
       std::memcpy(&lo, node.lo[a] + first, sizeof lo);
       std::memcpy(&hi, node.hi[a] + first, sizeof hi);
-      const Quad t0 = (lo - origin[a]) * invDir[a], t1 = (hi - origin[a]) * invDir[a];
+      const Lanes t0 = (lo - origin[a]) * invDir[a], t1 = (hi - origin[a]) * invDir[a];
       // min and max written so that a NaN from 0·∞ in t0 or t1 never replaces enter or leave.
-      const Quad tNear = t1 < t0 ? t1 : t0, tFar = t0 < t1 ? t1 : t0;
+      const Lanes tNear = t1 < t0 ? t1 : t0, tFar = t0 < t1 ? t1 : t0;
       enter = enter < tNear ? tNear : enter;
       leave = tFar < leave ? tFar : leave;
     }
-    const auto enters = (enter <= leave * kFarScale<T>) & (enter < inf);
     std::memcpy(entry, &enter, sizeof enter);
-#if defined(__SSE__)
-    if constexpr (sizeof(T) == 4) return uint32_t(_mm_movemask_ps(reinterpret_cast<const __m128&>(enters)));
-#endif
-    uint32_t bits = 0;
-    for (int k = 0; k < W; ++k) bits |= uint32_t(enters[k] & 1) << k;
-    return bits;
+    return bitsOf((enter <= leave * kFarScale<T>) & (enter < inf));
   }
 };
 
 }  // namespace
 
 template <class T>
-void Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>>& best) const {
+template <class Slabs>
+[[gnu::always_inline]] inline void Bvh<T>::closestHitWith(const Ray<T>& ray, Interval<T> range,
+                                                          std::optional<Hit<T>>& best) const {
   if (wideNodes_.empty()) return;
-  const Slabs<T> slabs(ray);
+  const Slabs slabs(ray);
   ClosestSoFar<T> closest(best);
   // Hits at exactly best->t are still wanted: they win when their object comes first in the file.
   T tMax = best ? nextUp(best->t) : range.max;
@@ -115,9 +128,11 @@ void Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<
   }
 }
 
-template <class T> const Object<T>* Bvh<T>::occluder(const Ray<T>& ray, Interval<T> range) const {
+template <class T>
+template <class Slabs>
+[[gnu::always_inline]] inline const Object<T>* Bvh<T>::occluderWith(const Ray<T>& ray, Interval<T> range) const {
   if (wideNodes_.empty()) return nullptr;
-  const Slabs<T> slabs(ray);
+  const Slabs slabs(ray);
   std::array<uint32_t, kMaxDepth * kWideWidth> stack;
   int size = 0;
   stack[size++] = 0;
@@ -145,9 +160,50 @@ template <class T> const Object<T>* Bvh<T>::occluder(const Ray<T>& ray, Interval
   return nullptr;
 }
 
+// The AVX2 instances test a wide node's eight boxes in one register. Their target attribute lets the compiler
+// use AVX2 in all they inline; `flatten` inlines the AVX2 bitsOf too, which the traversal's own body (compiled
+// for the baseline) cannot take in.
+template <class T> const std::vector<typename Bvh<T>::SingleRayQueries>& Bvh<T>::singleRayQueries() {
+  static const std::vector<SingleRayQueries> supported = [] {
+    std::vector<SingleRayQueries> q;
+#if defined(__x86_64__)
+    if constexpr (std::is_same_v<T, float>) {
+      __builtin_cpu_init();
+      if (__builtin_cpu_supports("avx2")) {
+        q.push_back({[](const Bvh& bvh, const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>>& best)
+                         __attribute__((target("avx2"), flatten)) { bvh.closestHitWith<Slabs<T, 8>>(ray, range, best); },
+                     [](const Bvh& bvh, const Ray<T>& ray, Interval<T> range)
+                         __attribute__((target("avx2"), flatten)) { return bvh.occluderWith<Slabs<T, 8>>(ray, range); }});
+      }
+    }
+#endif
+    q.push_back({[](const Bvh& bvh, const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>>& best) {
+                   bvh.closestHitWith<Slabs<T, 4>>(ray, range, best);
+                 },
+                 [](const Bvh& bvh, const Ray<T>& ray, Interval<T> range) {
+                   return bvh.occluderWith<Slabs<T, 4>>(ray, range);
+                 }});
+    return q;
+  }();
+  return supported;
+}
+
+template <class T>
+void Bvh<T>::closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>>& best) const {
+  static const auto widest = singleRayQueries().front().closestHit;
+  widest(*this, ray, range, best);
+}
+
+template <class T> const Object<T>* Bvh<T>::occluder(const Ray<T>& ray, Interval<T> range) const {
+  static const auto widest = singleRayQueries().front().occluder;
+  return widest(*this, ray, range);
+}
+
 template void Bvh<float>::closestHit(const Ray<float>&, Interval<float>, std::optional<Hit<float>>&) const;
 template void Bvh<double>::closestHit(const Ray<double>&, Interval<double>, std::optional<Hit<double>>&) const;
 template const Object<float>* Bvh<float>::occluder(const Ray<float>&, Interval<float>) const;
+template const std::vector<Bvh<float>::SingleRayQueries>& Bvh<float>::singleRayQueries();
+template const std::vector<Bvh<double>::SingleRayQueries>& Bvh<double>::singleRayQueries();
 template const Object<double>* Bvh<double>::occluder(const Ray<double>&, Interval<double>) const;
 
 }  // namespace rt

@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstring>
+#include <limits>
 #include <random>
 #include <set>
 #include <sstream>
@@ -122,6 +123,38 @@ TEMPLATE_TEST_CASE("the hierarchy finds exactly the hit a scan in file order fin
       REQUIRE(flat.occluded(ray, range) == tree.occluded(ray, range, &lastOccluder));
     }
   }
+}
+
+TEMPLATE_TEST_CASE("every implementation of one ray's queries gives the same answers", "[bvh]", float, double) {
+  using T = TestType;
+  const auto& queries = rt::Bvh<T>::singleRayQueries();
+  INFO(queries.size() << " implementations on this processor");
+  int hits = 0;
+  for (unsigned seed = 1; seed <= 10; ++seed) {
+    CAPTURE(seed);
+    std::mt19937 rng(seed);
+    const rt::Scene<T> tree(randomScene(rng, int(seed) * 20, seed % 2 ? 0.2 : 0.0), robustArithmetic<T>(),
+                            Hierarchy::Always);
+    const rt::Bvh<T>& bvh = *tree.hierarchy();
+    std::uniform_real_distribution<double> pos(-15, 15);
+    for (int i = 0; i < 2000; ++i) {
+      CAPTURE(i);
+      rt::Ray<T> ray{rt::Vec3<T>(pos(rng), pos(rng), pos(rng)), randomUnit<T>(rng)};
+      if (i % 5 == 0) ray.dir[i % 3] = T(0);  // parallel to a slab: the 0·∞ cases of the node test
+      const rt::Interval<T> range{T(0), i % 3 == 0 ? T(std::abs(pos(rng))) : std::numeric_limits<T>::infinity()};
+      std::optional<rt::Hit<T>> expected;
+      queries.back().closestHit(bvh, ray, range, expected);
+      const rt::Object<T>* expectedOccluder = queries.back().occluder(bvh, ray, range);
+      hits += expected.has_value();
+      for (const auto& query : queries) {
+        std::optional<rt::Hit<T>> hit;
+        query.closestHit(bvh, ray, range, hit);
+        requireSame(hit, expected);
+        REQUIRE(query.occluder(bvh, ray, range) == expectedOccluder);
+      }
+    }
+  }
+  CHECK(hits > 2000);  // of the 20,000 rays: the answers compared are not all misses
 }
 
 TEMPLATE_TEST_CASE("a packet of rays gets the answers each ray gets alone", "[bvh]", float, double) {

@@ -134,8 +134,19 @@ template <class T> class Bvh {
   // register, without a packet's bookkeeping. occluder() returns an object with a hit strictly inside `range`.
   void closestHit(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>>& best) const;
   const Object<T>* occluder(const Ray<T>& ray, Interval<T> range) const;
+  // The implementations of those two queries this processor can run, widest node test first (a wide node's
+  // boxes in one AVX2 register, or four at a time); closestHit() and occluder() use the first. All give the
+  // same answers.
+  struct SingleRayQueries {
+    void (*closestHit)(const Bvh&, const Ray<T>&, Interval<T>, std::optional<Hit<T>>&);
+    const Object<T>* (*occluder)(const Bvh&, const Ray<T>&, Interval<T>);
+  };
+  static const std::vector<SingleRayQueries>& singleRayQueries();
 
  private:
+  // The queries of one ray with the node test `Slabs` (bvh_single.cpp).
+  template <class Slabs> void closestHitWith(const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>>& best) const;
+  template <class Slabs> const Object<T>* occluderWith(const Ray<T>& ray, Interval<T> range) const;
   // The leaf (first, count) of a node's child tested for the ray's closest hit inside [tMin, tMax), as a
   // traversal does: tMax comes down to just above each closer hit found. True when it came down.
   [[gnu::always_inline]] bool closestInLeaf(uint32_t first, uint32_t count, const Ray<T>& ray, T tMin, T& tMax,
@@ -159,7 +170,8 @@ template <class T> class Bvh {
   }
   // The first object in leaf order of a grouped leaf (first, count) that the ray meets strictly inside
   // `range`; null when none does.
-  const Object<T>* occluderInGroups(uint32_t first, uint32_t count, const Ray<T>& ray, Interval<T> range) const {
+  [[gnu::always_inline]] const Object<T>* occluderInGroups(uint32_t first, uint32_t count, const Ray<T>& ray,
+                                                           Interval<T> range) const {
     const uint32_t end = first + groupsOf(count & kLeafCount);
     if (count & kSphereLeaf) {
       for (uint32_t j = first; j < end; ++j) {
