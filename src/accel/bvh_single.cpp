@@ -171,9 +171,12 @@ template <class T> const std::vector<typename Bvh<T>::SingleRayQueries>& Bvh<T>:
       __builtin_cpu_init();
       if (__builtin_cpu_supports("avx2")) {
         q.push_back({[](const Bvh& bvh, const Ray<T>& ray, Interval<T> range, std::optional<Hit<T>>& best)
-                         __attribute__((target("avx2"), flatten)) { bvh.closestHitWith<Slabs<T, 8>>(ray, range, best); },
-                     [](const Bvh& bvh, const Ray<T>& ray, Interval<T> range)
-                         __attribute__((target("avx2"), flatten)) { return bvh.occluderWith<Slabs<T, 8>>(ray, range); }});
+                         __attribute__((target("avx2"), flatten)) {
+                           bvh.closestHitWith<Slabs<T, 8>>(ray, range, best);
+                         },
+                     [](const Bvh& bvh, const Ray<T>& ray, Interval<T> range) __attribute__((target("avx2"), flatten)) {
+                       return bvh.occluderWith<Slabs<T, 8>>(ray, range);
+                     }});
       }
     }
 #endif
@@ -202,8 +205,8 @@ template <class T> const Object<T>* Bvh<T>::occluder(const Ray<T>& ray, Interval
 template void Bvh<float>::closestHit(const Ray<float>&, Interval<float>, std::optional<Hit<float>>&) const;
 template void Bvh<double>::closestHit(const Ray<double>&, Interval<double>, std::optional<Hit<double>>&) const;
 template const Object<float>* Bvh<float>::occluder(const Ray<float>&, Interval<float>) const;
+template const Object<double>* Bvh<double>::occluder(const Ray<double>&, Interval<double>) const;
 template const std::vector<Bvh<float>::SingleRayQueries>& Bvh<float>::singleRayQueries();
 template const std::vector<Bvh<double>::SingleRayQueries>& Bvh<double>::singleRayQueries();
-template const Object<double>* Bvh<double>::occluder(const Ray<double>&, Interval<double>) const;
 
 }  // namespace rt

@@ -140,7 +140,7 @@ TEMPLATE_TEST_CASE("every implementation of one ray's queries gives the same ans
     for (int i = 0; i < 2000; ++i) {
       CAPTURE(i);
       rt::Ray<T> ray{rt::Vec3<T>(pos(rng), pos(rng), pos(rng)), randomUnit<T>(rng)};
-      if (i % 5 == 0) ray.dir[i % 3] = T(0);  // parallel to a slab: the 0·∞ cases of the node test
+      if (i % 5 == 0) ray.dir[i % 3] = T(0);  // parallel to a slab: infinite slab distances in the node test
       const rt::Interval<T> range{T(0), i % 3 == 0 ? T(std::abs(pos(rng))) : std::numeric_limits<T>::infinity()};
       std::optional<rt::Hit<T>> expected;
       queries.back().closestHit(bvh, ray, range, expected);
