@@ -9,28 +9,9 @@
 #include <limits>
 #include <type_traits>
 
-#if defined(__x86_64__)
-#include <immintrin.h>
-#endif
-
 namespace rt {
 
 namespace {
-
-// The lanes of a comparison's result as bits, lane k as bit k: one instruction where the processor has it.
-template <class Mask> uint32_t bitsOf(const Mask& met) {
-  uint32_t bits = 0;
-  for (int k = 0; k < int(sizeof met / sizeof met[0]); ++k) bits |= uint32_t(met[k] & 1) << k;
-  return bits;
-}
-#if defined(__x86_64__)
-typedef int32_t Int4 __attribute__((vector_size(16)));
-typedef int32_t Int8 __attribute__((vector_size(32)));
-inline uint32_t bitsOf(const Int4& met) { return uint32_t(_mm_movemask_ps(reinterpret_cast<const __m128&>(met))); }
-[[gnu::target("avx2")]] inline uint32_t bitsOf(const Int8& met) {
-  return uint32_t(_mm256_movemask_ps(reinterpret_cast<const __m256&>(met)));
-}
-#endif
 
 // The ray as the node test uses it, each value in every one of a register's L lanes.
 template <class T, int L> struct Slabs {
@@ -68,7 +49,7 @@ template <class T, int L> struct Slabs {
       leave = tFar < leave ? tFar : leave;
     }
     std::memcpy(entry, &enter, sizeof enter);
-    return bitsOf((enter <= leave * kFarScale<T>) & (enter < inf));
+    return laneBits((enter <= leave * kFarScale<T>) & (enter < inf));
   }
 };
 
@@ -161,7 +142,7 @@ template <class Slabs>
 }
 
 // The AVX2 instances test a wide node's eight boxes in one register. Their target attribute lets the compiler
-// use AVX2 in all they inline; `flatten` inlines the AVX2 bitsOf too, which the traversal's own body (compiled
+// use AVX2 in all they inline; `flatten` inlines the AVX2 laneBits too, which the traversal's own body (compiled
 // for the baseline) cannot take in.
 template <class T> const std::vector<typename Bvh<T>::SingleRayQueries>& Bvh<T>::singleRayQueries() {
   static const std::vector<SingleRayQueries> supported = [] {

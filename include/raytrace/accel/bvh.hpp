@@ -45,11 +45,11 @@ template <class T> class Bvh {
   // A node of the flattened W-wide tree (Wald et al., "Getting Rid of Packets", 2008; Dammertz et al.,
   // "Shallow Bounding Volume Hierarchies", 2008). Child k < size() is the node nodes_[first[k]] (wideNodes_ in
   // the wide tree; never the root, 0) when count[k] = 0, else a leaf of count[k] & kLeafCount objects:
-  // objects_[first[k], ...) tested one by one, or, with kTriangleLeaf or kSphereLeaf set in count[k], the groups
-  // triangleGroups_[first[k], ...) or sphereGroups_[first[k], ...) (leafObjects() tells which objects). An unused child has first = count = 0
-  // and a box at +∞ on every axis, which no ray enters: the slab test puts the entry at +∞ or the exit at −∞.
-  // So the node tests need no count of children, and a 4-wide node of floats is 128 bytes, two cache lines
-  // (Embree's 4-wide nodes are the same size).
+  // objects_[first[k], ...) tested one by one, or, with kTriangleLeaf or kSphereLeaf set in count[k], the
+  // groups triangleGroups_[first[k], ...) or sphereGroups_[first[k], ...) (leafObjects() tells which objects).
+  // An unused child has first = count = 0 and a box at +∞ on every axis, which no ray enters: the slab test
+  // puts the entry at +∞ or the exit at −∞. So the node tests need no count of children, and a 4-wide node of
+  // floats is 128 bytes, two cache lines (Embree's 4-wide nodes are the same size).
   template <int W> struct alignas(64) NodeOf {
     T lo[3][W], hi[3][W];  // [axis][child]
     uint32_t first[W]{}, count[W]{};
@@ -70,7 +70,7 @@ template <class T> class Bvh {
   };
   using Node = NodeOf<kWidth>;
   // The same tree with up to 8 children a node, which the queries of one ray walk (bvh_single.cpp): the same
-  // leaves in fewer steps down, a node's boxes tested four at a time. Packets keep the 4-wide tree, which
+  // leaves in fewer steps down, a node's eight boxes tested at once with AVX2. Packets keep the 4-wide tree, which
   // their rays share a register of (8 children a node cost them 15–20 %, docs/performance.md); Embree builds
   // 8-wide trees on processors with AVX.
   static constexpr int kWideWidth = 8;
