@@ -1,7 +1,7 @@
 # The layer rule (docs/architecture.md): a file under src/<folder>/ or include/raytrace/<folder>/ may include
 # "raytrace/<other>/..." only when <other> is its own folder or one listed before it in LAYERS.
 # Run as: cmake -DROOT=<repository> -P tests/layers.cmake
-set(LAYERS util geometry scene parse shapes accel image render app)
+set(LAYERS util geometry surface shapes scene parse accel image render app)
 file(GLOB_RECURSE files RELATIVE ${ROOT} ${ROOT}/src/* ${ROOT}/include/raytrace/*)
 set(violations "")
 foreach(path IN LISTS files)

@@ -1,78 +1,16 @@
 #include "raytrace/accel/scene.hpp"
 
-#include <cmath>
 #include <optional>
-#include <type_traits>
 
-#include "raytrace/shapes/box.hpp"
-#include "raytrace/shapes/cone.hpp"
-#include "raytrace/shapes/cylinder.hpp"
 #include "raytrace/util/parallel.hpp"
-#include "raytrace/shapes/plane.hpp"
-#include "raytrace/shapes/sphere.hpp"
-#include "raytrace/shapes/transformed.hpp"
-#include "raytrace/shapes/triangle.hpp"
+#include "raytrace/shapes/make_object.hpp"
 
 namespace rt {
-
-namespace {
-
-template <class T>
-std::unique_ptr<Object<T>> makeObject(const ObjectDesc& desc, const Arithmetic& arithmetic, int id) {
-  const Material& m = desc.material;
-  return std::visit(
-      [&](const auto& s) -> std::unique_ptr<Object<T>> {
-        using S = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<S, SphereDesc>) {
-          return std::make_unique<Sphere<T>>(Vec3<T>(s.center), T(s.radius), arithmetic.sphere, m, id);
-        } else if constexpr (std::is_same_v<S, PlaneDesc>) {
-          return std::make_unique<Plane<T>>(Vec3<T>(glm::normalize(s.normal)), T(s.distance), m, id);
-        } else if constexpr (std::is_same_v<S, TriangleDesc>) {
-          return std::make_unique<Triangle<T>>(Vec3<T>(s.a), Vec3<T>(s.b), Vec3<T>(s.c), m, id);
-        } else if constexpr (std::is_same_v<S, BoxDesc>) {
-          return std::make_unique<Box<T>>(Vec3<T>(s.min), Vec3<T>(s.max), m, id);
-        } else if constexpr (std::is_same_v<S, ConeDesc>) {
-          return std::make_unique<Cone<T>>(Vec3<T>(s.base), T(s.baseRadius), Vec3<T>(s.cap), T(s.capRadius), m, id);
-        } else {
-          static_assert(std::is_same_v<S, CylinderDesc>, "every ShapeDesc kind must be built here");
-          return std::make_unique<Cylinder<T>>(Vec3<T>(s.base), Vec3<T>(s.cap), T(s.radius), m, id);
-        }
-      },
-      desc.shape);
-}
-
-// "Model no more than a scene needs": a sphere moved by a similarity (any mix of rotations, uniform scales and
-// translations, as on the thousands of spheres of balls2 and gnarly) is still a sphere, centred at M·c with
-// radius s·r. Folding the matrix into it saves the two matrix products per test and keeps its bounds tight.
-// The similarity test is LᵀL = s²·I for the linear part L, up to the rounding of the rotation matrices.
-// Nothing when there is nothing to fold: not a sphere, or not moved, or not by a similarity.
-std::optional<ObjectDesc> foldSimilarityIntoSphere(const ObjectDesc& desc) {
-  const auto* sphere = std::get_if<SphereDesc>(&desc.shape);
-  if (!sphere || desc.transforms.empty()) return std::nullopt;
-  const glm::dmat4 worldFromObject = desc.worldFromObject();
-  const glm::dmat3 linear(worldFromObject);
-  const glm::dmat3 gram = glm::transpose(linear) * linear;
-  const double s2 = gram[0][0];
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      if (std::abs(gram[i][j] - (i == j ? s2 : 0.0)) > 1e-12 * s2) return std::nullopt;
-    }
-  }
-  ObjectDesc folded = desc;
-  folded.shape = SphereDesc{glm::dvec3(worldFromObject * glm::dvec4(sphere->center, 1.0)),
-                            std::sqrt(s2) * sphere->radius};
-  folded.transforms.clear();
-  return folded;
-}
-
-}  // namespace
 
 template <class T>
 Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy hierarchy, int threads)
     : desc_(desc), arithmetic_(arithmetic) {
   for (const LightDesc& l : desc.lights) lights_.push_back(Light<T>{Vec3<T>(l.position), l.color});
-  // The course tier does what its reference does: every transformed object is intersected on the transformed
-  // ray, with the matrix composed in T from the file's steps.
   const bool course = arithmetic.tier == Tier::Course;
   const size_t n = desc.objects.size();
   objects_.resize(n);
@@ -81,15 +19,7 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
   std::vector<char> finite(n);  // not vector<bool>, whose neighbouring entries share words the threads write
   parallelForChunks(n, kObjectChunk, threads, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
-      const int id = int(i) + 1;
-      const std::optional<ObjectDesc> folded = course ? std::nullopt : foldSimilarityIntoSphere(desc.objects[i]);
-      const ObjectDesc& o = folded ? *folded : desc.objects[i];
-      auto object = makeObject<T>(o, arithmetic, id);
-      const Mat4<T> m = course ? composeTransforms<T>(o.transforms) : Mat4<T>(o.worldFromObject());
-      // An identity transform (`translate <0,0,0>`) costs nothing: the shape is used as it is.
-      if (m != Mat4<T>(T(1))) {
-        object = std::make_unique<Transformed<T>>(std::move(object), m, o.material, id, course);
-      }
+      auto object = makeObject<T>(desc.objects[i], arithmetic.sphere, int(i) + 1, course);
       const auto box = object->bounds();
       const auto finite3 = [](const Vec3<T>& v) { return !glm::any(glm::isinf(v)) && !glm::any(glm::isnan(v)); };
       finite[i] = box && finite3(box->min) && finite3(box->max);

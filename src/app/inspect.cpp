@@ -107,9 +107,8 @@ int firsthit(const Invocation& inv, std::ostream& out) {
 
 // The hierarchy the scene's bounded objects get, printed whether or not renders would use it.
 int printbvh(const Invocation& inv, std::ostream& out) {
-  const Arithmetic arithmetic = chooseArithmetic(inv.scene, inv.options.arithmetic, inv.view());
-  return withPrecision(arithmetic.tier, [&](auto tag) {
-    const Scene<decltype(tag)> scene(inv.scene, arithmetic, Hierarchy::Always);
+  const View grid = eyeRayGrid(inv.width, inv.height, inv.options);
+  return withSceneAlone(inv.scene, grid, inv.options, Hierarchy::Always, [&](const auto& scene) {
     const size_t bounded = scene.hierarchy()->objects().size();
     out << scene.objects().size() << " objects: " << bounded << " bounded, "
         << scene.objects().size() - bounded << " unbounded (tested one by one). Renders use the hierarchy from "

@@ -1,36 +1,11 @@
 #include "raytrace/app/report.hpp"
 
-#include <type_traits>
 
 #include "raytrace/util/format.hpp"
 
 namespace rt {
 
 namespace {
-
-void printShape(std::ostream& out, const ShapeDesc& shape) {
-  std::visit(
-      [&](const auto& s) {
-        using S = std::decay_t<decltype(s)>;
-        if constexpr (std::is_same_v<S, SphereDesc>) {
-          out << "- Center: " << braces(s.center) << "\n- Radius: " << fixed4(s.radius) << "\n";
-        } else if constexpr (std::is_same_v<S, PlaneDesc>) {
-          out << "- Normal: " << braces(s.normal) << "\n- Distance: " << fixed4(s.distance) << "\n";
-        } else if constexpr (std::is_same_v<S, TriangleDesc>) {
-          out << "- Vertices[0]: " << braces(s.a) << "\n- Vertices[1]: " << braces(s.b)
-              << "\n- Vertices[2]: " << braces(s.c) << "\n";
-        } else if constexpr (std::is_same_v<S, BoxDesc>) {
-          out << "- Min: " << braces(s.min) << "\n- Max: " << braces(s.max) << "\n";
-        } else if constexpr (std::is_same_v<S, ConeDesc>) {
-          out << "- Center 1: " << braces(s.base) << "\n- Radius 1: " << fixed4(s.baseRadius)
-              << "\n- Center 2: " << braces(s.cap) << "\n- Radius 2: " << fixed4(s.capRadius) << "\n";
-        } else {
-          out << "- Base: " << braces(s.base) << "\n- Cap: " << braces(s.cap) << "\n- Radius: " << fixed4(s.radius)
-              << "\n";
-        }
-      },
-      shape);
-}
 
 // The material in the file's own terms: POV's pigment and finish scalars (§a.1); a .cli `surface`'s colours,
 // which no scalar can stand for, with its power and reflection coefficient.
@@ -61,7 +36,7 @@ void printSceneInfo(std::ostream& out, const SceneDesc& scene) {
   for (size_t i = 0; i < scene.objects.size(); ++i) {
     const ObjectDesc& o = scene.objects[i];
     out << "\nObject[" << i << "]:\n- Type: " << shapeName(o.shape) << "\n";
-    printShape(out, o.shape);
+    std::visit([&](const auto& s) { s.describe(out); }, o.shape);
     printMaterial(out, o, scene.language);
   }
 }

@@ -60,8 +60,7 @@ class PovParser {
         ++cameras_;
       } else if (t.text == "light_source") {
         parseLight(t);
-      } else if (t.text == "sphere" || t.text == "plane" || t.text == "triangle" || t.text == "box" ||
-                 t.text == "cone" || t.text == "cylinder") {
+      } else if (isShapeKeyword(t.text)) {
         parseObject(t);
       } else {
         throw ParseError(t.loc, "unknown keyword " + t.quoted());
@@ -141,11 +140,6 @@ class PovParser {
     return v;
   }
 
-  glm::dvec3 vec3(const char* what) {
-    const auto v = vector(3, 3, what);
-    return {v[0], v[1], v[2]};
-  }
-
   // [color|colour] rgb <r,g,b> | rgbf <r,g,b[,f]>; a missing filter is 0, as POV-Ray reads a 3-vector.
   // POV-Ray 3.7 also reads `rgb <r,g,b,f>`, with the fourth value as the filter and a "suspicious
   // expression" warning (marble2.pov relies on it); so do we.
@@ -206,59 +200,7 @@ class PovParser {
   }
 
   void parseObject(const Token& keyword) {
-    const std::string_view kind = keyword.text;
-    expect('{', "after " + keyword.quoted());
-    ObjectDesc obj;
-    obj.loc = keyword.loc;
-    if (kind == "sphere") {
-      const glm::dvec3 center = vec3("the sphere center");
-      expect(',', "after the sphere center");
-      obj.shape = SphereDesc{center, positive("the sphere radius")};
-    } else if (kind == "plane") {
-      const SourceLoc at = peek().loc;
-      const glm::dvec3 normal = vec3("the plane normal");
-      if (normal == glm::dvec3(0)) throw ParseError(at, "the plane normal is zero");
-      expect(',', "after the plane normal");
-      obj.shape = PlaneDesc{normal, numberFor("the plane distance")};
-    } else if (kind == "triangle") {
-      TriangleDesc tri;
-      tri.a = vec3("the first triangle vertex");
-      expect(',', "after the first triangle vertex");
-      tri.b = vec3("the second triangle vertex");
-      expect(',', "after the second triangle vertex");
-      tri.c = vec3("the third triangle vertex");
-      obj.shape = tri;
-    } else if (kind == "box") {
-      BoxDesc box;
-      box.min = vec3("the first box corner");
-      expect(',', "after the first box corner");
-      box.max = vec3("the second box corner");
-      obj.shape = box;
-    } else if (kind == "cone") {
-      ConeDesc cone;
-      const SourceLoc at = peek().loc;
-      cone.base = vec3("the cone base");
-      expect(',', "after the cone base");
-      cone.baseRadius = nonNegative("the cone base radius");
-      expect(',', "after the cone base radius");
-      cone.cap = vec3("the cone cap");
-      expect(',', "after the cone cap");
-      cone.capRadius = nonNegative("the cone cap radius");
-      if (cone.base == cone.cap) throw ParseError(at, "the cone's base and cap centres are the same point");
-      if (cone.baseRadius == 0 && cone.capRadius == 0) throw ParseError(at, "both cone radii are zero");
-      obj.shape = cone;
-    } else {
-      CylinderDesc cyl;
-      const SourceLoc at = peek().loc;
-      cyl.base = vec3("the cylinder base");
-      expect(',', "after the cylinder base");
-      cyl.cap = vec3("the cylinder cap");
-      expect(',', "after the cylinder cap");
-      cyl.radius = positive("the cylinder radius");
-      if (cyl.base == cyl.cap) throw ParseError(at, "the cylinder's base and cap centres are the same point");
-      obj.shape = cyl;
-    }
-    parseModifiers(obj, keyword);
+    ObjectDesc obj = readObject(keyword);
     // A file of tiny objects can outgrow memory (limits.hpp). A part stands for its share of the file.
     const std::uint64_t n = scene_.objects.size();
     const std::string shortage = objectMemoryShortage(n * parts_, (n + 1) * parts_, "a scene");
@@ -266,6 +208,17 @@ class PovParser {
     scene_.objects.push_back(std::move(obj));
   }
 
+ public:
+  // The calls a shape kind's read() makes (shapes/kind.hpp).
+  glm::dvec3 vec3(const char* what) {
+    const auto v = vector(3, 3, what);
+    return {v[0], v[1], v[2]};
+  }
+  double number(const char* what) { return numberFor(what); }
+  void comma(const char* after) { expect(',', after); }
+  SourceLoc here() const { return peek().loc; }
+  bool objectNext() const { return peek().kind == Token::Kind::Word && isShapeKeyword(peek().text); }
+  ObjectDesc object() { return readObject(next()); }
   double positive(const char* what) {
     const SourceLoc at = peek().loc;
     const double v = numberFor(what);
@@ -277,6 +230,30 @@ class PovParser {
     const double v = numberFor(what);
     if (v < 0) throw ParseError(at, std::string(what) + " must not be negative, found " + num(v));
     return v;
+  }
+ private:
+
+  // An object, from the '{' after its keyword to its closing brace.
+  ObjectDesc readObject(const Token& keyword) {
+    expect('{', "after " + keyword.quoted());
+    ObjectDesc obj;
+    obj.loc = keyword.loc;
+    obj.shape = *readShape(keyword.text, *this);
+    parseModifiers(obj, keyword);
+    if (auto* csg = std::get_if<CsgDesc>(&obj.shape); csg && obj.textured) {
+      for (ObjectDesc& child : csg->children) inheritTexture(child, obj);
+    }
+    return obj;
+  }
+
+  // As POV-Ray does: a CSG child without a texture of its own takes the group's, and so do its own children.
+  static void inheritTexture(ObjectDesc& child, const ObjectDesc& group) {
+    if (child.textured) return;
+    child.material = group.material;
+    child.finish = group.finish;
+    if (auto* csg = std::get_if<CsgDesc>(&child.shape)) {
+      for (ObjectDesc& grandchild : csg->children) inheritTexture(grandchild, group);
+    }
   }
 
   // pigment, finish and transforms, in any order and repeated, up to the object's closing brace.
@@ -290,8 +267,10 @@ class PovParser {
         expect('{', "after 'pigment'");
         color(obj.material.pigment, obj.material.filter, "pigment");
         expect('}', "to close the pigment");
+        obj.textured = true;
       } else if (t.text == "finish") {
         parseFinish(finish, t);
+        obj.textured = true;
       } else if (t.text == "translate") {
         obj.transforms.push_back({TransformStep::Kind::Translate, vec3("the translation")});
       } else if (t.text == "scale") {

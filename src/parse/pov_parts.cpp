@@ -35,14 +35,10 @@ int lineEnds(std::string_view text) {
 // Whether a statement keyword opens the line that starts at `at`, after blanks.
 bool statementStartsLine(std::string_view text, size_t at) {
   while (at < text.size() && (text[at] == ' ' || text[at] == '\t')) ++at;
-  for (const std::string_view keyword :
-       {"camera", "light_source", "sphere", "plane", "triangle", "box", "cone", "cylinder"}) {
-    if (text.compare(at, keyword.size(), keyword) == 0) {
-      const size_t after = at + keyword.size();
-      return after == text.size() || !(std::isalnum(static_cast<unsigned char>(text[after])) || text[after] == '_');
-    }
-  }
-  return false;
+  size_t end = at;
+  while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_')) ++end;
+  const std::string_view word = text.substr(at, end - at);
+  return word == "camera" || word == "light_source" || isShapeKeyword(word);
 }
 
 }  // namespace

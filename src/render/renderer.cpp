@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <mutex>
 #include <optional>
+#include <type_traits>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -10,6 +11,7 @@
 #include "raytrace/util/progress.hpp"
 #include "raytrace/util/stopwatch.hpp"
 #include "raytrace/render/irradiance_prepass.hpp"
+#include "raytrace/render/scene_setup.hpp"
 #include "raytrace/render/tracer.hpp"
 
 namespace rt {
@@ -26,13 +28,9 @@ constexpr int kTile = 32;
 template <class Store>
 void renderRows(const SceneDesc& desc, int width, int height, const Region& region, const RenderOptions& options,
                 const RenderMonitor& monitor, const Store& store) {
-  const Arithmetic arithmetic =
-      chooseArithmetic(desc, options.arithmetic, View{width * options.samples, height * options.samples});
-  withPrecision(arithmetic.tier, [&](auto tag) {
-    using T = decltype(tag);
-    Stopwatch watch;
-    const Scene<T> scene(desc, arithmetic, options.hierarchy, options.threads);
-    const Camera<T> camera(desc.camera, width, height);
+  Stopwatch watch;
+  withScene(desc, width, height, options, [&](const auto& scene, const auto& camera) {
+    using T = typename std::decay_t<decltype(scene)>::Real;
     Tracer<T> tracer(scene, options);
     const double build = watch.lap();
     // Every pixel is computed on its own from constant state (the tracers' shadow caches change the order of

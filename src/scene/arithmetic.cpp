@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <type_traits>
 
 namespace rt {
 
@@ -16,6 +15,13 @@ bool courseTierSound(const SceneDesc& scene, const SceneScale& s, const TierDoma
          d.offsetRefractionPixels <= kVisiblePixels && smallestGap(scene) >= 2 * kCourseEpsilon;
 }
 
+// Whether float's error is bounded, and tested, on every kind of shape in the scene (shapes/kind.hpp).
+bool floatErrorBounded(const SceneDesc& scene) {
+  return std::all_of(scene.objects.begin(), scene.objects.end(), [](const ObjectDesc& o) {
+    return std::visit([](const auto& k) { return k.kFloatErrorBound; }, o.shape);
+  });
+}
+
 }  // namespace
 
 Arithmetic chooseArithmetic(const SceneDesc& scene, Arithmetic requested, View view) {
@@ -26,7 +32,10 @@ Arithmetic chooseArithmetic(const SceneDesc& scene, Arithmetic requested, View v
   const TierDomain d = tierDomain(scene, view);
   if (a.tier == Tier::Auto) {
     const bool floatSound = r <= 1e4 && d.robustPixels <= kVisiblePixels;
-    a.tier = courseTierSound(scene, s, d) ? Tier::Course : floatSound ? Tier::Float : Tier::Double;
+    a.tier = !floatErrorBounded(scene)       ? Tier::Double
+             : courseTierSound(scene, s, d) ? Tier::Course
+             : floatSound                   ? Tier::Float
+                                            : Tier::Double;
   }
   if (a.sphere == SphereMethod::Auto) {
     const bool textbook =

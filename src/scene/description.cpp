@@ -2,12 +2,6 @@
 
 namespace rt {
 
-const char* shapeName(const ShapeDesc& shape) {
-  static const char* const names[] = {"Sphere", "Plane", "Triangle", "Box", "Cone", "Cylinder"};
-  static_assert(std::variant_size_v<ShapeDesc> == 6);
-  return names[shape.index()];
-}
-
 SceneDesc sceneAt(const SceneDesc& whole, const WriteDesc& write) {
   SceneDesc scene;
   scene.file = whole.file;

@@ -1,7 +1,6 @@
 #include "raytrace/scene/tier_domain.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -79,30 +78,19 @@ double planeShadowPixels(const SceneDesc& scene, const Material& m, glm::dvec3 n
   return worst;
 }
 
-// The six faces of a box, each sampled on a 5 × 5 grid of points, or a triangle.
+// The flat faces an object's kind gives (shapes/kind.hpp): a parallelogram sampled on a 5 × 5 grid of
+// points, a triangle at its corners and edge midpoints (a mesh has many small triangles: that is enough).
 double flatShadowPixels(const SceneDesc& scene, const ObjectDesc& o, const glm::dmat4& m, double theta) {
-  std::array<std::array<glm::dvec3, 3>, 6> faces;  // corner, edge u, edge v
-  size_t count = 0;
-  if (const auto* b = std::get_if<BoxDesc>(&o.shape)) {
-    const glm::dvec3 e = b->max - b->min;
-    const glm::dvec3 x(e.x, 0, 0), y(0, e.y, 0), z(0, 0, e.z);
-    faces = {{{b->min, y, z}, {b->min + x, y, z}, {b->min, x, z}, {b->min + y, x, z}, {b->min, x, y}, {b->min + z, x, y}}};
-    count = 6;
-  } else if (const auto* t = std::get_if<TriangleDesc>(&o.shape)) {
-    faces[0] = {t->a, t->b - t->a, t->c - t->a};
-    count = 1;
-  }
-  // A mesh has many small triangles: its corners and edge midpoints are enough.
-  const bool triangle = std::holds_alternative<TriangleDesc>(o.shape);
-  const int steps = triangle ? 2 : 4;
+  const FlatFaces faces = std::visit([](const auto& k) { return k.flatFaces(); }, o.shape);
   double worst = 0;
-  for (size_t k = 0; k < count; ++k) {
-    const auto& f = faces[k];
-    const glm::dvec3 normal = normalToWorld(m, glm::cross(f[1], f[2]));
+  for (size_t k = 0; k < faces.count; ++k) {
+    const FlatFace& f = faces.face[k];
+    const int steps = f.triangle ? 2 : 4;
+    const glm::dvec3 normal = normalToWorld(m, glm::cross(f.u, f.v));
     if (glm::any(glm::isnan(normal))) continue;
     for (int i = 0; i <= steps; ++i) {
-      for (int j = 0; j <= steps - (triangle ? i : 0); ++j) {
-        const glm::dvec3 p = toWorld(m, f[0] + f[1] * (double(i) / steps) + f[2] * (double(j) / steps));
+      for (int j = 0; j <= steps - (f.triangle ? i : 0); ++j) {
+        const glm::dvec3 p = toWorld(m, f.corner + f.u * (double(i) / steps) + f.v * (double(j) / steps));
         worst = std::max(worst, shadowShiftPixels(scene, o.material, {p, normal}, theta));
       }
     }

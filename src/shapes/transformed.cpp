@@ -28,8 +28,7 @@ std::optional<Hit<T>> Transformed<T>::intersect(const Ray<T>& ray, Interval<T> r
     hit->point = Vec3<T>(worldFromObject_ * glm::vec<4, T, glm::defaultp>(hit->point, T(1)));
   }
   hit->normal = glm::normalize(worldFromObjectNormal_ * hit->normal);
-  hit->object = this;
-  return hit;
+  return hit;  // the inner object's hit: a CSG child's material stays its own
 }
 
 // The world box around the eight transformed corners of the object-space box.

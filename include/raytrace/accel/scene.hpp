@@ -19,6 +19,7 @@ template <class T> struct Light {
 
 template <class T> class Scene {
  public:
+  using Real = T;
   // `arithmetic` must be resolved (no Auto) and match T; see chooseArithmetic(). `threads` build the hierarchy;
   // the scene is the same for any number.
   Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy hierarchy = Hierarchy::Auto, int threads = 1);

@@ -6,11 +6,9 @@
 #include <ostream>
 #include <string>
 
-#include "raytrace/accel/scene.hpp"
 #include "raytrace/image/region.hpp"
-#include "raytrace/render/camera.hpp"
 #include "raytrace/render/renderer.hpp"
-#include "raytrace/scene/arithmetic.hpp"
+#include "raytrace/render/scene_setup.hpp"
 #include "raytrace/scene/description.hpp"
 
 namespace rt {
@@ -32,20 +30,11 @@ struct Invocation {
   std::ostream* errors = nullptr;    // where a command reports a failure it carries on after (a .cli write)
   bool writeAnywhere = false;        // --allow-write-anywhere: a .cli write may leave the current folder
   double loadSeconds = 0;         // the reading of the scene file
-
-  // The eye rays' grid the arithmetic is chosen for; commands without an image size get the default view.
-  View view() const { return width > 0 && height > 0 ? View{width, height} : View{}; }
 };
 
-// Runs f(scene, camera) at the precision the scene needs.
+// Runs f(scene, camera) at the precision the scene needs (render/scene_setup.hpp).
 template <class F> auto withScene(const Invocation& inv, F&& f) {
-  const Arithmetic arithmetic = chooseArithmetic(inv.scene, inv.options.arithmetic, inv.view());
-  return withPrecision(arithmetic.tier, [&](auto tag) {
-    using T = decltype(tag);
-    const Scene<T> scene(inv.scene, arithmetic, inv.options.hierarchy, inv.options.threads);
-    const Camera<T> camera(inv.scene.camera, inv.width, inv.height);
-    return f(scene, camera);
-  });
+  return withScene(inv.scene, inv.width, inv.height, inv.options, std::forward<F>(f));
 }
 
 // The image commands (image_commands.cpp).

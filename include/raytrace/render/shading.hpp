@@ -4,7 +4,7 @@
 
 #include <optional>
 
-#include "raytrace/scene/material.hpp"
+#include "raytrace/surface/material.hpp"
 #include "raytrace/geometry/math.hpp"
 
 namespace rt {

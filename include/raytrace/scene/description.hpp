@@ -3,14 +3,13 @@
 #pragma once
 
 #include <string>
-#include <variant>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "raytrace/util/error.hpp"
-#include "raytrace/scene/material.hpp"
-#include "raytrace/geometry/transform.hpp"
+#include "raytrace/shapes/shape_desc.hpp"
+#include "raytrace/surface/material.hpp"
 
 namespace rt {
 
@@ -31,28 +30,6 @@ struct CameraDesc {
 struct LightDesc {
   glm::dvec3 position{0};
   Color color{1};
-};
-
-struct SphereDesc { glm::dvec3 center; double radius; };
-struct PlaneDesc { glm::dvec3 normal; double distance; };  // n·p = distance
-struct TriangleDesc { glm::dvec3 a, b, c; };
-struct BoxDesc { glm::dvec3 min, max; };
-struct ConeDesc { glm::dvec3 base; double baseRadius; glm::dvec3 cap; double capRadius; };
-struct CylinderDesc { glm::dvec3 base, cap; double radius; };  // capped at both ends
-
-using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc>;
-
-struct ObjectDesc {
-  ShapeDesc shape;
-  Material material;
-  Finish finish;  // POV: as written, for sceneinfo
-  SourceLoc loc;  // where the object starts, for messages
-  // The POV transforms as written (§c.10), in file order; a scene built in code gives its own the same way.
-  std::vector<TransformStep> transforms;
-
-  // The transforms composed in double. Made when asked, not stored: most objects have none, and the matrix
-  // would be a third of every object's description, to fill, copy and page in.
-  glm::dmat4 worldFromObject() const { return composeTransforms<double>(transforms); }
 };
 
 // How a scene language wants its pictures made: the conventions that reproduce each course's reference
@@ -94,8 +71,5 @@ struct SceneDesc {
 
 // The scene `write` shows (see WriteDesc), without the writes.
 SceneDesc sceneAt(const SceneDesc& whole, const WriteDesc& write);
-
-// The type name the course prints ("Sphere", "Plane", …).
-const char* shapeName(const ShapeDesc& shape);
 
 }  // namespace rt

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "raytrace/scene/description.hpp"
+#include "raytrace/shapes/scale.hpp"
 
 namespace rt {
 
@@ -18,12 +19,5 @@ SceneScale sceneScale(const SceneDesc& scene);
 // The scene's precision budget R = extent ÷ smallest feature (the extent alone when there is no feature).
 double precisionBudget(const SceneDesc& scene);
 double precisionBudget(const SceneScale& scale);
-
-// How much a transform can stretch (largest column norm) and shrink (smallest column norm) lengths. Enough
-// for a budget: it bounds the world-space extents by a small factor.
-struct Stretch {
-  double most, least;
-};
-Stretch stretch(const glm::dmat4& m);
 
 }  // namespace rt

@@ -28,6 +28,14 @@ template <class T> class Axial {
 
   const Vec3<T>& axis() const { return axis_; }
   T height() const { return height_; }
+  // Whether `point` lies strictly between the end planes, less than `radius(y)` from the axis at its height y.
+  template <class Radius> bool inside(const Vec3<T>& point, const Radius& radius) const {
+    const Vec3<T> p = point - base_;
+    const T y = glm::dot(p, axis_);
+    if (!(y > T(0) && y < height_)) return false;
+    const T r = radius(y);
+    return glm::dot(p, p) - y * y < r * r;
+  }
 
   // The point at height y with the radial offset `across` (perpendicular to the axis).
   Vec3<T> at(T y, const Vec3<T>& across) const { return base_ + y * axis_ + across; }

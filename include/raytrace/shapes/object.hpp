@@ -7,7 +7,7 @@
 #include "raytrace/geometry/aabb.hpp"
 #include "raytrace/geometry/hit.hpp"
 #include "raytrace/geometry/interval.hpp"
-#include "raytrace/scene/material.hpp"
+#include "raytrace/surface/material.hpp"
 #include "raytrace/geometry/ray.hpp"
 
 namespace rt {
@@ -56,6 +56,10 @@ template <class T> class Object {
     static_cast<void>(point);
     return hit.normal;
   }
+
+  // Whether `point` lies strictly inside the solid: what CSG keeps or cuts away (shapes/csg). A shape that
+  // encloses nothing (a triangle) has no inside.
+  virtual bool inside(const Vec3<T>& point) const = 0;
 
   // World-space bounds, or nothing for unbounded shapes (planes), which stay outside any hierarchy.
   virtual std::optional<Aabb<T>> bounds() const = 0;

@@ -1,9 +1,43 @@
 #pragma once
 
+#include <algorithm>
+#include <memory>
+#include <ostream>
+#include <string_view>
+
 #include "raytrace/geometry/roots.hpp"
+#include "raytrace/shapes/kind.hpp"
 #include "raytrace/shapes/object.hpp"
+#include "raytrace/util/format.hpp"
 
 namespace rt {
+
+template <class T> class Sphere;
+
+// What a file says of a sphere: `sphere { center, radius }`.
+struct SphereDesc {
+  glm::dvec3 center;
+  double radius;
+
+  static bool named(std::string_view word) { return word == "sphere"; }
+  static const char* name() { return "Sphere"; }
+  static constexpr bool kFloatErrorBound = true;
+
+  template <class Reader> static SphereDesc read(Reader& r, std::string_view) {
+    const glm::dvec3 center = r.vec3("the sphere center");
+    r.comma("after the sphere center");
+    return {center, r.positive("the sphere radius")};
+  }
+  double smallestFeature() const { return radius; }
+  Ball boundingBall() const { return {center, radius}; }
+  FlatFaces flatFaces() const { return {}; }  // curved: its own checks (scene/tier_domain)
+  void describe(std::ostream& out) const {
+    out << "- Center: " << braces(center) << "\n- Radius: " << fixed4(radius) << "\n";
+  }
+  template <class T> std::unique_ptr<Object<T>> make(const ObjectBuild& b) const {
+    return std::make_unique<Sphere<T>>(Vec3<T>(center), T(radius), b.sphere, b.material, b.id);
+  }
+};
 
 template <class T> class Sphere final : public Object<T> {
  public:
@@ -15,7 +49,8 @@ template <class T> class Sphere final : public Object<T> {
   uint32_t occludes(const Ray<T>* rays, const Interval<T>* ranges, uint32_t open) const override;
   Vec3<T> normalAt(const Vec3<T>& point, const Hit<T>& hit) const override;
   std::optional<Aabb<T>> bounds() const override;
-  const char* name() const override { return "Sphere"; }
+  bool inside(const Vec3<T>& p) const override { return glm::dot(p - center_, p - center_) < radius_ * radius_; }
+  const char* name() const override { return SphereDesc::name(); }
 
   // The tests of intersect() and occludes() on the sphere (center, radius) by the method chosen for the scene,
   // inline so that a hierarchy testing spheres from arrays of its own (accel/) gets the same bits. nearestRoot:

@@ -16,6 +16,9 @@ template <class T> class Transformed final : public Object<T> {
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
   std::optional<Aabb<T>> bounds() const override;
+  bool inside(const Vec3<T>& p) const override {
+    return inner_->inside(Vec3<T>(objectFromWorld_ * glm::vec<4, T, glm::defaultp>(p, T(1))));
+  }
   const char* name() const override { return inner_->name(); }
 
  private:

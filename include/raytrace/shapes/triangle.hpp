@@ -1,8 +1,56 @@
 #pragma once
 
+#include <algorithm>
+#include <memory>
+#include <ostream>
+#include <string_view>
+
+#include "raytrace/shapes/kind.hpp"
 #include "raytrace/shapes/object.hpp"
+#include "raytrace/util/format.hpp"
 
 namespace rt {
+
+template <class T> class Triangle;
+
+// What a file says of a triangle: `triangle { a, b, c }`.
+struct TriangleDesc {
+  glm::dvec3 a, b, c;
+
+  static bool named(std::string_view word) { return word == "triangle"; }
+  static const char* name() { return "Triangle"; }
+  static constexpr bool kFloatErrorBound = true;
+
+  template <class Reader> static TriangleDesc read(Reader& r, std::string_view) {
+    TriangleDesc t;
+    t.a = r.vec3("the first triangle vertex");
+    r.comma("after the first triangle vertex");
+    t.b = r.vec3("the second triangle vertex");
+    r.comma("after the second triangle vertex");
+    t.c = r.vec3("the third triangle vertex");
+    return t;
+  }
+  double smallestFeature() const {
+    return std::min({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+  }
+  Ball boundingBall() const {
+    const glm::dvec3 m = (a + b + c) / 3.0;
+    return {m, std::max({glm::length(a - m), glm::length(b - m), glm::length(c - m)})};
+  }
+  FlatFaces flatFaces() const {
+    FlatFaces f;
+    f.face[0] = {a, b - a, c - a, true};
+    f.count = 1;
+    return f;
+  }
+  void describe(std::ostream& out) const {
+    out << "- Vertices[0]: " << braces(a) << "\n- Vertices[1]: " << braces(b) << "\n- Vertices[2]: " << braces(c)
+        << "\n";
+  }
+  template <class T> std::unique_ptr<Object<T>> make(const ObjectBuild& o) const {
+    return std::make_unique<Triangle<T>>(Vec3<T>(a), Vec3<T>(b), Vec3<T>(c), o.material, o.id);
+  }
+};
 
 // The triangle a, b, c, seen from both sides. Its normal (b − a) × (c − a), normalized, is the "outward"
 // one (docs/reference/csc473.md §c.11). A degenerate triangle (zero area) is never hit.
@@ -12,7 +60,8 @@ template <class T> class Triangle final : public Object<T> {
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
   std::optional<Aabb<T>> bounds() const override;
-  const char* name() const override { return "Triangle"; }
+  bool inside(const Vec3<T>&) const override { return false; }
+  const char* name() const override { return TriangleDesc::name(); }
 
   // Möller & Trumbore (1997), "Fast, minimum storage ray-triangle intersection": solves
   // o + t·d = a + u·(b − a) + v·(c − a) by Cramer's rule, which is the course's method (§c.11) with the

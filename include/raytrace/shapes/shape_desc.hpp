@@ -1,0 +1,76 @@
+// The shape kinds: one entry each in ShapeDesc (shapes/kind.hpp says what a kind provides), and the object a
+// scene file describes with one of them. Adding a kind is its header and its entry here; every stage that
+// visits a ShapeDesc then handles it, or fails to compile.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "raytrace/geometry/transform.hpp"
+#include "raytrace/shapes/box.hpp"
+#include "raytrace/shapes/cone.hpp"
+#include "raytrace/shapes/csg.hpp"
+#include "raytrace/shapes/cylinder.hpp"
+#include "raytrace/shapes/plane.hpp"
+#include "raytrace/shapes/sphere.hpp"
+#include "raytrace/shapes/triangle.hpp"
+#include "raytrace/surface/material.hpp"
+#include "raytrace/util/error.hpp"
+
+namespace rt {
+
+using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc, CsgDesc>;
+
+struct ObjectDesc {
+  ShapeDesc shape;
+  Material material;
+  Finish finish;  // POV: as written, for sceneinfo
+  SourceLoc loc;  // where the object starts, for messages
+  bool textured = false;  // the file gave it a pigment or finish of its own (a CSG child without takes its group's)
+  // The POV transforms as written (§c.10), in file order; a scene built in code gives its own the same way.
+  std::vector<TransformStep> transforms;
+
+  // The transforms composed in double. Made when asked, not stored: most objects have none, and the matrix
+  // would be a third of every object's description, to fill, copy and page in.
+  glm::dmat4 worldFromObject() const { return composeTransforms<double>(transforms); }
+};
+
+template <class K> struct KindTag {
+  using Kind = K;
+};
+
+template <class F, size_t... I> bool anyShapeKind(F& f, std::index_sequence<I...>) {
+  return (f(KindTag<std::variant_alternative_t<I, ShapeDesc>>{}) || ...);
+}
+// Calls f(KindTag<K>{}) for each kind K in turn while it returns false; true when one did.
+template <class F> bool anyShapeKind(F&& f) {
+  return anyShapeKind(f, std::make_index_sequence<std::variant_size_v<ShapeDesc>>{});
+}
+
+// The kind named by the keyword `word`, read by `reader` (see shapes/kind.hpp); nothing for any other word.
+template <class Reader> std::optional<ShapeDesc> readShape(std::string_view word, Reader& reader) {
+  std::optional<ShapeDesc> shape;
+  anyShapeKind([&](auto tag) {
+    using K = typename decltype(tag)::Kind;
+    if (!K::named(word)) return false;
+    shape = K::read(reader, word);
+    return true;
+  });
+  return shape;
+}
+
+// Whether `word` starts a shape.
+inline bool isShapeKeyword(std::string_view word) {
+  return anyShapeKind([&](auto tag) { return decltype(tag)::Kind::named(word); });
+}
+
+// The type name reports print ("Sphere", "Plane", …).
+inline const char* shapeName(const ShapeDesc& shape) {
+  return std::visit([](const auto& s) { return s.name(); }, shape);
+}
+
+}  // namespace rt

@@ -1,0 +1,53 @@
+#include "raytrace/shapes/make_object.hpp"
+
+#include <cmath>
+#include <optional>
+
+#include "raytrace/shapes/transformed.hpp"
+
+namespace rt {
+
+namespace {
+
+// "Model no more than a scene needs": a sphere moved by a similarity (any mix of rotations, uniform scales and
+// translations, as on the thousands of spheres of balls2 and gnarly) is still a sphere, centred at M·c with
+// radius s·r. Folding the matrix into it saves the two matrix products per test and keeps its bounds tight.
+// The similarity test is LᵀL = s²·I for the linear part L, up to the rounding of the rotation matrices.
+// Nothing when there is nothing to fold: not a sphere, or not moved, or not by a similarity.
+std::optional<ObjectDesc> foldSimilarityIntoSphere(const ObjectDesc& desc) {
+  const auto* sphere = std::get_if<SphereDesc>(&desc.shape);
+  if (!sphere || desc.transforms.empty()) return std::nullopt;
+  const glm::dmat4 worldFromObject = desc.worldFromObject();
+  const glm::dmat3 linear(worldFromObject);
+  const glm::dmat3 gram = glm::transpose(linear) * linear;
+  const double s2 = gram[0][0];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (std::abs(gram[i][j] - (i == j ? s2 : 0.0)) > 1e-12 * s2) return std::nullopt;
+    }
+  }
+  ObjectDesc folded = desc;
+  folded.shape = SphereDesc{glm::dvec3(worldFromObject * glm::dvec4(sphere->center, 1.0)),
+                            std::sqrt(s2) * sphere->radius};
+  folded.transforms.clear();
+  return folded;
+}
+
+}  // namespace
+
+template <class T>
+std::unique_ptr<Object<T>> makeObject(const ObjectDesc& desc, SphereMethod sphere, int id, bool course) {
+  const std::optional<ObjectDesc> folded = course ? std::nullopt : foldSimilarityIntoSphere(desc);
+  const ObjectDesc& o = folded ? *folded : desc;
+  const ObjectBuild build{o.material, id, sphere, course};
+  auto object = std::visit([&](const auto& k) { return k.template make<T>(build); }, o.shape);
+  const Mat4<T> m = course ? composeTransforms<T>(o.transforms) : Mat4<T>(o.worldFromObject());
+  // An identity transform (`translate <0,0,0>`) costs nothing: the shape is used as it is.
+  if (m == Mat4<T>(T(1))) return object;
+  return std::make_unique<Transformed<T>>(std::move(object), m, o.material, id, course);
+}
+
+template std::unique_ptr<Object<float>> makeObject<float>(const ObjectDesc&, SphereMethod, int, bool);
+template std::unique_ptr<Object<double>> makeObject<double>(const ObjectDesc&, SphereMethod, int, bool);
+
+}  // namespace rt

@@ -1,0 +1,28 @@
+#include "raytrace/shapes/scale.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace rt {
+
+Stretch stretch(const glm::dmat4& m) {
+  double most = 0, least = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    const double n = glm::length(glm::dvec3(m[i]));
+    most = std::max(most, n);
+    least = std::min(least, n);
+  }
+  return {most, least};
+}
+
+double worldFeature(const ObjectDesc& o) {
+  return stretch(o.worldFromObject()).least * std::visit([](const auto& k) { return k.smallestFeature(); }, o.shape);
+}
+
+Ball worldBall(const ObjectDesc& o) {
+  const glm::dmat4 worldFromObject = o.worldFromObject();
+  const Ball local = std::visit([](const auto& k) { return k.boundingBall(); }, o.shape);
+  return {glm::dvec3(worldFromObject * glm::dvec4(local.center, 1)), stretch(worldFromObject).most * local.radius};
+}
+
+}  // namespace rt
