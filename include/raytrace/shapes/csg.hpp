@@ -57,6 +57,9 @@ template <class T> class Csg final : public Object<T> {
   bool inside(const Vec3<T>& p) const override;
   std::optional<Aabb<T>> bounds() const override;
   const char* name() const override { return name_; }
+  void forEachMaterial(const std::function<void(const Material&)>& f) const override {
+    for (const auto& c : children_) c->forEachMaterial(f);
+  }
 
  private:
   // Whether a point on child i's surface is a surface of the whole.

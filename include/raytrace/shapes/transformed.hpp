@@ -20,6 +20,7 @@ template <class T> class Transformed final : public Object<T> {
     return inner_->inside(Vec3<T>(objectFromWorld_ * glm::vec<4, T, glm::defaultp>(p, T(1))));
   }
   const char* name() const override { return inner_->name(); }
+  void forEachMaterial(const std::function<void(const Material&)>& f) const override { inner_->forEachMaterial(f); }
 
  private:
   std::unique_ptr<Object<T>> inner_;
