@@ -1,7 +1,6 @@
 // The commands that write images: raycast (Program 1) and render, whole or one tile of the picture.
 #include <algorithm>
 #include <climits>
-#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -9,6 +8,7 @@
 #include <sys/stat.h>
 
 #include "raytrace/app/invocation.hpp"
+#include "raytrace/app/stats_report.hpp"
 #include "raytrace/app/tile_header.hpp"
 #include "raytrace/image/exr_file.hpp"
 #include "raytrace/image/image.hpp"
@@ -16,6 +16,7 @@
 #include "raytrace/image/png_file.hpp"
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/message.hpp"
+#include "raytrace/util/peak_memory.hpp"
 #include "raytrace/util/stopwatch.hpp"
 
 namespace rt {
@@ -192,29 +193,19 @@ int renderImage(const Invocation& inv, std::ostream&) {
     });
   }
   if (inv.stats) {
-    const auto ms = [](double seconds) {
-      char text[32];
-      std::snprintf(text, sizeof text, "%.1f ms", seconds * 1000);
-      return std::string(text);
-    };
-    *inv.stats << "raytrace: load " << ms(inv.loadSeconds) << ", build " << ms(times.build) << ", trace "
-               << ms(times.trace) << ", write " << ms(writing) << ", total "
-               << ms(inv.loadSeconds + times.build + times.trace + writing) << " (" << inv.width << "x" << inv.height
-               << ", " << options.samples * options.samples << (options.samples == 1 ? " eye ray" : " eye rays")
-               << " per pixel, " << options.threads << (options.threads == 1 ? " thread)\n" : " threads)\n");
-    char line[160];
-    std::snprintf(line, sizeof line,
-                  "raytrace: rays %llu eye, %llu gather, %llu shadow, %llu secondary; %.2f M rays/s in trace\n",
-                  (unsigned long long)rays.eye, (unsigned long long)rays.gather, (unsigned long long)rays.shadow,
-                  (unsigned long long)rays.secondary, times.trace > 0 ? double(rays.total()) / times.trace / 1e6 : 0.0);
-    *inv.stats << line;
-    if (options.gi.enabled && options.gi.cache) {
-      std::snprintf(line, sizeof line,
-                    "raytrace: irradiance cache %llu records, %llu lookups, %llu gathered uncached\n",
-                    (unsigned long long)rays.cacheRecords, (unsigned long long)rays.cacheLookups,
-                    (unsigned long long)rays.cacheMisses);
-      *inv.stats << line;
-    }
+    RenderStats stats;
+    stats.width = inv.width;
+    stats.height = inv.height;
+    stats.eyeRays = options.samples * options.samples;
+    stats.threads = options.threads;
+    stats.cache = options.gi.enabled && options.gi.cache;
+    stats.load = inv.loadSeconds;
+    stats.build = times.build;
+    stats.trace = times.trace;
+    stats.write = writing;
+    stats.rays = rays;
+    stats.peakMemory = peakMemory();
+    *inv.stats << (inv.statsJson ? statsJson(stats) : statsText(stats));
   }
   return status;
 }
