@@ -113,6 +113,14 @@ std::string usage() {
   return text + optionsHelp(Section::General) + optionsHelp(Section::Image);
 }
 
+std::vector<CommandSummary> commandSummaries() {
+  std::vector<CommandSummary> list;
+  for (const Command& c : commands()) {
+    list.push_back({c.name, usageLine(c), c.summary, !c.runWords, c.writesImage, std::string(c.name) == "render"});
+  }
+  return list;
+}
+
 namespace {
 
 // The text --help, --version, `help <command>` or `<command> --help` asks for; nothing when the arguments ask
