@@ -1,13 +1,17 @@
 // The commands that write images: raycast (Program 1) and render, whole or one tile of the picture.
 #include <algorithm>
 #include <climits>
+#include <optional>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
 #include <sys/stat.h>
 
+#include "raytrace/app/display_window.hpp"
 #include "raytrace/app/invocation.hpp"
+#include "raytrace/app/live_picture.hpp"
+#include "raytrace/app/preview_file.hpp"
 #include "raytrace/app/stats_report.hpp"
 #include "raytrace/app/tile_header.hpp"
 #include "raytrace/image/exr_file.hpp"
@@ -116,6 +120,7 @@ void checkOutput(const Invocation& inv) {
     }
   }
   if (!inv.output.empty() && !isFolder(inv.output)) checkImagePath(inv.output);
+  if (!inv.preview.empty()) checkImagePath(inv.preview);
 }
 
 // Each pixel gets the pigment of the closest object, or the background (Program 1's ray cast).
@@ -147,7 +152,6 @@ int renderImage(const Invocation& inv, std::ostream&) {
   RenderTimes times;
   RayCounts rays;
   const RenderOptions& options = inv.options;
-  const RenderMonitor monitor{inv.progress, &times, &rays};
   const std::vector<Target> all = targets(inv, true);
   if (inv.region && all.size() != 1) throw Error("a tile is of one image, but the scene writes several");
   int status = 0;
@@ -172,6 +176,15 @@ int renderImage(const Invocation& inv, std::ostream&) {
   }
   double writing = 0;
   const auto renderTo = [&](const SceneDesc& scene, const std::string& path) {
+    // --display and --preview watch the picture fill in; they end once the image is written.
+    const Region region = inv.region.value_or(wholeImage(inv.width, inv.height));
+    std::optional<LivePicture> picture;
+    if (inv.display || !inv.preview.empty()) picture.emplace(inv.height, region, scene.conventions.toByte);
+    std::optional<DisplayWindow> window;
+    if (inv.display) window.emplace(*picture, *inv.errors);
+    std::optional<PreviewFile> preview;
+    if (!inv.preview.empty()) preview.emplace(*picture, inv.preview, scene.conventions.toByte, *inv.errors);
+    RenderMonitor monitor{inv.progress, &times, &rays, picture ? &*picture : nullptr};
     // A whole PNG is rendered straight to bytes; everything else keeps the floats.
     if (!inv.region && imageFormat(path) == ImageFormat::Png) {
       const Rgb8Image image = renderRgb8(scene, inv.width, inv.height, options, monitor);
@@ -179,8 +192,7 @@ int renderImage(const Invocation& inv, std::ostream&) {
       writePng(image, path);
       writing += watch.lap();
     } else {
-      Image image = render(scene, inv.width, inv.height, inv.region.value_or(wholeImage(inv.width, inv.height)),
-                           options, monitor);
+      Image image = render(scene, inv.width, inv.height, region, options, monitor);
       Stopwatch watch;
       write(inv, "render", std::move(image), path, scene.conventions.toByte);
       writing += watch.lap();
