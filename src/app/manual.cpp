@@ -29,12 +29,6 @@ std::string oneLine(const char* help) {
   return line;
 }
 
-// The first line of an option's help, for the completions' short descriptions.
-std::string firstLine(const char* help) {
-  const std::string text(help);
-  return text.substr(0, text.find('\n'));
-}
-
 bool takes(const CommandSummary& c, const Option& o) {
   return c.readsScene && (o.scope == Scope::Any || (o.scope == Scope::Image && c.writesImage) ||
                           (o.scope == Scope::Render && c.isRender));
@@ -161,17 +155,17 @@ std::string zshCompletion() {
   std::string script =
       "#compdef raytrace\n"
       "# zsh completion for raytrace, written by raytrace_manual from its command and option tables.\n"
-      "local -a commands\n"
-      "commands=(\n";
+      "local -a raytrace_commands  # not `commands`: zsh has a parameter of that name\n"
+      "raytrace_commands=(\n";
   for (const CommandSummary& c : commandSummaries()) script += "  '" + c.name + ":" + escape(c.summary) + "'\n";
   script += ")\n"
             "if (( CURRENT == 2 )); then\n"
-            "  _describe -t commands 'raytrace command' commands\n"
+            "  _describe -t commands 'raytrace command' raytrace_commands\n"
             "  return\n"
             "fi\n"
             "local scene='*:scene file:_files -g \"*.(pov|cli)\"'\n"
             "case $words[2] in\n"
-            "  help) (( CURRENT == 3 )) && _describe -t commands 'command' commands ;;\n"
+            "  help) (( CURRENT == 3 )) && _describe -t commands 'command' raytrace_commands ;;\n"
             "  merge) _arguments '(-o --output)'{-o,--output}'[the image to write]:image:_files' "
             "'--threads[threads]:N:' '*:tile:_files -g \"*.exr\"' ;;\n";
   for (const CommandSummary& c : commandSummaries()) {
@@ -181,7 +175,7 @@ std::string zshCompletion() {
       if (!takes(c, o)) continue;
       for (const char* name : {o.name, o.alias}) {
         if (!name) continue;
-        const std::string n(name), description = "[" + escape(firstLine(o.help)) + "]";
+        const std::string n(name), description = "[" + escape(oneLine(o.help)) + "]";
         const std::string values = choices(o).empty() ? "" : "(" + choices(o) + ")";
         const std::string argument = o.argument ? escape(o.argument) : "";
         switch (o.form) {
