@@ -176,7 +176,9 @@ int renderImage(const Invocation& inv, std::ostream&) {
   }
   double writing = 0;
   const auto renderTo = [&](const SceneDesc& scene, const std::string& path) {
-    // --display and --preview watch the picture fill in; they end once the image is written.
+    // --display and --preview watch the picture fill in. The preview's last write comes before the image's, so
+    // that no two files are written at once (one temporary file is removed on an interrupt); the window
+    // closes once the image is written.
     const Region region = inv.region.value_or(wholeImage(inv.width, inv.height));
     std::optional<LivePicture> picture;
     if (inv.display || !inv.preview.empty()) picture.emplace(inv.height, region, scene.conventions.toByte);
@@ -188,11 +190,13 @@ int renderImage(const Invocation& inv, std::ostream&) {
     // A whole PNG is rendered straight to bytes; everything else keeps the floats.
     if (!inv.region && imageFormat(path) == ImageFormat::Png) {
       const Rgb8Image image = renderRgb8(scene, inv.width, inv.height, options, monitor);
+      preview.reset();
       Stopwatch watch;
       writePng(image, path);
       writing += watch.lap();
     } else {
       Image image = render(scene, inv.width, inv.height, region, options, monitor);
+      preview.reset();
       Stopwatch watch;
       write(inv, "render", std::move(image), path, scene.conventions.toByte);
       writing += watch.lap();
