@@ -2,6 +2,7 @@
 # and render write output.png, render of a .cli scene the file its `write` names.
 #   -DBIN=<raytrace> -DCOMMAND=<raycast|render> -DSCENE=<scene> -DWIDTH=… -DHEIGHT=… -DIMAGE=<name.png>
 #   -DDIR=<empty working directory to use> [-DFLAGS=<more arguments>] [-DULIMIT=<ulimit arguments>]
+#   [-DERRORS=<the one line it must print on stderr>]
 file(REMOVE_RECURSE "${DIR}")
 file(MAKE_DIRECTORY "${DIR}")
 set(command "${BIN}" ${COMMAND} "${SCENE}" ${WIDTH} ${HEIGHT} ${FLAGS})
@@ -11,6 +12,9 @@ endif()
 execute_process(COMMAND ${command} WORKING_DIRECTORY "${DIR}" RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "${COMMAND} failed (${status}):\n${err}")
+endif()
+if(DEFINED ERRORS AND NOT err STREQUAL "${ERRORS}\n")
+  message(FATAL_ERROR "${COMMAND} printed '${err}', expected '${ERRORS}'")
 endif()
 file(GLOB written RELATIVE "${DIR}" "${DIR}/*")
 if(NOT written STREQUAL "${IMAGE}")

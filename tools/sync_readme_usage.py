@@ -5,7 +5,8 @@
 
 The block sits between the markers BEGIN and END below, as a fenced code block; everything else in the README
 is left alone. The test `readme.usage` (tests/readme_usage.cmake) fails whenever the two differ, so run this
-after changing usage() in src/app/commands.cpp and commit the README with the change.
+after changing a row of the option table (src/app/arguments.cpp) or the command table (src/app/commands.cpp)
+and commit the README with the change.
 """
 import argparse
 import os

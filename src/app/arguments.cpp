@@ -1,5 +1,7 @@
 #include "raytrace/app/arguments.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -106,68 +108,259 @@ std::vector<int> parseCounts(const std::string& s, const char* what, int lo, int
   }
 }
 
-RenderOptions parseFlag(const std::string& flag, RenderOptions o) {
-  const auto value = [&](const std::string& name) -> const char* {
-    return flag.rfind(name + "=", 0) == 0 ? flag.c_str() + name.size() + 1 : nullptr;
-  };
-  if (flag == "-sds") return o;  // the course's "use a hierarchy": ours decides per scene (Scene, Hierarchy)
-  if (const char* p = value("--precision")) {
-    o.arithmetic.tier = choice("--precision", p, kPrecisions);
-    return o;
+namespace {
+
+const char* const kTextOrJson = "text|json";
+
+const std::vector<Option> kOptions = {
+    {"--precision", nullptr, "float|double|course|auto", Form::Joined, Scope::Any, Section::General,
+     "arithmetic for geometry (default auto: chosen per scene); course\n"
+     "is the course reference's float arithmetic and 0.001 offsets",
+     [](Words& w, const std::string& v, const std::string&) {
+       w.options.arithmetic.tier = choice("--precision", v, kPrecisions);
+     }},
+    {"--sphere", nullptr, "textbook|robust|auto", Form::Joined, Scope::Any, Section::General,
+     "ray-sphere formula (default auto: chosen per scene)",
+     [](Words& w, const std::string& v, const std::string&) {
+       w.options.arithmetic.sphere = choice("--sphere", v, kSpheres);
+     }},
+    {"--offset", nullptr, "relative|course|normal|wb", Form::Joined, Scope::Any, Section::General,
+     "spawned-ray origins (default: the arithmetic's): relative normal\n"
+     "offset, the course's 0.001 along the normal, a fixed 1e-4 along\n"
+     "the normal, or Waechter-Binder's ulp offset",
+     [](Words& w, const std::string& v, const std::string&) {
+       w.options.arithmetic.offset = choice("--offset", v, kOffsets);
+     }},
+    {"--depth", nullptr, "N", Form::Joined, Scope::Any, Section::General,
+     "deepest reflection/refraction level, 0 to 64 (default: the scene\n"
+     "language's); a ray is traced only while it can still change its\n"
+     "pixel, and past depth 12 an eye ray's tree stops at 8191 rays",
+     [](Words& w, const std::string& v, const std::string&) { w.options.depth = parseInt(v, "--depth", 0, 64); }},
+    {"-altbrdf", nullptr, nullptr, Form::Switch, Scope::Any, Section::General,
+     "Cook-Torrance (GGX) instead of Blinn-Phong",
+     [](Words& w, const std::string&, const std::string&) { w.options.brdf = Brdf::CookTorrance; }},
+    {"-fresnel", nullptr, nullptr, Form::Switch, Scope::Any, Section::General,
+     "Schlick-weighted reflection and refraction",
+     [](Words& w, const std::string&, const std::string&) { w.options.fresnel = true; }},
+    {"-beers", nullptr, nullptr, Form::Switch, Scope::Any, Section::General,
+     "Beer's-law absorption inside transparent objects",
+     [](Words& w, const std::string&, const std::string&) { w.options.beers = true; }},
+    {"-ss", nullptr, "N", Form::Joined, Scope::Any, Section::General,
+     "N x N stratified samples per pixel (1 to 64)",
+     [](Words& w, const std::string& v, const std::string&) { w.options.samples = parseInt(v, "-ss", 1, 64); }},
+    {"-gi", nullptr, nullptr, Form::Switch, Scope::Any, Section::General,
+     "Monte Carlo global illumination: indirect light gathered with\n"
+     "stratified cosine-weighted rays instead of the ambient term",
+     [](Words& w, const std::string&, const std::string&) { w.options.gi.enabled = true; }},
+    {"-gi_samples", nullptr, "N[,N...]", Form::Joined, Scope::Any, Section::General,
+     "gather rays per hit at bounce 1, 2, ... (default 64,16)",
+     [](Words& w, const std::string& v, const std::string&) {
+       w.options.gi.samples = parseCounts(v, "-gi_samples", 1, kMaxGatherSamples);
+     }},
+    {"-gi_bounces", nullptr, "B", Form::Joined, Scope::Any, Section::General,
+     "gathering levels (default: one per sample count; past the list,\n"
+     "its last count)",
+     [](Words& w, const std::string& v, const std::string&) {
+       w.options.gi.bounces = parseInt(v, "-gi_bounces", 0, kMaxBounces);
+     }},
+    {"--seed", nullptr, "N", Form::Either, Scope::Any, Section::General,
+     "-gi's random numbers (default 0); same image for any threads",
+     [](Words& w, const std::string& v, const std::string&) {
+       w.options.gi.seed = uint64_t(parseInt(v, "--seed", 0, std::numeric_limits<int>::max()));
+     },
+     "needs a number"},
+    {"--gi-cache", nullptr, "A", Form::Joined, Scope::Any, Section::General,
+     "irradiance caching of the first bounce, accuracy A in (0, 1]\n"
+     "(e.g. 0.15; smaller: more records, nearer plain -gi)",
+     [](Words& w, const std::string& v, const std::string&) {
+       errno = 0;
+       char* end = nullptr;
+       const double a = std::strtod(v.c_str(), &end);
+       if (v.empty() || *end != '\0' || errno == ERANGE || !(a > 0 && a <= 1)) {
+         throw Error("--gi-cache must be a number above 0 and at most 1, found '" + v + "'");
+       }
+       w.options.gi.cache = float(a);
+     }},
+    {"-normals", nullptr, nullptr, Form::Switch, Scope::Any, Section::General,
+     "colour each hit by its normal (debug)",
+     [](Words& w, const std::string&, const std::string&) { w.options.normals = true; }},
+    {"--threads", nullptr, "N", Form::Either, Scope::Any, Section::General,
+     "load, build and render on N threads (default: every core); same\n"
+     "scene and image for any N",
+     [](Words& w, const std::string& v, const std::string&) {
+       w.options.threads = parseInt(v, "--threads", 1, kMaxThreads);
+     },
+     "needs a number of threads"},
+    {"--quiet", nullptr, nullptr, Form::Switch, Scope::Any, Section::General,
+     "no progress line (shown only while rendering to a terminal)",
+     [](Words& w, const std::string&, const std::string&) { w.quiet = true; }},
+    {"--stats", nullptr, kTextOrJson, Form::Optional, Scope::Render, Section::General,
+     "after render, how long loading, building, tracing and writing the\n"
+     "image took, and the rays traced by kind (stderr); =json: the same\n"
+     "as one JSON object, with the peak memory",
+     [](Words& w, const std::string& v, const std::string&) {
+       w.stats = true;
+       w.statsJson = !v.empty() && choice("--stats", v, Names<bool>{{"text", false}, {"json", true}});
+     }},
+    {"--display", nullptr, nullptr, Form::Switch, Scope::Render, Section::General,
+     "show the picture in a window, tile by tile as they finish (needs\n"
+     "SDL2 and a display; without them, says so and renders on)",
+     [](Words& w, const std::string&, const std::string&) { w.display = true; }},
+    {"--preview", nullptr, "FILE", Form::Either, Scope::Render, Section::General,
+     "write the picture so far to FILE every few seconds, replacing it\n"
+     "whole, for image viewers that reload",
+     [](Words& w, const std::string& v, const std::string& word) {
+       if (v.empty()) throw Error(word + " needs a file name");
+       w.preview = v;
+     }},
+    {"-sds", nullptr, nullptr, Form::Switch, Scope::Any, Section::General,
+     "accepted for the course; a hierarchy is used whenever it pays",
+     // The course's "use a hierarchy": ours decides per scene (Scene, Hierarchy).
+     [](Words&, const std::string&, const std::string&) {}},
+    {"--hierarchy", nullptr, "auto|always|never", Form::Joined, Scope::Any, Section::General,
+     "force the bounding volume hierarchy on or off (same image)",
+     [](Words& w, const std::string& v, const std::string&) {
+       w.options.hierarchy = choice("--hierarchy", v, kHierarchies);
+     }},
+    {"-o", "--output", "FILE", Form::Either, Scope::Image, Section::Image,
+     "the image file (default output.png); its extension picks the format:\n"
+     ".png (8-bit), .hdr (Radiance RGBE) or .exr (OpenEXR, 32-bit float),\n"
+     "the last two the linear radiance before clamping. For a .cli scene\n"
+     "that writes its own images, the folder to write them into",
+     [](Words& w, const std::string& v, const std::string& word) {
+       if (v.empty()) throw Error(word + " needs a file name");
+       w.output = v;
+     }},
+    {"--allow-write-anywhere", nullptr, nullptr, Form::Switch, Scope::Any, Section::Image,
+     "let a .cli scene's 'write' leave its folder (an absolute path, '..', a link)\n"
+     "(by default it may only write into the current folder and below)",
+     [](Words& w, const std::string&, const std::string&) { w.writeAnywhere = true; }},
+    {"--tile", nullptr, "I/N", Form::Either, Scope::Image, Section::Image,
+     "render only the I-th of N bands of rows (0 <= I < N), written to\n"
+     "-o NAME.exr as a tile for merge",
+     [](Words& w, const std::string& v, const std::string&) { w.tile = v; }},
+    {"--region", nullptr, "X0,Y0,X1,Y1", Form::Either, Scope::Image, Section::Image,
+     "render only columns X0 to X1-1 and rows Y0 to Y1-1, rows counted\n"
+     "from the top, written to -o NAME.exr as a tile for merge",
+     [](Words& w, const std::string& v, const std::string&) { w.region = v; }},
+};
+
+const Option* optionNamed(const std::string& name) {
+  for (const Option& o : kOptions) {
+    if (name == o.name || (o.alias && name == o.alias)) return &o;
   }
-  if (const char* p = value("--sphere")) {
-    o.arithmetic.sphere = choice("--sphere", p, kSpheres);
-    return o;
-  }
-  if (const char* p = value("--offset")) {
-    o.arithmetic.offset = choice("--offset", p, kOffsets);
-    return o;
-  }
-  if (const char* p = value("--hierarchy")) {
-    o.hierarchy = choice("--hierarchy", p, kHierarchies);
-    return o;
-  }
-  if (const char* p = value("--depth")) {
-    o.depth = parseInt(p, "--depth", 0, 64);
-    return o;
-  }
-  if (const char* p = value("-ss")) {
-    o.samples = parseInt(p, "-ss", 1, 64);
-    return o;
-  }
-  if (const char* p = value("-gi_samples")) {
-    o.gi.samples = parseCounts(p, "-gi_samples", 1, kMaxGatherSamples);
-    return o;
-  }
-  if (const char* p = value("-gi_bounces")) {
-    o.gi.bounces = parseInt(p, "-gi_bounces", 0, kMaxBounces);
-    return o;
-  }
-  if (const char* p = value("--gi-cache")) {
-    errno = 0;
-    char* end = nullptr;
-    const double a = std::strtod(p, &end);
-    if (*p == '\0' || *end != '\0' || errno == ERANGE || !(a > 0 && a <= 1)) {
-      throw Error(std::string("--gi-cache must be a number above 0 and at most 1, found '") + p + "'");
+  return nullptr;
+}
+
+[[noreturn]] void unknownOption(const std::string& word, const char* near) {
+  throw Error("unknown option " + quote(word) + (near ? ": did you mean " + quote(near) + "?" : "") +
+              " (see raytrace --help)");
+}
+
+// Applies the option word args[i] to `words`, moving i past its value if the value is the next word.
+void readOption(const std::vector<std::string>& args, size_t& i, Words& words) {
+  const std::string& word = args[i];
+  const size_t equals = word.find('=');
+  const std::string name = word.substr(0, equals);
+  const bool joined = equals != std::string::npos;
+  const Option* option = optionNamed(name);
+  if (!option) {
+    std::vector<const char*> names;
+    for (const Option& o : kOptions) {
+      names.push_back(o.name);
+      if (o.alias) names.push_back(o.alias);
     }
-    o.gi.cache = float(a);
-    return o;
+    unknownOption(word, nearestName(name, names));
   }
-  if (const char* p = value("--seed")) {
-    o.gi.seed = uint64_t(parseInt(p, "--seed", 0, std::numeric_limits<int>::max()));
-    return o;
+  // A switch given a value, or an option that must be joined to its value given none.
+  if ((option->form == Form::Switch && joined) || (option->form == Form::Joined && !joined)) {
+    unknownOption(word, nullptr);
   }
-  if (const char* p = value("--threads")) {
-    o.threads = parseInt(p, "--threads", 1, kMaxThreads);
-    return o;
+  std::string value;
+  if (joined) {
+    value = word.substr(equals + 1);
+  } else if (option->form == Form::Either) {
+    if (i + 1 == args.size()) throw Error(name + " " + option->missing);
+    value = args[++i];
   }
-  if (flag == "-gi") o.gi.enabled = true;
-  else if (flag == "-altbrdf") o.brdf = Brdf::CookTorrance;
-  else if (flag == "-fresnel") o.fresnel = true;
-  else if (flag == "-beers") o.beers = true;
-  else if (flag == "-normals") o.normals = true;
-  else throw Error("unknown option " + quote(flag) + " (see raytrace --help)");
-  return o;
+  option->apply(words, value, word);
+  if (option->scope != Scope::Any) words.scoped.push_back(name);
+}
+
+}  // namespace
+
+const std::vector<Option>& optionTable() { return kOptions; }
+
+Words readWords(const std::vector<std::string>& args, size_t first) {
+  Words words;
+  for (size_t i = first; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a.size() > 1 && a[0] == '-' && (std::isalpha(static_cast<unsigned char>(a[1])) || a[1] == '-')) {
+      readOption(args, i, words);
+    } else {
+      words.positional.push_back(a);
+    }
+  }
+  return words;
+}
+
+RenderOptions parseFlag(const std::string& flag, RenderOptions options) {
+  Words words;
+  words.options = std::move(options);
+  size_t i = 0;
+  readOption({flag}, i, words);
+  return words.options;
+}
+
+std::string optionLabel(const Option& o) {
+  std::string label = std::string(o.name) + (o.alias ? std::string(", ") + o.alias : "");
+  switch (o.form) {
+    case Form::Switch: return label;
+    case Form::Joined: return label + "=" + o.argument;
+    case Form::Either: return label + " " + o.argument;
+    case Form::Optional: return label + "[=" + o.argument + "]";
+  }
+  return label;
+}
+
+std::string optionsHelp(Section section) {
+  // The help starts in column 34; a longer label has a line of its own.
+  constexpr size_t kColumn = 34;
+  std::string text = section == Section::General ? "options:\n" : "image options (raycast, render):\n";
+  for (const Option& o : kOptions) {
+    if (o.section != section) continue;
+    const std::string label = "  " + optionLabel(o);
+    text += label.size() + 2 <= kColumn ? label + std::string(kColumn - label.size(), ' ')
+                                        : label + "\n" + std::string(kColumn, ' ');
+    for (const char* c = o.help; *c; ++c) text += *c == '\n' ? "\n" + std::string(kColumn, ' ') : std::string(1, *c);
+    text += "\n";
+  }
+  return text;
+}
+
+const char* nearestName(const std::string& word, const std::vector<const char*>& names) {
+  const char* best = nullptr;
+  size_t bestDistance = 3;
+  for (const char* candidate : names) {
+    const std::string name(candidate);
+    // Levenshtein distance, one row at a time.
+    std::vector<size_t> row(name.size() + 1);
+    for (size_t j = 0; j <= name.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= word.size(); ++i) {
+      size_t diagonal = row[0];
+      row[0] = i;
+      for (size_t j = 1; j <= name.size(); ++j) {
+        const size_t above = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (word[i - 1] == name[j - 1] ? 0 : 1)});
+        diagonal = above;
+      }
+    }
+    if (row[name.size()] < bestDistance) {
+      bestDistance = row[name.size()];
+      best = candidate;
+    }
+  }
+  return best;
 }
 
 }  // namespace rt

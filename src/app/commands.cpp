@@ -1,7 +1,6 @@
 #include "raytrace/app/commands.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <functional>
 #include <optional>
 
@@ -25,13 +24,17 @@ constexpr int kDefaultSide = 300;     // the CS 3451 starter's size(300, 300) (d
 
 struct Command {
   const char* name;
-  const char* args;  // after the scene, for usage and messages
+  const char* args;  // after the scene, for usage and messages; for a command of its own words, all of them
   int numbers;       // 0, 2 (width height) or 4 (width height x y)
   std::function<int(const Invocation&, std::ostream&)> run;
   const char* summary;          // what `raytrace help <command>` says it does
   bool writesImage = false;     // takes -o, --tile and --region
   bool sizeOptional = false;    // width and height may be left out for kDefaultSide × kDefaultSide
+  // A command that reads no scene and parses its own words (the words after its name), instead of `run`.
+  std::function<int(const std::vector<std::string>&, std::ostream&)> runWords = nullptr;
 };
+
+std::string commandHelp(const std::string& name);
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> table = {
@@ -45,91 +48,31 @@ const std::vector<Command>& commands() {
       {"printrays", "<width> <height> <x> <y>", 4, printrays, "every ray the pixel's colour is made of"},
       {"pixeltrace", "<width> <height> <x> <y>", 4, pixeltrace, "printrays with the shadow rays"},
       {"printbvh", "", 0, printbvh, "the bounding volume hierarchy of the scene"},
+      {"merge", "-o <image> <tile.exr>... [--threads N]", 0, nullptr,
+       "the tiles of one render (--tile, --region) joined into its image, exactly as one machine renders it",
+       false, false, [](const std::vector<std::string>& words, std::ostream&) { return merge(words); }},
+      {"help", "<command>", 0, nullptr, "the usage, summary and options of one command", false, false,
+       [](const std::vector<std::string>& words, std::ostream& out) {
+         if (words.size() != 1) throw Error("help takes one command, as in: raytrace help render");
+         out << commandHelp(words[0]);
+         return 0;
+       }},
   };
   return table;
 }
 
-constexpr const char* kMergeUsage = "raytrace merge -o <image> <tile.exr>... [--threads N]";
-constexpr const char* kMergeSummary =
-    "the tiles of one render (--tile, --region) joined into its image, exactly as one machine renders it";
-
 std::string commandUsage(const Command& c) {
-  return std::string("raytrace ") + c.name + " <scene>" + (c.args[0] ? " " : "") + c.args;
+  return std::string("raytrace ") + c.name + (c.runWords ? "" : " <scene>") + (c.args[0] ? " " : "") + c.args;
 }
 
-const char* const kRenderOptions =
-    "options:\n"
-    "  --precision=float|double|course|auto\n"
-    "                                  arithmetic for geometry (default auto: chosen per scene); course\n"
-    "                                  is the course reference's float arithmetic and 0.001 offsets\n"
-    "  --sphere=textbook|robust|auto   ray-sphere formula (default auto: chosen per scene)\n"
-    "  --offset=relative|course|normal|wb\n"
-    "                                  spawned-ray origins (default: the arithmetic's): relative normal\n"
-    "                                  offset, the course's 0.001 along the normal, a fixed 1e-4 along\n"
-    "                                  the normal, or Waechter-Binder's ulp offset\n"
-    "  --depth=N                       deepest reflection/refraction level, 0 to 64 (default: the scene\n"
-    "                                  language's); a ray is traced only while it can still change its\n"
-    "                                  pixel, and past depth 12 an eye ray's tree stops at 8191 rays\n"
-    "  -altbrdf                        Cook-Torrance (GGX) instead of Blinn-Phong\n"
-    "  -fresnel                        Schlick-weighted reflection and refraction\n"
-    "  -beers                          Beer's-law absorption inside transparent objects\n"
-    "  -ss=N                           N x N stratified samples per pixel (1 to 64)\n"
-    "  -gi                             Monte Carlo global illumination: indirect light gathered with\n"
-    "                                  stratified cosine-weighted rays instead of the ambient term\n"
-    "  -gi_samples=N[,N...]            gather rays per hit at bounce 1, 2, ... (default 64,16)\n"
-    "  -gi_bounces=B                   gathering levels (default: one per sample count; past the list,\n"
-    "                                  its last count)\n"
-    "  --seed N                        -gi's random numbers (default 0); same image for any threads\n"
-    "  --gi-cache=A                    irradiance caching of the first bounce, accuracy A in (0, 1]\n"
-    "                                  (e.g. 0.15; smaller: more records, nearer plain -gi)\n"
-    "  -normals                        colour each hit by its normal (debug)\n"
-    "  --threads N                     load, build and render on N threads (default: every core); same\n"
-    "                                  scene and image for any N\n"
-    "  --quiet                         no progress line (shown only while rendering to a terminal)\n"
-    "  --stats                         after render, how long loading, building, tracing and writing the\n"
-    "                                  image took, and the rays traced by kind (stderr)\n"
-    "  -sds                            accepted for the course; a hierarchy is used whenever it pays\n"
-    "  --hierarchy=auto|always|never   force the bounding volume hierarchy on or off (same image)\n";
+// The usage line of `raytrace --help` and `raytrace help <command>`.
+std::string usageLine(const Command& c) { return commandUsage(c) + (c.runWords ? "" : " [options]"); }
 
-const char* const kImageOptions =
-    "image options (raycast, render):\n"
-    "  -o, --output FILE               the image file (default output.png); its extension picks the format:\n"
-    "                                  .png (8-bit), .hdr (Radiance RGBE) or .exr (OpenEXR, 32-bit float),\n"
-    "                                  the last two the linear radiance before clamping. For a .cli scene\n"
-    "                                  that writes its own images, the folder to write them into\n"
-    "  --allow-write-anywhere          let a .cli scene's 'write' leave its folder (an absolute path, '..', a link)\n"
-    "                                  (by default it may only write into the current folder and below)\n"
-    "  --tile I/N                      render only the I-th of N bands of rows (0 <= I < N), written to\n"
-    "                                  -o NAME.exr as a tile for merge\n"
-    "  --region X0,Y0,X1,Y1            render only columns X0 to X1-1 and rows Y0 to Y1-1, rows counted\n"
-    "                                  from the top, written to -o NAME.exr as a tile for merge\n";
-
-// The command nearest to `word` by edit distance, if a typo's distance away (at most 2).
+// The command nearest to `word` by edit distance, if a typo's distance away.
 const char* nearestCommand(const std::string& word) {
-  const char* best = nullptr;
-  size_t bestDistance = 3;
-  std::vector<const char*> names{"merge", "help"};
+  std::vector<const char*> names;
   for (const Command& c : commands()) names.push_back(c.name);
-  for (const char* candidate : names) {
-    const std::string name(candidate);
-    // Levenshtein distance, one row at a time.
-    std::vector<size_t> row(name.size() + 1);
-    for (size_t j = 0; j <= name.size(); ++j) row[j] = j;
-    for (size_t i = 1; i <= word.size(); ++i) {
-      size_t diagonal = row[0];
-      row[0] = i;
-      for (size_t j = 1; j <= name.size(); ++j) {
-        const size_t above = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (word[i - 1] == name[j - 1] ? 0 : 1)});
-        diagonal = above;
-      }
-    }
-    if (row[name.size()] < bestDistance) {
-      bestDistance = row[name.size()];
-      best = candidate;
-    }
-  }
-  return best;
+  return nearestName(word, names);
 }
 
 const Command* commandNamed(const std::string& name) {
@@ -154,20 +97,28 @@ const Command& findCommand(const std::vector<std::string>& args) {
 
 // `raytrace help <command>` and `raytrace <command> --help`.
 std::string commandHelp(const std::string& name) {
-  if (name == "merge") return std::string("usage: ") + kMergeUsage + "\n" + kMergeSummary + "\n";
   const Command* c = commandNamed(name);
   if (!c) unknownCommand(name);
-  return "usage: " + commandUsage(*c) + " [options]\n" + c->summary + "\n" + kRenderOptions +
-         (c->writesImage ? kImageOptions : "");
+  const std::string head = "usage: " + usageLine(*c) + "\n" + c->summary + "\n";
+  if (c->runWords) return head;
+  return head + optionsHelp(Section::General) + (c->writesImage ? optionsHelp(Section::Image) : "");
 }
 
 }  // namespace
 
 std::string usage() {
   std::string text = "usage:\n";
-  for (const Command& c : commands()) text += "  " + commandUsage(c) + " [options]\n";
-  text += std::string("  ") + kMergeUsage + "\n  raytrace help <command>\n  raytrace --version\n";
-  return text + kRenderOptions + kImageOptions;
+  for (const Command& c : commands()) text += "  " + usageLine(c) + "\n";
+  text += "  raytrace --version\n";
+  return text + optionsHelp(Section::General) + optionsHelp(Section::Image);
+}
+
+std::vector<CommandSummary> commandSummaries() {
+  std::vector<CommandSummary> list;
+  for (const Command& c : commands()) {
+    list.push_back({c.name, usageLine(c), c.summary, !c.runWords, c.writesImage, std::string(c.name) == "render"});
+  }
+  return list;
 }
 
 namespace {
@@ -178,82 +129,9 @@ std::optional<std::string> helpText(const std::vector<std::string>& args) {
   if (args.empty()) return std::nullopt;
   if (args[0] == "--help" || args[0] == "-h") return usage();
   if (args[0] == "--version") return std::string("raytrace ") + RAYTRACE_VERSION + "\n";
-  if (args[0] == "help") {
-    if (args.size() != 2) throw Error("help takes one command, as in: raytrace help render");
-    return commandHelp(args[1]);
-  }
-  const bool known = args[0] == "merge" || commandNamed(args[0]);
-  if (known && std::find(args.begin() + 1, args.end(), "--help") != args.end()) return commandHelp(args[0]);
+  const Command* command = commandNamed(args[0]);
+  if (command && std::find(args.begin() + 1, args.end(), "--help") != args.end()) return commandHelp(args[0]);
   return std::nullopt;
-}
-
-// The value of an option written `--name VALUE` or `--name=VALUE` at args[i], moving i past it; nothing if
-// args[i] is not that option.
-std::optional<std::string> optionValue(const std::vector<std::string>& args, size_t& i,
-                                       std::initializer_list<const char*> names) {
-  for (const char* name : names) {
-    const std::string n(name);
-    if (args[i] == n) {
-      if (i + 1 == args.size()) throw Error(n + " needs a value");
-      return args[++i];
-    }
-    if (args[i].rfind(n + "=", 0) == 0) return args[i].substr(n.size() + 1);
-  }
-  return std::nullopt;
-}
-
-// The words after the command: flags, which start with '-' and a letter, and the positional arguments
-// (a negative number too).
-struct Words {
-  std::vector<std::string> positional;
-  RenderOptions options;
-  bool stats = false, quiet = false;  // not render options: they say how a run is watched
-  bool writeAnywhere = false;         // nor these: they are about the files render makes
-  std::string output, outputWord;     // -o's value and the word that gave it, as written; "" without -o
-  std::string tile, region;           // --tile's and --region's values; "" without them
-};
-
-Words readWords(const std::vector<std::string>& args) {
-  Words words;
-  for (size_t i = 1; i < args.size(); ++i) {
-    std::string a = args[i];
-    if (a == "--stats") {
-      words.stats = true;
-      continue;
-    }
-    if (a == "--quiet") {
-      words.quiet = true;
-      continue;
-    }
-    if (a == "--allow-write-anywhere") {
-      words.writeAnywhere = true;
-      continue;
-    }
-    if (const auto v = optionValue(args, i, {"-o", "--output"})) {
-      if (v->empty()) throw Error(a + " needs a file name");
-      words.outputWord = a;
-      words.output = *v;
-      continue;
-    }
-    if (const auto v = optionValue(args, i, {"--tile"})) {
-      words.tile = *v;
-      continue;
-    }
-    if (const auto v = optionValue(args, i, {"--region"})) {
-      words.region = *v;
-      continue;
-    }
-    if (a == "--threads" || a == "--seed") {  // also written --threads=N, --seed=N
-      if (i + 1 == args.size()) throw Error(a + (a == "--seed" ? " needs a number" : " needs a number of threads"));
-      a += "=" + args[++i];
-    }
-    if (a.size() > 1 && a[0] == '-' && (std::isalpha(static_cast<unsigned char>(a[1])) || a[1] == '-')) {
-      words.options = parseFlag(a, words.options);
-    } else {
-      words.positional.push_back(a);
-    }
-  }
-  return words;
 }
 
 // "I/N" of --tile: the I-th of N row bands of a picture `height` rows high.
@@ -283,12 +161,16 @@ Region parseRegion(const std::string& value, int width, int height) {
 
 // The invocation the words make, all but the scene, checked before the scene is read.
 Invocation invocation(const Command& command, const Words& words, std::ostream& err) {
-  if (!command.writesImage) {
-    const char* const forImages = " is for the commands that write images (raycast, render)";
-    if (!words.outputWord.empty()) throw Error(words.outputWord + forImages);
-    if (!words.tile.empty()) throw Error(std::string("--tile") + forImages);
-    if (!words.region.empty()) throw Error(std::string("--region") + forImages);
-  }
+  // The options only some commands take, checked in the order of the table's scopes.
+  const auto refuse = [&](Scope scope, bool takes, const char* why) {
+    for (const std::string& name : words.scoped) {
+      const auto option = std::find_if(optionTable().begin(), optionTable().end(), [&](const Option& o) {
+        return name == o.name || (o.alias && name == o.alias);
+      });
+      if (option->scope == scope && !takes) throw Error(name + why);
+    }
+  };
+  refuse(Scope::Image, command.writesImage, " is for the commands that write images (raycast, render)");
   const std::vector<std::string>& positional = words.positional;
   const bool defaultSize = command.sizeOptional && positional.size() == 1;
   if (positional.size() != size_t(1 + command.numbers) && !defaultSize) {
@@ -296,7 +178,7 @@ Invocation invocation(const Command& command, const Words& words, std::ostream& 
                 std::to_string(1 + command.numbers) + " arguments, found " + std::to_string(positional.size()) +
                 " (usage: " + commandUsage(command) + ")");
   }
-  if (words.stats && std::string(command.name) != "render") throw Error("--stats is for the render command only");
+  refuse(Scope::Render, std::string(command.name) == "render", " is for the render command only");
   if (!words.tile.empty() && !words.region.empty()) {
     throw Error("--tile and --region both name the part to render: give one");
   }
@@ -305,6 +187,9 @@ Invocation invocation(const Command& command, const Words& words, std::ostream& 
   inv.options = words.options;
   if (!words.quiet && isatty(STDERR_FILENO)) inv.progress = &err;  // only render() shows it, and only to a person
   if (words.stats) inv.stats = &err;
+  inv.statsJson = words.statsJson;
+  inv.display = words.display;
+  inv.preview = words.preview;
   inv.errors = &err;
   inv.writeAnywhere = words.writeAnywhere;
   inv.output = words.output;
@@ -331,9 +216,9 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     out << *text;
     return 0;
   }
-  if (!args.empty() && args[0] == "merge") return merge(std::vector<std::string>(args.begin() + 1, args.end()));
   const Command& command = findCommand(args);
-  const Words words = readWords(args);
+  if (command.runWords) return command.runWords(std::vector<std::string>(args.begin() + 1, args.end()), out);
+  const Words words = readWords(args, 1);
   Invocation inv = invocation(command, words, err);
   if (command.writesImage) checkOutput(inv);
   // The image commands render on all their threads: the helpers start while the file is read.

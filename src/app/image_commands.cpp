@@ -1,14 +1,18 @@
 // The commands that write images: raycast (Program 1) and render, whole or one tile of the picture.
 #include <algorithm>
 #include <climits>
-#include <cstdio>
+#include <optional>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
 #include <sys/stat.h>
 
+#include "raytrace/app/display_window.hpp"
 #include "raytrace/app/invocation.hpp"
+#include "raytrace/app/live_picture.hpp"
+#include "raytrace/app/preview_file.hpp"
+#include "raytrace/app/stats_report.hpp"
 #include "raytrace/app/tile_header.hpp"
 #include "raytrace/image/exr_file.hpp"
 #include "raytrace/image/image.hpp"
@@ -16,6 +20,7 @@
 #include "raytrace/image/png_file.hpp"
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/message.hpp"
+#include "raytrace/util/peak_memory.hpp"
 #include "raytrace/util/stopwatch.hpp"
 
 namespace rt {
@@ -115,6 +120,7 @@ void checkOutput(const Invocation& inv) {
     }
   }
   if (!inv.output.empty() && !isFolder(inv.output)) checkImagePath(inv.output);
+  if (!inv.preview.empty()) checkImagePath(inv.preview);
 }
 
 // Each pixel gets the pigment of the closest object, or the background (Program 1's ray cast).
@@ -148,7 +154,6 @@ int renderImage(const Invocation& inv, std::ostream&) {
   RenderTimes times;
   RayCounts rays;
   const RenderOptions& options = inv.options;
-  const RenderMonitor monitor{inv.progress, &times, &rays};
   const std::vector<Target> all = targets(inv, true);
   if (inv.region && all.size() != 1) throw Error("a tile is of one image, but the scene writes several");
   int status = 0;
@@ -173,15 +178,27 @@ int renderImage(const Invocation& inv, std::ostream&) {
   }
   double writing = 0;
   const auto renderTo = [&](const SceneDesc& scene, const std::string& path) {
+    // --display and --preview watch the picture fill in. The preview's last write comes before the image's, so
+    // that no two files are written at once (one temporary file is removed on an interrupt); the window
+    // closes once the image is written.
+    const Region region = inv.region.value_or(wholeImage(inv.width, inv.height));
+    std::optional<LivePicture> picture;
+    if (inv.display || !inv.preview.empty()) picture.emplace(inv.height, region, scene.conventions.toByte);
+    std::optional<DisplayWindow> window;
+    if (inv.display) window.emplace(*picture, *inv.errors);
+    std::optional<PreviewFile> preview;
+    if (!inv.preview.empty()) preview.emplace(*picture, inv.preview, scene.conventions.toByte, *inv.errors);
+    RenderMonitor monitor{inv.progress, &times, &rays, picture ? &*picture : nullptr};
     // A whole PNG is rendered straight to bytes; everything else keeps the floats.
     if (!inv.region && imageFormat(path) == ImageFormat::Png) {
       const Rgb8Image image = renderRgb8(scene, inv.width, inv.height, options, monitor);
+      preview.reset();
       Stopwatch watch;
       writePng(image, path);
       writing += watch.lap();
     } else {
-      Image image = render(scene, inv.width, inv.height, inv.region.value_or(wholeImage(inv.width, inv.height)),
-                           options, monitor);
+      Image image = render(scene, inv.width, inv.height, region, options, monitor);
+      preview.reset();
       Stopwatch watch;
       write(inv, "render", std::move(image), path, scene.conventions.toByte);
       writing += watch.lap();
@@ -194,29 +211,19 @@ int renderImage(const Invocation& inv, std::ostream&) {
     });
   }
   if (inv.stats) {
-    const auto ms = [](double seconds) {
-      char text[32];
-      std::snprintf(text, sizeof text, "%.1f ms", seconds * 1000);
-      return std::string(text);
-    };
-    *inv.stats << "raytrace: load " << ms(inv.loadSeconds) << ", build " << ms(times.build) << ", trace "
-               << ms(times.trace) << ", write " << ms(writing) << ", total "
-               << ms(inv.loadSeconds + times.build + times.trace + writing) << " (" << inv.width << "x" << inv.height
-               << ", " << options.samples * options.samples << (options.samples == 1 ? " eye ray" : " eye rays")
-               << " per pixel, " << options.threads << (options.threads == 1 ? " thread)\n" : " threads)\n");
-    char line[160];
-    std::snprintf(line, sizeof line,
-                  "raytrace: rays %llu eye, %llu gather, %llu shadow, %llu secondary; %.2f M rays/s in trace\n",
-                  (unsigned long long)rays.eye, (unsigned long long)rays.gather, (unsigned long long)rays.shadow,
-                  (unsigned long long)rays.secondary, times.trace > 0 ? double(rays.total()) / times.trace / 1e6 : 0.0);
-    *inv.stats << line;
-    if (options.gi.enabled && options.gi.cache) {
-      std::snprintf(line, sizeof line,
-                    "raytrace: irradiance cache %llu records, %llu lookups, %llu gathered uncached\n",
-                    (unsigned long long)rays.cacheRecords, (unsigned long long)rays.cacheLookups,
-                    (unsigned long long)rays.cacheMisses);
-      *inv.stats << line;
-    }
+    RenderStats stats;
+    stats.width = inv.width;
+    stats.height = inv.height;
+    stats.eyeRays = options.samples * options.samples;
+    stats.threads = options.threads;
+    stats.cache = options.gi.enabled && options.gi.cache;
+    stats.load = inv.loadSeconds;
+    stats.build = times.build;
+    stats.trace = times.trace;
+    stats.write = writing;
+    stats.rays = rays;
+    stats.peakMemory = peakMemory();
+    *inv.stats << (inv.statsJson ? statsJson(stats) : statsText(stats));
   }
   return status;
 }

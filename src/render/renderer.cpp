@@ -58,7 +58,9 @@ void renderRows(const SceneDesc& desc, int width, int height, const Region& regi
       const int x1 = std::min(right, x0 + kTile), y1 = std::min(top, y0 + kTile);
       Tracer<T> tileTracer = tracer;
       for (int y = y0; y < y1; ++y) {
-        store(x0, y, x1, tileTracer.tile(camera, x0, y, x1, y + 1));
+        const Color* colors = tileTracer.tile(camera, x0, y, x1, y + 1);
+        store(x0, y, x1, colors);
+        if (monitor.pixels) monitor.pixels->row(x0, y, x1, colors);
         progress.add(x1 - x0);  // row by row: a -gi tile takes seconds
       }
       if (monitor.rays) {

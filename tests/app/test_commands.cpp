@@ -6,6 +6,7 @@
 
 #include "raytrace/app/arguments.hpp"
 #include "raytrace/app/commands.hpp"
+#include "raytrace/app/stats_report.hpp"
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/message.hpp"
 #include "command_error.hpp"
@@ -56,6 +57,49 @@ TEST_CASE("cli: no command, an unknown command, an unknown option") {
   CHECK(errorOf({"sceneinfo", "a.pov", "--fast"}) == "unknown option '--fast' (see raytrace --help)");
   CHECK(errorOf({"sceneinfo", "a.pov", "--precision=quad"}) == "--precision must be float, double, course or auto, found 'quad'");
   CHECK(errorOf({"sceneinfo", "a.pov", "--sphere=fast"}) == "--sphere must be textbook, robust or auto, found 'fast'");
+}
+
+TEST_CASE("cli: an option a typo away from a known one is named") {
+  CHECK(errorOf({"render", "a.pov", "--thread", "2"}) ==
+        "unknown option '--thread': did you mean '--threads'? (see raytrace --help)");
+  CHECK(errorOf({"render", "a.pov", "--dpeth=3"}) ==
+        "unknown option '--dpeth=3': did you mean '--depth'? (see raytrace --help)");
+  CHECK(errorOf({"render", "a.pov", "--ouptut", "a.png"}) ==
+        "unknown option '--ouptut': did you mean '--output'? (see raytrace --help)");
+  // A known option in the wrong form is unknown as written, with nothing to suggest.
+  CHECK(errorOf({"render", "a.pov", "--depth"}) == "unknown option '--depth' (see raytrace --help)");
+  CHECK(errorOf({"render", "a.pov", "-gi=1"}) == "unknown option '-gi=1' (see raytrace --help)");
+}
+
+TEST_CASE("cli: the help lists every option of the table, each once, with its spelling") {
+  const std::string u = rt::usage();
+  for (const rt::Option& o : rt::optionTable()) {
+    // A label too long for the help's column has a line of its own.
+    const std::string label = rt::optionLabel(o);
+    const std::string line = "\n  " + label + (label.size() <= 30 ? " " : "\n");
+    CHECK(u.find(line) != std::string::npos);
+    CHECK(u.find(line) == u.rfind(line));
+  }
+  CHECK(rt::optionLabel(rt::optionTable().front()) == "--precision=float|double|course|auto");
+  CHECK(u.find("  --stats[=text|json]             after render,") != std::string::npos);
+  CHECK(u.find("  -o, --output FILE               the image file") != std::string::npos);
+}
+
+TEST_CASE("cli: help for one command, help itself and merge included") {
+  const Run help = run({"help", "help"});
+  CHECK(help.status == 0);
+  CHECK(help.out == "usage: raytrace help <command>\nthe usage, summary and options of one command\n");
+  CHECK(run({"help", "merge"}).out ==
+        "usage: raytrace merge -o <image> <tile.exr>... [--threads N]\nthe tiles of one render (--tile, --region) "
+        "joined into its image, exactly as one machine renders it\n");
+  CHECK(run({"merge", "--help"}).out == run({"help", "merge"}).out);
+  const std::string sceneinfo = run({"help", "sceneinfo"}).out;
+  CHECK(sceneinfo.rfind("usage: raytrace sceneinfo <scene> [options]\nthe camera, lights and objects as parsed\n"
+                        "options:\n", 0) == 0);
+  CHECK(sceneinfo.find("image options") == std::string::npos);
+  CHECK(run({"help", "render"}).out.find("image options (raycast, render):\n  -o, --output FILE") != std::string::npos);
+  CHECK(errorOf({"help"}) == "help takes one command, as in: raytrace help render");
+  CHECK(errorOf({"hepl", "render"}) == "unknown command 'hepl': did you mean 'help'? (see raytrace --help)");
 }
 
 TEST_CASE("cli: the -gi flags and their bad values") {
@@ -180,6 +224,63 @@ TEST_CASE("cli: --stats reports render's steps on the error stream, and only for
                                         "0 gathered uncached\n"));
   CHECK(errorOf({"sceneinfo", scene, "--stats"}) == "--stats is for the render command only");
   CHECK(errorOf({"pixelcolor", scene, "8", "6", "1", "1", "--stats"}) == "--stats is for the render command only");
+  CHECK(errorOf({"sceneinfo", scene, "--stats=json"}) == "--stats is for the render command only");
+  CHECK(errorOf({"render", scene, "--stats=xml"}) == "--stats must be text or json, found 'xml'");
+  CHECK(errorOf({"raycast", scene, "8", "6", "--display"}) == "--display is for the render command only");
+  CHECK(errorOf({"raycast", scene, "8", "6", "--preview", "p.png"}) == "--preview is for the render command only");
+}
+
+TEST_CASE("cli: --stats=json gives the text's figures as one JSON object") {
+  const rt::test::TempDir dir;
+  std::string plain = kScene;
+  plain.erase(plain.find(" metallic 1"), 11);  // no warning before the figures
+  const std::string scene = dir.write("s.pov", plain);
+  const std::string out = dir.file("a.png");
+  const Run text = run({"render", scene, "8", "6", "-ss=2", "--threads", "1", "--stats", "-o", out});
+  const Run json = run({"render", scene, "8", "6", "-ss=2", "--threads", "1", "--stats=json", "-o", out});
+  CHECK(json.status == 0);
+  // The rays and the settings are the same in both runs; the times and the memory vary.
+  const std::string rays = "raytrace: rays 192 eye, 0 gather, 98 shadow, 0 secondary; ";
+  CHECK(text.err.find(rays) != std::string::npos);
+  CHECK(text.err.find("(8x6, 4 eye rays per pixel, 1 thread)\n") != std::string::npos);
+  const std::string ms = "[0-9]+\\.[0-9]";
+  CHECK_THAT(json.err, Catch::Matches("\\{\"width\": 8, \"height\": 6, \"eye_rays_per_pixel\": 4, \"threads\": 1, "
+                                      "\"milliseconds\": \\{\"load\": " + ms + ", \"build\": " + ms + ", \"trace\": " +
+                                      ms + ", \"write\": " + ms + ", \"total\": " + ms + "\\}, \"rays\": \\{\"eye\": 192, "
+                                      "\"gather\": 0, \"shadow\": 98, \"secondary\": 0, \"total\": 290\\}, "
+                                      "\"million_rays_per_second\": [0-9]+\\.[0-9]{2}, \"peak_memory_bytes\": [1-9][0-9]*\\}\n"));
+}
+
+TEST_CASE("cli: the stats' text and JSON of the same figures") {
+  rt::RenderStats s;
+  s.width = 640;
+  s.height = 480;
+  s.eyeRays = 9;
+  s.threads = 2;
+  s.load = 0.0012;
+  s.build = 0.25;
+  s.trace = 2;
+  s.write = 0.04;
+  s.rays.eye = 2764800;
+  s.rays.shadow = 1000000;
+  s.rays.secondary = 235200;
+  s.peakMemory = 1048576;
+  CHECK(rt::statsText(s) == "raytrace: load 1.2 ms, build 250.0 ms, trace 2000.0 ms, write 40.0 ms, total 2291.2 ms "
+                            "(640x480, 9 eye rays per pixel, 2 threads)\n"
+                            "raytrace: rays 2764800 eye, 0 gather, 1000000 shadow, 235200 secondary; 2.00 M rays/s "
+                            "in trace\n");
+  CHECK(rt::statsJson(s) == "{\"width\": 640, \"height\": 480, \"eye_rays_per_pixel\": 9, \"threads\": 2, "
+                            "\"milliseconds\": {\"load\": 1.2, \"build\": 250.0, \"trace\": 2000.0, \"write\": 40.0, "
+                            "\"total\": 2291.2}, \"rays\": {\"eye\": 2764800, \"gather\": 0, \"shadow\": 1000000, "
+                            "\"secondary\": 235200, \"total\": 4000000}, \"million_rays_per_second\": 2.00, "
+                            "\"peak_memory_bytes\": 1048576}\n");
+  s.cache = true;
+  s.rays.cacheRecords = 3;
+  s.rays.cacheLookups = 40;
+  CHECK(rt::statsText(s).substr(rt::statsText(s).rfind("raytrace:")) ==
+        "raytrace: irradiance cache 3 records, 40 lookups, 0 gathered uncached\n");
+  CHECK(rt::statsJson(s).find(", \"irradiance_cache\": {\"records\": 3, \"lookups\": 40, \"gathered_uncached\": 0}, "
+                              "\"peak_memory_bytes\"") != std::string::npos);
 }
 
 TEST_CASE("cli: 30,000 identical warnings are one line with their count") {

@@ -296,7 +296,7 @@ TEST_CASE("Bad shading flags are reported with the accepted values", "[render]")
         "--offset must be relative, course, normal or wb, found 'epsilon'");
   CHECK(error({"render", "scene.pov", "4", "4", "--depth=-1"}) == "--depth must be between 0 and 64, found -1");
   CHECK(error({"pixelcolor", "scene.pov", "4", "4", "0", "0", "-altbrdff"}) ==
-        "unknown option '-altbrdff' (see raytrace --help)");
+        "unknown option '-altbrdff': did you mean '-altbrdf'? (see raytrace --help)");
 }
 
 namespace {

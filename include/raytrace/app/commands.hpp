@@ -14,4 +14,15 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
 // The usage text that `raytrace --help` prints.
 std::string usage();
 
+// What the man page and the shell completions say about a command (from the command table).
+struct CommandSummary {
+  std::string name;
+  std::string usage;    // "raytrace render <scene> [<width> <height>] [options]"
+  std::string summary;  // what it does, in one line
+  bool readsScene;      // takes a scene and the options; merge and help take their own words
+  bool writesImage;     // takes the image options too
+  bool isRender;        // takes the options only render takes (Scope::Render)
+};
+std::vector<CommandSummary> commandSummaries();
+
 }  // namespace rt

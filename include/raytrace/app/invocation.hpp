@@ -27,6 +27,9 @@ struct Invocation {
   RenderOptions options;
   std::ostream* progress = nullptr;  // where render shows its progress line (not with --quiet)
   std::ostream* stats = nullptr;     // --stats: where render reports how long each step took
+  bool statsJson = false;            // --stats=json: as one JSON object
+  bool display = false;              // --display: show the picture in a window as it renders
+  std::string preview;               // --preview: the file the picture so far goes to, every few seconds
   std::ostream* errors = nullptr;    // where a command reports a failure it carries on after (a .cli write)
   bool writeAnywhere = false;        // --allow-write-anywhere: a .cli write may leave the current folder
   double loadSeconds = 0;         // the reading of the scene file

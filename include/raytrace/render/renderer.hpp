@@ -17,11 +17,20 @@ struct RenderTimes {
   double trace = 0;  // the pixels
 };
 
+// Sees the pixels as they are computed (--display, --preview): the colours of pixels x0 … x1 − 1 of the
+// picture's row y (counted upward, as Image::at counts). Called on the render's threads, several at once.
+class PixelObserver {
+ public:
+  virtual ~PixelObserver() = default;
+  virtual void row(int x0, int y, int x1, const Color* colors) = 0;
+};
+
 // How a render is watched, apart from what it computes: nothing here changes a pixel.
 struct RenderMonitor {
   std::ostream* progress = nullptr;  // where render() shows its progress line, if anywhere
   RenderTimes* times = nullptr;      // where render() adds how long it took, if anywhere
   RayCounts* rays = nullptr;         // where render() adds the rays it traced, if anywhere
+  PixelObserver* pixels = nullptr;   // what sees each row of pixels as soon as it is computed, if anything
 };
 
 // Renders the scene at width × height.
