@@ -11,7 +11,7 @@
 //   static constexpr bool kFloatErrorBound  whether float's error on it is bounded and tested; if not, a scene
 //                                           holding it is computed in double (scene/arithmetic)
 //   void describe(std::ostream&) const      its `sceneinfo` lines
-//   make<T>(const ObjectBuild&) const       its runtime object (accel/scene)
+//   make<T>(const ObjectBuild&) const       its runtime object (shapes/make_object, under its transforms)
 #pragma once
 
 #include <array>
