@@ -10,6 +10,7 @@
 #include "raytrace/app/arguments.hpp"
 #include "raytrace/app/invocation.hpp"
 #include "raytrace/app/merge.hpp"
+#include "raytrace/app/tile_header.hpp"
 #include "raytrace/parse/scene_file.hpp"
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/message.hpp"
@@ -52,6 +53,13 @@ const std::vector<Command>& commands() {
 constexpr const char* kMergeUsage = "raytrace merge -o <image> <tile.exr>... [--threads N]";
 constexpr const char* kMergeSummary =
     "the tiles of one render (--tile, --region) joined into its image, exactly as one machine renders it";
+constexpr const char* kMergeOptions =
+    "options:\n"
+    "  -o, --output FILE               the image (.png, .hdr or .exr; an .exr keeps the tiles' attributes)\n"
+    "  --threads N                     convert on N threads (default: every core)\n"
+    "  --for <scene> <width> <height> [render options]\n"
+    "                                  last: every tile must be of this render (the scene's contents,\n"
+    "                                  size, options and program version), or merge writes nothing\n";
 
 std::string commandUsage(const Command& c) {
   return std::string("raytrace ") + c.name + " <scene>" + (c.args[0] ? " " : "") + c.args;
@@ -102,7 +110,8 @@ const char* const kImageOptions =
     "  --tile I/N                      render only the I-th of N bands of rows (0 <= I < N), written to\n"
     "                                  -o NAME.exr as a tile for merge\n"
     "  --region X0,Y0,X1,Y1            render only columns X0 to X1-1 and rows Y0 to Y1-1, rows counted\n"
-    "                                  from the top, written to -o NAME.exr as a tile for merge\n";
+    "                                  from the top, written to -o NAME.exr as a tile for merge\n"
+    "  --resume                        keep a tile already at -o if it is of this very render\n";
 
 // The command nearest to `word` by edit distance, if a typo's distance away (at most 2).
 const char* nearestCommand(const std::string& word) {
@@ -154,7 +163,7 @@ const Command& findCommand(const std::vector<std::string>& args) {
 
 // `raytrace help <command>` and `raytrace <command> --help`.
 std::string commandHelp(const std::string& name) {
-  if (name == "merge") return std::string("usage: ") + kMergeUsage + "\n" + kMergeSummary + "\n";
+  if (name == "merge") return std::string("usage: ") + kMergeUsage + "\n" + kMergeSummary + "\n" + kMergeOptions;
   const Command* c = commandNamed(name);
   if (!c) unknownCommand(name);
   return "usage: " + commandUsage(*c) + " [options]\n" + c->summary + "\n" + kRenderOptions +
@@ -209,6 +218,7 @@ struct Words {
   RenderOptions options;
   bool stats = false, quiet = false;  // not render options: they say how a run is watched
   bool writeAnywhere = false;         // nor these: they are about the files render makes
+  bool resume = false;
   std::string output, outputWord;     // -o's value and the word that gave it, as written; "" without -o
   std::string tile, region;           // --tile's and --region's values; "" without them
 };
@@ -227,6 +237,10 @@ Words readWords(const std::vector<std::string>& args) {
     }
     if (a == "--allow-write-anywhere") {
       words.writeAnywhere = true;
+      continue;
+    }
+    if (a == "--resume") {
+      words.resume = true;
       continue;
     }
     if (const auto v = optionValue(args, i, {"-o", "--output"})) {
@@ -289,6 +303,9 @@ Invocation invocation(const Command& command, const Words& words, std::ostream& 
     if (!words.tile.empty()) throw Error(std::string("--tile") + forImages);
     if (!words.region.empty()) throw Error(std::string("--region") + forImages);
   }
+  if (words.resume && words.tile.empty() && words.region.empty()) {
+    throw Error("--resume is for tiles: give --tile or --region");
+  }
   const std::vector<std::string>& positional = words.positional;
   const bool defaultSize = command.sizeOptional && positional.size() == 1;
   if (positional.size() != size_t(1 + command.numbers) && !defaultSize) {
@@ -307,6 +324,7 @@ Invocation invocation(const Command& command, const Words& words, std::ostream& 
   if (words.stats) inv.stats = &err;
   inv.errors = &err;
   inv.writeAnywhere = words.writeAnywhere;
+  inv.resume = words.resume;
   inv.output = words.output;
   if (defaultSize) {
     inv.width = inv.height = kDefaultSide;
@@ -324,6 +342,27 @@ Invocation invocation(const Command& command, const Words& words, std::ostream& 
   return inv;
 }
 
+// `merge ... [--for SCENE WIDTH HEIGHT [render options]]`: the words after --for are read as a render's, and
+// the header its whole picture would have is what every tile must have.
+int mergeCommand(const std::vector<std::string>& args, std::ostream& err) {
+  const auto at = std::find(args.begin() + 1, args.end(), "--for");
+  const std::vector<std::string> own(args.begin() + 1, at);
+  if (at == args.end()) return merge(own);
+  std::vector<std::string> request{"render"};
+  request.insert(request.end(), at + 1, args.end());
+  const Words words = readWords(request);
+  if (!words.output.empty() || !words.tile.empty() || !words.region.empty() || words.resume) {
+    throw Error("merge's --for names the whole render: its scene, size and render options only");
+  }
+  if (words.positional.size() != 3) {
+    throw Error("merge's --for takes the scene, width and height, then render options (see raytrace help merge)");
+  }
+  Invocation inv = invocation(*commandNamed("render"), words, err);
+  inv.progress = nullptr;
+  inv.scene = loadScene(inv.scenePath, inv.options.threads);
+  return merge(own, TileRequest{tileHeader(inv, "render"), inv.width, inv.height});
+}
+
 }  // namespace
 
 int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -331,7 +370,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     out << *text;
     return 0;
   }
-  if (!args.empty() && args[0] == "merge") return merge(std::vector<std::string>(args.begin() + 1, args.end()));
+  if (!args.empty() && args[0] == "merge") return mergeCommand(args, err);
   const Command& command = findCommand(args);
   const Words words = readWords(args);
   Invocation inv = invocation(command, words, err);

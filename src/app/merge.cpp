@@ -10,6 +10,7 @@
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/message.hpp"
 #include "raytrace/util/parallel.hpp"
+#include "raytrace/util/path.hpp"
 
 namespace rt {
 
@@ -41,27 +42,19 @@ MergeArguments parseMerge(const std::vector<std::string>& args) {
   return m;
 }
 
-// The first attribute, the part aside, in which `tile` differs from `first`: "" if none.
-std::string difference(const ExrImage& tile, const ExrImage& first) {
-  auto keys = tile.attributes;
-  keys.insert(first.attributes.begin(), first.attributes.end());
-  for (const auto& [key, ignored] : keys) {
-    if (key == kTilePartAttribute) continue;
-    const auto a = tile.attributes.find(key), b = first.attributes.find(key);
-    const std::string mine = a == tile.attributes.end() ? "none" : quote(a->second);
-    const std::string theirs = b == first.attributes.end() ? "none" : quote(b->second);
-    if (mine != theirs) return "its " + key + " is " + mine + ", not " + theirs;
-  }
-  return "";
-}
-
 std::string pixel(int x, int y) { return "column " + std::to_string(x) + ", row " + std::to_string(y); }
 
 }  // namespace
 
-int merge(const std::vector<std::string>& args) {
+int merge(const std::vector<std::string>& args, const std::optional<TileRequest>& request) {
   const MergeArguments m = parseMerge(args);
   checkImagePath(m.output);
+  for (const std::string& name : m.tiles) {
+    if (sameFile(name, m.output)) {
+      throw Error("-o " + quote(m.output, kMaxQuotedPath) + " is the tile " + quote(name, kMaxQuotedPath) +
+                  ": merge would replace it (name another file)");
+    }
+  }
   std::optional<ExrImage> first;
   std::optional<Image> image;
   std::vector<int> owner;  // per pixel of the picture, top row first: 1 + the index of the tile holding it
@@ -71,12 +64,22 @@ int merge(const std::vector<std::string>& args) {
     if (!tile.attributes.count("raytrace.command")) {
       throw Error(quote(name, kMaxQuotedPath) + " is not a raytrace tile: it has no raytrace.command attribute");
     }
+    if (request) {
+      std::string why = headerDifference(tile.attributes, request->header, true);
+      if (why.empty() && (tile.width != request->width || tile.height != request->height)) {
+        why = "its picture is " + std::to_string(tile.width) + "x" + std::to_string(tile.height) + ", not " +
+              std::to_string(request->width) + "x" + std::to_string(request->height);
+      }
+      if (!why.empty()) {
+        throw Error(quote(name, kMaxQuotedPath) + " is not a tile of the render asked for: " + why);
+      }
+    }
     if (!first) {
       toByteOf(tile.attributes, name);
       image.emplace(tile.width, tile.height);
       owner.assign(size_t(tile.width) * size_t(tile.height), 0);
     } else {
-      std::string why = difference(tile, *first);
+      std::string why = headerDifference(tile.attributes, first->attributes, true);
       if (why.empty() && (tile.width != first->width || tile.height != first->height)) why = "its size differs";
       if (!why.empty()) {
         throw Error(quote(name, kMaxQuotedPath) + " is a tile of another render than " +
@@ -109,7 +112,16 @@ int merge(const std::vector<std::string>& args) {
                 " pixels of the picture uncovered, the first at " + pixel(int(at % size_t(first->width)),
                                                                           int(at / size_t(first->width))));
   }
-  writeImage(*image, m.output, toByteOf(first->attributes, m.tiles[0]), m.threads);
+  if (imageFormat(m.output) == ImageFormat::Exr) {
+    // The one-machine render's header: the part is the whole picture.
+    auto attributes = first->attributes;
+    attributes[kTilePartAttribute] = "0,0," + std::to_string(first->width) + "," + std::to_string(first->height);
+    writeExr(ExrImage{first->width, first->height, wholeImage(first->width, first->height), std::move(*image),
+                      std::move(attributes)},
+             m.output);
+  } else {
+    writeImage(*image, m.output, toByteOf(first->attributes, m.tiles[0]), m.threads);
+  }
   return 0;
 }
 

@@ -31,6 +31,7 @@ struct Invocation {
   std::ostream* stats = nullptr;     // --stats: where render reports how long each step took
   std::ostream* errors = nullptr;    // where a command reports a failure it carries on after (a .cli write)
   bool writeAnywhere = false;        // --allow-write-anywhere: a .cli write may leave the current folder
+  bool resume = false;               // --resume: a tile already at -o, of this very render, is kept
   double loadSeconds = 0;         // the reading of the scene file
 
   // The eye rays' grid the arithmetic is chosen for; commands without an image size get the default view.
