@@ -109,7 +109,8 @@ void write(const Invocation& inv, const char* command, Image&& image, const std:
 void checkTarget(const Invocation& inv, const std::string& path) {
   checkImagePath(path);
   if (sameFile(path, inv.scenePath)) {
-    throw Error("cannot write " + quote(path, kMaxQuotedPath) + ": it is the scene file, which the image would replace");
+    throw Error("cannot write " + quote(path, kMaxQuotedPath) +
+                ": it is the scene file, which the image would replace");
   }
 }
 

@@ -87,8 +87,9 @@ SceneScale sceneScale(const SceneDesc& scene) {
   double largest = maxAbs(scene.camera.location);
   glm::dvec3 lo = scene.camera.location, hi = scene.camera.location;
   double smallest = std::numeric_limits<double>::infinity();
+  double largestTransform = 1;
   for (const ObjectDesc& o : scene.objects) {
-    const glm::dmat4 worldFromObject = o.worldFromObject();
+    const glm::dmat4 worldFromObject = composeTransforms<double>(o.transforms, &largestTransform);
     const Stretch s = stretch(worldFromObject);
     const Ball local = boundingBall(o.shape);
     smallest = std::min(smallest, s.least * smallestFeature(o.shape));
@@ -98,7 +99,7 @@ SceneScale sceneScale(const SceneDesc& scene) {
     lo = glm::min(lo, center - radius);
     hi = glm::max(hi, center + radius);
   }
-  return {std::max({largest, glm::length(hi - lo), 1.0}), smallest, lo, hi};
+  return {std::max({largest, glm::length(hi - lo), 1.0}), smallest, lo, hi, largestTransform};
 }
 
 double precisionBudget(const SceneDesc& scene) { return precisionBudget(sceneScale(scene)); }
