@@ -1,6 +1,7 @@
 #include "raytrace/app/merge.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <optional>
 
 #include "raytrace/app/arguments.hpp"
@@ -8,6 +9,7 @@
 #include "raytrace/image/exr_file.hpp"
 #include "raytrace/image/image_file.hpp"
 #include "raytrace/util/error.hpp"
+#include "raytrace/util/limits.hpp"
 #include "raytrace/util/message.hpp"
 #include "raytrace/util/parallel.hpp"
 #include "raytrace/util/path.hpp"
@@ -76,6 +78,14 @@ int merge(const std::vector<std::string>& args, const std::optional<TileRequest>
     }
     if (!first) {
       toByteOf(tile.attributes, name);
+      // The picture and which tile holds each pixel, before taking them: a tile of a few bytes may name a
+      // picture of 30000 x 30000.
+      const std::uint64_t pixels = std::uint64_t(tile.width) * std::uint64_t(tile.height);
+      const std::string shortage =
+          memoryShortage("merging into a " + std::to_string(tile.width) + "x" + std::to_string(tile.height) +
+                             " picture",
+                         pixels * (sizeof(Color) + sizeof(int)), availableMemory());
+      if (!shortage.empty()) throw Error(quote(name, kMaxQuotedPath) + ": " + shortage);
       image.emplace(tile.width, tile.height);
       owner.assign(size_t(tile.width) * size_t(tile.height), 0);
     } else {

@@ -1,7 +1,13 @@
 #include "raytrace/image/exr_file.hpp"
 
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
 #include <exception>
+#include <fstream>
 #include <vector>
+
+#include <sys/stat.h>
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -79,6 +85,40 @@ int side(int lo, int hi, const char* what) {
   return int(n);
 }
 
+// The header's attribute sizes checked against the file before OpenEXR reads them: it allocates what an
+// attribute declares, so 27 bytes declaring 2 GiB would take 2 GiB. A value cannot be longer than the bytes
+// left in the file. Also refused here: what is not a regular file (a FIFO would block), a multi-part or deep
+// file (not a tile).
+void checkHeader(const std::string& path) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) throw Error(std::strerror(errno));
+  if (!S_ISREG(st.st_mode)) throw Error("it is not a regular file");
+  std::ifstream in(path, std::ios::binary);
+  unsigned char start[8];
+  if (!in.read(reinterpret_cast<char*>(start), 8)) throw Error("it is too short for an OpenEXR file");
+  if (start[0] != 0x76 || start[1] != 0x2f || start[2] != 0x31 || start[3] != 0x01) {
+    throw Error("it is not an OpenEXR file");
+  }
+  if (start[5] & 0x18) throw Error("it is a multi-part or deep OpenEXR file, not a tile");
+  const std::uint64_t size = std::uint64_t(st.st_size);
+  for (;;) {
+    std::string name, type;
+    if (!std::getline(in, name, '\0')) throw Error("its header ends early");
+    if (name.empty()) return;
+    if (!std::getline(in, type, '\0')) throw Error("its header ends early");
+    unsigned char n[4];
+    if (!in.read(reinterpret_cast<char*>(n), 4)) throw Error("its header ends early");
+    const std::uint64_t bytes = std::uint64_t(n[0]) | std::uint64_t(n[1]) << 8 | std::uint64_t(n[2]) << 16 |
+                                std::uint64_t(n[3]) << 24;
+    const std::uint64_t at = std::uint64_t(in.tellg());
+    if (bytes > size - at) {
+      throw Error("its attribute " + quote(name) + " declares " + std::to_string(bytes) + " bytes, but only " +
+                  std::to_string(size - at) + " are left in the file");
+    }
+    in.seekg(std::streamoff(bytes), std::ios::cur);
+  }
+}
+
 }  // namespace
 
 void writeExr(const ExrImage& image, const std::string& path) {
@@ -91,6 +131,7 @@ void writeExr(const Image& image, const std::string& path) {
 
 ExrImage readExr(const std::string& path) {
   try {
+    checkHeader(path);
     Imf::InputFile file(path.c_str());
     const Imf::Header& header = file.header();
     const Imath::Box2i display = header.displayWindow(), data = header.dataWindow();
@@ -110,7 +151,8 @@ ExrImage readExr(const std::string& path) {
     file.readPixels(data.min.y, data.max.y);
     return ExrImage{width, height, window, std::move(pixels), std::move(attributes)};
   } catch (const std::exception& e) {
-    throw Error("cannot read " + quote(path, kMaxQuotedPath) + ": " + e.what());
+    // One bounded line: OpenEXR's own messages repeat the path, unquoted, over several lines.
+    throw Error("cannot read " + quote(path, kMaxQuotedPath) + ": " + printable(e.what(), kMaxQuotedPath));
   }
 }
 

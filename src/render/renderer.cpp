@@ -1,11 +1,15 @@
 #include "raytrace/render/renderer.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <mutex>
 #include <optional>
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "raytrace/util/error.hpp"
+#include "raytrace/util/limits.hpp"
+#include "raytrace/util/message.hpp"
 #include "raytrace/util/parallel.hpp"
 #include "raytrace/util/progress.hpp"
 #include "raytrace/util/stopwatch.hpp"
@@ -24,12 +28,21 @@ constexpr int kTile = 32;
 // finished row of a tile to store(x0, y, x1, colours): the colours of pixels x0 … x1 − 1 of row y (counted
 // upward, as Image::at counts).
 template <class Store>
-void renderRows(const SceneDesc& desc, int width, int height, const Region& region, const RenderOptions& options,
+void renderRows(const SceneDesc& desc, int width, int height, const Region& region, const RenderOptions& requested,
                 const RenderMonitor& monitor, const Store& store) {
   const Arithmetic arithmetic =
-      chooseArithmetic(desc, options.arithmetic, View{width * options.samples, height * options.samples});
+      chooseArithmetic(desc, requested.arithmetic, View{width * requested.samples, height * requested.samples});
   withPrecision(arithmetic.tier, [&](auto tag) {
     using T = decltype(tag);
+    // Each thread's tracer keeps shadow rays for every light: a million lights take gigabytes. As many
+    // threads as there is memory for (the image is the same on any number), and at least one.
+    const std::uint64_t perTracer = desc.lights.size() * Tracer<T>::bytesPerLight(requested);
+    const std::uint64_t available = availableMemory();
+    const std::string shortage =
+        memoryShortage("rendering " + thousands(desc.lights.size()) + " lights", perTracer, available);
+    if (!shortage.empty()) throw Error(shortage);
+    RenderOptions options = requested;
+    if (perTracer > 0) options.threads = int(std::min(std::uint64_t(options.threads), available / perTracer));
     Stopwatch watch;
     const Scene<T> scene(desc, arithmetic, options.hierarchy, options.threads);
     const Camera<T> camera(desc.camera, width, height);

@@ -128,6 +128,32 @@ TEST_CASE("image files: reading what is not OpenEXR names the file") {
   CHECK_THROWS_WITH(rt::readExr(dir.file("none.exr")), Catch::StartsWith("cannot read '" + dir.file("none.exr") + "': "));
 }
 
+// Issue 35: 27 bytes declaring a 2 GiB attribute took 2.1 GB before OpenEXR found the file short; a FIFO
+// blocked merge for ever; OpenEXR's own message repeated the path over several lines.
+TEST_CASE("image files: an OpenEXR header is checked against the file before OpenEXR allocates what it says") {
+  const rt::test::TempDir dir;
+  // Magic, version 2, then an attribute "a" of type "s" declaring 0x7fffffff bytes, and 11 bytes more.
+  const std::string huge("\x76\x2f\x31\x01\x02\x00\x00\x00" "a\0s\0\xff\xff\xff\x7f" "12345678901", 27);
+  const std::string path = dir.write("huge.exr", huge);
+  CHECK_THROWS_WITH(rt::readExr(path), "cannot read '" + path +
+                                           "': its attribute 'a' declares 2147483647 bytes, but only 11 are left in the file");
+  const std::string multi = dir.write("multi.exr", std::string("\x76\x2f\x31\x01\x02\x10\x00\x00\0", 9));
+  CHECK_THROWS_WITH(rt::readExr(multi),
+                    "cannot read '" + multi + "': it is a multi-part or deep OpenEXR file, not a tile");
+  REQUIRE(mkfifo(dir.file("fifo.exr").c_str(), 0600) == 0);
+  CHECK_THROWS_WITH(rt::readExr(dir.file("fifo.exr")),
+                    "cannot read '" + dir.file("fifo.exr") + "': it is not a regular file");
+  // A file cut short: OpenEXR's message, on one line.
+  rt::writeExr(rt::Image(4, 4), dir.file("whole.exr"));
+  const std::string cut = dir.write("cut.exr", rt::test::readAll(dir.file("whole.exr")).substr(0, 340));
+  try {
+    rt::readExr(cut);
+    FAIL("read a file cut short");
+  } catch (const rt::Error& e) {
+    CHECK(std::string(e.what()).find('\n') == std::string::npos);
+  }
+}
+
 TEST_CASE("output file: a symbolic link planted at any name in the folder is never written through") {
   const rt::test::TempDir dir;
   const std::string victim = dir.write("victim.txt", "keep me");

@@ -50,6 +50,13 @@ template <class T> class Tracer {
   // The rays traced so far, by kind.
   const RayCounts& counts() const { return counts_; }
 
+  // The memory a tracer takes per light of the scene with `options`: each batch level's shadow rays of a
+  // packet, and the shadow cache. The renderer checks it before giving each thread a tracer.
+  static std::uint64_t bytesPerLight(const RenderOptions& options) {
+    const std::uint64_t levels = 1 + std::uint64_t(options.gi.enabled ? options.gi.bounceCount() : 0);
+    return levels * Bvh<T>::kPacket * sizeof(std::optional<ShadowRay>) + sizeof(const Object<T>*);
+  }
+
  private:
   struct Traced {
     Color color;
