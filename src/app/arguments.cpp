@@ -148,7 +148,7 @@ RenderOptions parseFlag(const std::string& flag, RenderOptions o) {
     char* end = nullptr;
     const double a = std::strtod(p, &end);
     if (*p == '\0' || *end != '\0' || errno == ERANGE || !(a > 0 && a <= 1)) {
-      throw Error(std::string("--gi-cache must be a number above 0 and at most 1, found '") + p + "'");
+      throw Error("--gi-cache must be a number above 0 and at most 1, found " + quote(p));
     }
     o.gi.cache = float(a);
     return o;

@@ -219,7 +219,7 @@ struct Words {
   bool stats = false, quiet = false;  // not render options: they say how a run is watched
   bool writeAnywhere = false;         // nor these: they are about the files render makes
   bool resume = false;
-  std::string output, outputWord;     // -o's value and the word that gave it, as written; "" without -o
+  std::string output, outputWord;     // -o's value and the option's name ("-o" or "--output"); "" without -o
   std::string tile, region;           // --tile's and --region's values; "" without them
 };
 
@@ -245,7 +245,7 @@ Words readWords(const std::vector<std::string>& args) {
     }
     if (const auto v = optionValue(args, i, {"-o", "--output"})) {
       if (v->empty()) throw Error(a + " needs a file name");
-      words.outputWord = a;
+      words.outputWord = a.rfind("--output", 0) == 0 ? "--output" : "-o";  // the name alone: no value echoed
       words.output = *v;
       continue;
     }

@@ -77,6 +77,9 @@ TEST_CASE("image commands: bad -o values are one whole message, before the scene
   CHECK(errorOf({"render", scene, "-o"}) == "-o needs a value");
   CHECK(errorOf({"render", scene, "--output="}) == "--output= needs a file name");
   CHECK(errorOf({"sceneinfo", scene, "-o", "a.png"}) == "-o is for the commands that write images (raycast, render)");
+  // Issue 35: the value of --output= was echoed raw, terminal escapes and all.
+  CHECK(errorOf({"sceneinfo", scene, "--output=\x1b[2J" + std::string(5000, 'a')}) ==
+        "--output is for the commands that write images (raycast, render)");
   CHECK(errorOf({"render", scene, "--tile", "0/2"}) == "a tile is written as OpenEXR: name it with -o NAME.exr");
   CHECK(errorOf({"render", scene, "--tile", "0/2", "-o", "t.png"}) ==
         "cannot write 't.png': a tile is written as OpenEXR (name it .exr)");
@@ -274,6 +277,13 @@ TEST_CASE("image commands: merge --for refuses a tile of another request; an .ex
         "merge's --for takes the scene, width and height, then render options (see raytrace help merge)");
   CHECK(errorOf({"merge", "-o", out, t0, t1, "--for", scene, "32", "24", "--tile", "0/2"}) ==
         "merge's --for names the whole render: its scene, size and render options only");
+  // An attribute's name from a file is shown as any other text from input (issue 35: terminal escapes passed).
+  rt::ExrImage odd = rt::readExr(t1);
+  odd.attributes["\x1b[2J"] = "x";
+  rt::writeExr(odd, dir.file("odd.exr"));
+  CHECK(errorOf({"merge", "-o", out, t0, dir.file("odd.exr")}) == "'" + dir.file("odd.exr") +
+                                                                   "' is a tile of another render than '" + t0 +
+                                                                   "': its \\x1B[2J is 'x', not none");
   // Merged to OpenEXR: the one-machine file, byte for byte, so a tile of its render in turn.
   const std::string merged = dir.file("merged.exr"), one = dir.file("one.exr");
   REQUIRE(outputOf({"merge", "-o", merged, t1, t0}).empty());
