@@ -178,8 +178,10 @@ TEST_CASE("output file: a name of 251 characters, the most with room for no suff
   CHECK(dir.names() == std::vector<std::string>{name});
 }
 
-TEST_CASE("output file: SIGTERM, SIGINT or SIGHUP while writing removes the temporary file and keeps the old one") {
-  for (const int sig : {SIGTERM, SIGINT, SIGHUP}) {
+// Issue 35: QUIT, USR1, ALRM, PIPE and XCPU used to leave the temporary file behind.
+TEST_CASE("output file: a signal that ends the process while writing removes the temporary file, keeps the old one") {
+  for (const int sig : {SIGTERM, SIGINT, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGPIPE, SIGXCPU, SIGVTALRM,
+                        SIGPROF}) {
     CAPTURE(sig);
     const rt::test::TempDir dir;
     const std::string target = dir.write("out.png", "the previous picture");
