@@ -51,3 +51,22 @@ cp "$tiles/tile-3.exr" keep.exr
 grep -qF "is not a tile of the render asked for: its raytrace.options is '', not '-ss=3'" err || { cat err; fail "merge's message"; }
 [ ! -e late.png ] || fail "merge wrote an image from a stale tile"
 echo "render-parallel: merge --for refuses a stale tile"
+
+# Mistakes found before any tile is rendered (issue 35): an absurd tile count, more tiles than rows, an image
+# merge cannot write; and a scene whose name starts with '-' is a scene, not an option.
+expect_error() {
+  local message=$1
+  shift
+  "$tool" --raytrace "$raytrace" "$@" >log 2>&1 && fail "render-parallel $* succeeded"
+  [ "$(cat log)" = "render-parallel: error: $message" ] || { cat log; fail "render-parallel $*: the message"; }
+}
+expect_error "-n must be a whole number of tiles from 1 to 32768, found '99999999999999999999'" \
+  -n 99999999999999999999 -o x.png scene.pov 8 6
+expect_error "-n 7 is more tiles than the 6 rows" -n 7 -o x.png scene.pov 8 6
+expect_error "the merged image must be .png, .hdr or .exr, found 'x.jpg'" -n 2 -o x.jpg scene.pov 8 6
+[ ! -e x.png.tiles ] && [ ! -e x.jpg.tiles ] || fail "a refused render left a tiles folder"
+cp scene.pov ./-x.pov
+"$tool" --raytrace "$raytrace" -n 2 -o dash.png -- -x.pov 8 6 >log 2>&1 || { cat log; fail "a scene named -x.pov"; }
+"$raytrace" render ./-x.pov 8 6 --quiet -o one.png
+cmp one.png dash.png || fail "the scene named -x.pov differs from the one-machine render"
+echo "render-parallel: bad tile counts and image names refused at once; a scene named -x.pov rendered"

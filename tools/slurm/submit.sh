@@ -34,7 +34,7 @@ while (($#)); do
   esac
 done
 (($# >= 3)) || die "give the scene, width and height (see --help)"
-[[ $tiles =~ ^[1-9][0-9]*$ ]] || die "-n must be a whole number of tiles"
+[[ $tiles =~ ^[1-9][0-9]{0,4}$ ]] || die "-n must be a whole number of tiles from 1 to 32768"
 [ -n "$output" ] || die "give the merged image's name with -o"
 scene=$1 width=$2 height=$3
 shift 3
@@ -43,8 +43,9 @@ shift 3
 case $output in /*) ;; *) output=$PWD/$output ;; esac
 dir=$output.tiles
 mkdir -p "$dir"
-name=$(basename "$scene")
-cmp -s "$scene" "$dir/$name" 2>/dev/null || cp "$scene" "$dir/$name"
+name=$(basename -- "$scene")
+cmp -s "$scene" "$dir/$name" 2>/dev/null || cp -- "$scene" "$dir/$name"
+[[ $name == -* ]] && name=./$name  # not an option to raytrace
 cd "$dir"
 
 job=$(sbatch --parsable "${extra[@]}" --array="0-$((tiles - 1))" --cpus-per-task="$cpus" \
