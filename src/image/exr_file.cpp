@@ -141,7 +141,14 @@ ExrImage readExr(const std::string& path) {
                         data.max.y - display.min.y + 1};
     Image pixels(side(data.min.x, data.max.x, "data"), side(data.min.y, data.max.y, "data"));
     for (const char* c : kChannels) {
-      if (!header.channels().findChannel(c)) throw Error("it has no " + std::string(c) + " channel");
+      const Imf::Channel* channel = header.channels().findChannel(c);
+      if (!channel) throw Error("it has no " + std::string(c) + " channel");
+      if (channel->type != Imf::FLOAT) throw Error("its " + std::string(c) + " channel is not 32-bit float");
+    }
+    // A tile re-saved lossily keeps its attributes but not the render's floats. B44 and DWA lose only half
+    // floats, refused above; PXR24 rounds 32-bit ones.
+    if (header.compression() == Imf::PXR24_COMPRESSION) {
+      throw Error("it is compressed with PXR24, which rounds its floats: they are not the render's");
     }
     std::map<std::string, std::string> attributes;
     for (auto a = header.begin(); a != header.end(); ++a) {

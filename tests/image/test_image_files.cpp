@@ -5,12 +5,20 @@
 #include <cmath>
 #include <csignal>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <stb/stb_image.h>
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <Imath/half.h>
 
 #include "raytrace/image/exr_file.hpp"
 #include "raytrace/image/image_file.hpp"
@@ -143,6 +151,30 @@ TEST_CASE("image files: an OpenEXR header is checked against the file before Ope
   REQUIRE(mkfifo(dir.file("fifo.exr").c_str(), 0600) == 0);
   CHECK_THROWS_WITH(rt::readExr(dir.file("fifo.exr")),
                     "cannot read '" + dir.file("fifo.exr") + "': it is not a regular file");
+  // Re-saved lossily, as half floats (DWAB's loss) or with PXR24, a tile is not the render's floats (issue 35:
+  // such tiles merged with exit 0).
+  for (const auto& [compression, type] : {std::pair{Imf::DWAB_COMPRESSION, Imf::HALF},
+                                          std::pair{Imf::PXR24_COMPRESSION, Imf::FLOAT}}) {
+    Imf::Header header(4, 4);
+    header.compression() = compression;
+    for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(type));
+    std::vector<float> floats(16, 0.5f);
+    std::vector<half> halves(16, half(0.5f));
+    char* base = type == Imf::HALF ? reinterpret_cast<char*>(halves.data()) : reinterpret_cast<char*>(floats.data());
+    const size_t size = type == Imf::HALF ? sizeof(half) : sizeof(float);
+    {
+      Imf::OutputFile file(dir.file("saved.exr").c_str(), header);
+      Imf::FrameBuffer frame;
+      for (const char* c : {"R", "G", "B"}) frame.insert(c, Imf::Slice(type, base, size, 4 * size));
+      file.setFrameBuffer(frame);
+      file.writePixels(4);
+    }
+    CHECK_THROWS_WITH(rt::readExr(dir.file("saved.exr")),
+                      "cannot read '" + dir.file("saved.exr") + "': " +
+                          (type == Imf::HALF ? std::string("its R channel is not 32-bit float")
+                                             : "it is compressed with PXR24, which rounds its floats: they are not "
+                                               "the render's"));
+  }
   // A file cut short: OpenEXR's message, on one line.
   rt::writeExr(rt::Image(4, 4), dir.file("whole.exr"));
   const std::string cut = dir.write("cut.exr", rt::test::readAll(dir.file("whole.exr")).substr(0, 340));
