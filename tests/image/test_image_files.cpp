@@ -60,6 +60,18 @@ TEST_CASE("image files: a folder that is missing, not a folder or not writable i
   CHECK_THROWS_WITH(rt::checkImagePath(dir.file("no/a.png")),
                     "cannot write '" + dir.file("no/a.png") + "': No such file or directory");
   CHECK_THROWS_WITH(rt::checkImagePath(file + "/a.png"), "cannot write '" + file + "/a.png': Not a directory");
+  // Issue 35: a read-only image or a FIFO named x.png was replaced without a word.
+  const std::string old = dir.write("old.png", "x");
+  CHECK_NOTHROW(rt::checkImagePath(old));
+  REQUIRE(chmod(old.c_str(), 0444) == 0);
+  CHECK_THROWS_WITH(rt::checkImagePath(old),
+                    "cannot write '" + old + "': it is read-only (make it writable to replace it)");
+  REQUIRE(mkfifo(dir.file("x.png").c_str(), 0600) == 0);
+  CHECK_THROWS_WITH(rt::checkImagePath(dir.file("x.png")),
+                    "cannot write '" + dir.file("x.png") + "': something other than a file is there");
+  REQUIRE(mkdir(dir.file("d.png").c_str(), 0700) == 0);
+  CHECK_THROWS_WITH(rt::checkImagePath(dir.file("d.png")),
+                    "cannot write '" + dir.file("d.png") + "': something other than a file is there");
 }
 
 TEST_CASE("image files: .hdr holds the unclamped radiance to RGBE's 8-bit mantissa") {
