@@ -218,7 +218,7 @@ struct Words {
   RenderOptions options;
   bool stats = false, quiet = false;  // not render options: they say how a run is watched
   bool writeAnywhere = false;         // nor these: they are about the files render makes
-  bool resume = false;
+  bool resume = false;                // --resume: a tile already written for this very render is kept
   std::string output, outputWord;     // -o's value and the option's name ("-o" or "--output"); "" without -o
   std::string tile, region;           // --tile's and --region's values; "" without them
 };

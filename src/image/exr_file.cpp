@@ -5,6 +5,7 @@
 #include <cstring>
 #include <exception>
 #include <fstream>
+#include <map>
 #include <vector>
 
 #include <sys/stat.h>
@@ -85,10 +86,46 @@ int side(int lo, int hi, const char* what) {
   return int(n);
 }
 
-// The header's attribute sizes checked against the file before OpenEXR reads them: it allocates what an
-// attribute declares, so 27 bytes declaring 2 GiB would take 2 GiB. A value cannot be longer than the bytes
-// left in the file. Also refused here: what is not a regular file (a FIFO would block), a multi-part or deep
-// file (not a tile).
+std::uint32_t littleEndian(const std::string& bytes, size_t at) {
+  std::uint32_t v = 0;
+  for (int i = 3; i >= 0; --i) v = v << 8 | static_cast<unsigned char>(bytes[at + size_t(i)]);
+  return v;
+}
+
+// Whether an attribute's value of `type` is as long as its declared size says: OpenEXR reads the types below by
+// their own structure, not by the size, so a value that disagrees would set its reading apart from ours (and
+// a preview's or a string vector's own counts would be allocated unchecked).
+bool consistent(const std::string& type, const std::string& value) {
+  static const std::map<std::string, size_t> fixed = {
+      {"box2i", 16}, {"box2f", 16},   {"compression", 1}, {"lineOrder", 1}, {"envmap", 1},  {"deepImageState", 1},
+      {"float", 4},  {"double", 8},   {"int", 4},         {"v2i", 8},       {"v2f", 8},     {"v2d", 16},
+      {"v3i", 12},   {"v3f", 12},     {"v3d", 24},        {"m33f", 36},     {"m33d", 72},   {"m44f", 64},
+      {"m44d", 128}, {"tiledesc", 9}, {"chromaticities", 32}, {"keycode", 28}, {"timecode", 8}, {"rational", 8}};
+  const size_t n = value.size();
+  if (const auto it = fixed.find(type); it != fixed.end()) return n == it->second;
+  if (type == "chlist") {  // names, each with 16 bytes of description, then an empty name
+    for (size_t at = 0; at < n;) {
+      const size_t end = value.find('\0', at);
+      if (end == std::string::npos) return false;
+      if (end == at) return end + 1 == n;
+      at = end + 1 + 16;
+    }
+    return false;
+  }
+  if (type == "preview") return n >= 8 && n - 8 == std::uint64_t(littleEndian(value, 0)) * littleEndian(value, 4) * 4;
+  if (type == "stringvector") {  // strings, each after its length
+    for (size_t at = 0; at < n;) {
+      if (n - at < 4 || littleEndian(value, at) > n - at - 4) return false;
+      at += 4 + littleEndian(value, at);
+    }
+  }
+  return true;
+}
+
+// The header checked against the file before OpenEXR reads it: it allocates what an attribute declares, so 27
+// bytes declaring 2 GiB would take 2 GiB. A value cannot be longer than the bytes left in the file, nor other
+// than its type's structure says. Also refused here: what is not a regular file (a FIFO would block), a
+// multi-part or deep file (not a tile).
 void checkHeader(const std::string& path) {
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) throw Error(std::strerror(errno));
@@ -101,21 +138,27 @@ void checkHeader(const std::string& path) {
   }
   if (start[5] & 0x18) throw Error("it is a multi-part or deep OpenEXR file, not a tile");
   const std::uint64_t size = std::uint64_t(st.st_size);
+  constexpr size_t kMaxName = 255;  // OpenEXR's longest attribute or type name
   for (;;) {
     std::string name, type;
     if (!std::getline(in, name, '\0')) throw Error("its header ends early");
     if (name.empty()) return;
     if (!std::getline(in, type, '\0')) throw Error("its header ends early");
-    unsigned char n[4];
-    if (!in.read(reinterpret_cast<char*>(n), 4)) throw Error("its header ends early");
-    const std::uint64_t bytes = std::uint64_t(n[0]) | std::uint64_t(n[1]) << 8 | std::uint64_t(n[2]) << 16 |
-                                std::uint64_t(n[3]) << 24;
+    if (name.size() > kMaxName || type.size() > kMaxName) throw Error("its header has a name too long");
+    std::string n(4, '\0');
+    if (!in.read(n.data(), 4)) throw Error("its header ends early");
+    const std::uint64_t bytes = littleEndian(n, 0);
     const std::uint64_t at = std::uint64_t(in.tellg());
     if (bytes > size - at) {
       throw Error("its attribute " + quote(name) + " declares " + std::to_string(bytes) + " bytes, but only " +
                   std::to_string(size - at) + " are left in the file");
     }
-    in.seekg(std::streamoff(bytes), std::ios::cur);
+    std::string value(bytes, '\0');
+    in.read(value.data(), std::streamsize(bytes));
+    if (!consistent(type, value)) {
+      throw Error("its attribute " + quote(name) + " of type " + quote(type) + " is not " + std::to_string(bytes) +
+                  " bytes long, as it declares");
+    }
   }
 }
 
