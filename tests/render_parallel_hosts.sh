@@ -22,3 +22,14 @@ for host in alpha beta; do
   echo "render-parallel: $ran of 6 tiles rendered on $host"
 done
 echo "render-parallel: two hosts over ssh give the one-machine bytes"
+
+# Resumed over ssh with one tile gone: the hosts get the other tiles, keep them, and render that one alone.
+rm six.png.tiles/tile-2.exr
+"$here/../tools/render-parallel" --raytrace "$raytrace" --sshlogin alpha --sshlogin beta -n 6 -o six.png --resume \
+  "$scene" "${size[@]}" "${flags[@]}" >resumed.log 2>&1 || { cat resumed.log; fail "the resumed render failed"; }
+cmp one.png six.png || fail "the resumed render on two hosts differs from the one-machine render"
+kept=$(grep -c "is already this tile: kept" resumed.log || true)
+[ "$kept" = 5 ] || { cat resumed.log; fail "$kept of 5 tiles kept"; }
+grep -q "'tile-2.exr' is missing: rendering it" resumed.log || { cat resumed.log; fail "tile 2 not rendered again"; }
+for host in alpha beta; do [ -z "$(ls -A "hosts/$host")" ] || fail "left behind on $host: $(ls -A "hosts/$host")"; done
+echo "render-parallel: resumed on two hosts, 5 tiles kept and the missing one rendered again"

@@ -158,8 +158,8 @@ const std::vector<Option> kOptions = {
        w.options.gi.samples = parseCounts(v, "-gi_samples", 1, kMaxGatherSamples);
      }},
     {"-gi_bounces", nullptr, "B", Form::Joined, Scope::Any, Section::General,
-     "gathering levels (default: one per sample count; past the list,\n"
-     "its last count)",
+     "gathering levels, 0 to 16 (default: one per sample count; past the\n"
+     "list, its last count); an eye sample stops at 2^20 rays in all",
      [](Words& w, const std::string& v, const std::string&) {
        w.options.gi.bounces = parseInt(v, "-gi_bounces", 0, kMaxBounces);
      }},
@@ -177,7 +177,7 @@ const std::vector<Option> kOptions = {
        char* end = nullptr;
        const double a = std::strtod(v.c_str(), &end);
        if (v.empty() || *end != '\0' || errno == ERANGE || !(a > 0 && a <= 1)) {
-         throw Error("--gi-cache must be a number above 0 and at most 1, found '" + v + "'");
+         throw Error("--gi-cache must be a number above 0 and at most 1, found " + quote(v));
        }
        w.options.gi.cache = float(a);
      }},
@@ -243,6 +243,9 @@ const std::vector<Option> kOptions = {
      "render only columns X0 to X1-1 and rows Y0 to Y1-1, rows counted\n"
      "from the top, written to -o NAME.exr as a tile for merge",
      [](Words& w, const std::string& v, const std::string&) { w.region = v; }},
+    {"--resume", nullptr, nullptr, Form::Switch, Scope::Image, Section::Image,
+     "keep a tile already at -o if it is of this very render",
+     [](Words& w, const std::string&, const std::string&) { w.resume = true; }},
 };
 
 const Option* optionNamed(const std::string& name) {

@@ -9,6 +9,7 @@
 #include "raytrace/app/arguments.hpp"
 #include "raytrace/app/invocation.hpp"
 #include "raytrace/app/merge.hpp"
+#include "raytrace/app/tile_header.hpp"
 #include "raytrace/parse/scene_file.hpp"
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/message.hpp"
@@ -30,9 +31,13 @@ struct Command {
   const char* summary;          // what `raytrace help <command>` says it does
   bool writesImage = false;     // takes -o, --tile and --region
   bool sizeOptional = false;    // width and height may be left out for kDefaultSide × kDefaultSide
-  // A command that reads no scene and parses its own words (the words after its name), instead of `run`.
-  std::function<int(const std::vector<std::string>&, std::ostream&)> runWords = nullptr;
+  // A command that reads no scene and parses its own words (the words after its name), instead of `run`, with
+  // the help for its options.
+  std::function<int(const std::vector<std::string>&, std::ostream&, std::ostream&)> runWords = nullptr;
+  const char* ownOptions = "";
 };
+
+int mergeCommand(const std::vector<std::string>& args, std::ostream& err);
 
 std::string commandHelp(const std::string& name);
 
@@ -48,11 +53,20 @@ const std::vector<Command>& commands() {
       {"printrays", "<width> <height> <x> <y>", 4, printrays, "every ray the pixel's colour is made of"},
       {"pixeltrace", "<width> <height> <x> <y>", 4, pixeltrace, "printrays with the shadow rays"},
       {"printbvh", "", 0, printbvh, "the bounding volume hierarchy of the scene"},
-      {"merge", "-o <image> <tile.exr>... [--threads N]", 0, nullptr,
+      {"merge", "-o <image> <tile.exr>... [--threads N] [--for <scene> <width> <height> [options]]", 0, nullptr,
        "the tiles of one render (--tile, --region) joined into its image, exactly as one machine renders it",
-       false, false, [](const std::vector<std::string>& words, std::ostream&) { return merge(words); }},
+       false, false,
+       [](const std::vector<std::string>& words, std::ostream&, std::ostream& err) {
+         return mergeCommand(words, err);
+       },
+       "options:\n"
+       "  -o, --output FILE               the image (.png, .hdr or .exr; an .exr keeps the tiles' attributes)\n"
+       "  --threads N                     convert on N threads (default: every core)\n"
+       "  --for <scene> <width> <height> [render options]\n"
+       "                                  last: every tile must be of this render (the scene's contents,\n"
+       "                                  size, options and program version), or merge writes nothing\n"},
       {"help", "<command>", 0, nullptr, "the usage, summary and options of one command", false, false,
-       [](const std::vector<std::string>& words, std::ostream& out) {
+       [](const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
          if (words.size() != 1) throw Error("help takes one command, as in: raytrace help render");
          out << commandHelp(words[0]);
          return 0;
@@ -100,7 +114,7 @@ std::string commandHelp(const std::string& name) {
   const Command* c = commandNamed(name);
   if (!c) unknownCommand(name);
   const std::string head = "usage: " + usageLine(*c) + "\n" + c->summary + "\n";
-  if (c->runWords) return head;
+  if (c->runWords) return head + c->ownOptions;
   return head + optionsHelp(Section::General) + (c->writesImage ? optionsHelp(Section::Image) : "");
 }
 
@@ -182,6 +196,9 @@ Invocation invocation(const Command& command, const Words& words, std::ostream& 
   if (!words.tile.empty() && !words.region.empty()) {
     throw Error("--tile and --region both name the part to render: give one");
   }
+  if (words.resume && words.tile.empty() && words.region.empty()) {
+    throw Error("--resume is for tiles: give --tile or --region");
+  }
   Invocation inv;
   inv.scenePath = positional[0];
   inv.options = words.options;
@@ -192,6 +209,7 @@ Invocation invocation(const Command& command, const Words& words, std::ostream& 
   inv.preview = words.preview;
   inv.errors = &err;
   inv.writeAnywhere = words.writeAnywhere;
+  inv.resume = words.resume;
   inv.output = words.output;
   if (defaultSize) {
     inv.width = inv.height = kDefaultSide;
@@ -209,6 +227,27 @@ Invocation invocation(const Command& command, const Words& words, std::ostream& 
   return inv;
 }
 
+// `merge ... [--for SCENE WIDTH HEIGHT [render options]]`: the words after --for are read as a render's, and
+// the header its whole picture would have is what every tile must have.
+int mergeCommand(const std::vector<std::string>& args, std::ostream& err) {
+  const auto at = std::find(args.begin(), args.end(), "--for");
+  const std::vector<std::string> own(args.begin(), at);
+  if (at == args.end()) return merge(own);
+  std::vector<std::string> request{"render"};
+  request.insert(request.end(), at + 1, args.end());
+  const Words words = readWords(request, 1);
+  if (!words.output.empty() || !words.tile.empty() || !words.region.empty() || words.resume) {
+    throw Error("merge's --for names the whole render: its scene, size and render options only");
+  }
+  if (words.positional.size() != 3) {
+    throw Error("merge's --for takes the scene, width and height, then render options (see raytrace help merge)");
+  }
+  Invocation inv = invocation(*commandNamed("render"), words, err);
+  inv.progress = nullptr;
+  inv.scene = loadScene(inv.scenePath, inv.options.threads);
+  return merge(own, TileRequest{tileHeader(inv, "render"), inv.width, inv.height});
+}
+
 }  // namespace
 
 int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -217,7 +256,7 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     return 0;
   }
   const Command& command = findCommand(args);
-  if (command.runWords) return command.runWords(std::vector<std::string>(args.begin() + 1, args.end()), out);
+  if (command.runWords) return command.runWords(std::vector<std::string>(args.begin() + 1, args.end()), out, err);
   const Words words = readWords(args, 1);
   Invocation inv = invocation(command, words, err);
   if (command.writesImage) checkOutput(inv);

@@ -20,6 +20,7 @@
 #include "raytrace/image/png_file.hpp"
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/message.hpp"
+#include "raytrace/util/path.hpp"
 #include "raytrace/util/peak_memory.hpp"
 #include "raytrace/util/stopwatch.hpp"
 
@@ -109,6 +110,25 @@ void write(const Invocation& inv, const char* command, Image&& image, const std:
   writeExr(ExrImage{inv.width, inv.height, region, std::move(image), tileHeader(inv, command)}, path);
 }
 
+// checkImagePath(path), and that `path` is not the scene file (under any name): the image must not replace it.
+void checkTarget(const Invocation& inv, const std::string& path) {
+  checkImagePath(path);
+  if (sameFile(path, inv.scenePath)) {
+    throw Error("cannot write " + quote(path, kMaxQuotedPath) +
+                ": it is the scene file, which the image would replace");
+  }
+}
+
+// With --resume, whether the tile at `path` is already the one this render makes, so that it is kept; either
+// way the user is told, and why a tile is rendered again.
+bool keptTile(const Invocation& inv, const char* command, const std::string& path) {
+  if (!inv.resume) return false;
+  const std::string why = tileStaleness(inv, command, path);
+  *inv.errors << "raytrace: " << quote(path, kMaxQuotedPath)
+              << (why.empty() ? " is already this tile: kept" : " is " + why + ": rendering it") << "\n";
+  return why.empty();
+}
+
 }  // namespace
 
 void checkOutput(const Invocation& inv) {
@@ -126,7 +146,8 @@ void checkOutput(const Invocation& inv) {
 // Each pixel gets the pigment of the closest object, or the background (Program 1's ray cast).
 int raycast(const Invocation& inv, std::ostream&) {
   const Target target = targets(inv, false).front();
-  checkImagePath(target.path);
+  checkTarget(inv, target.path);
+  if (keptTile(inv, "raycast", target.path)) return 0;
   const Region region = inv.region.value_or(wholeImage(inv.width, inv.height));
   Image image(region.width(), region.height());
   // Image::at counts rows upward from the bottom; the region's rows counted from the top.
@@ -174,8 +195,9 @@ int renderImage(const Invocation& inv, std::ostream&) {
   };
   std::vector<const Target*> writable;
   for (const Target& t : all) {
-    if (attempt(t, [&] { checkImagePath(t.path); })) writable.push_back(&t);
+    if (attempt(t, [&] { checkTarget(inv, t.path); })) writable.push_back(&t);
   }
+  if (inv.region && !writable.empty() && keptTile(inv, "render", writable.front()->path)) return status;
   double writing = 0;
   const auto renderTo = [&](const SceneDesc& scene, const std::string& path) {
     // --display and --preview watch the picture fill in. The preview's last write comes before the image's, so

@@ -1,6 +1,7 @@
 #include "raytrace/app/merge.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <optional>
 
 #include "raytrace/app/arguments.hpp"
@@ -8,8 +9,10 @@
 #include "raytrace/image/exr_file.hpp"
 #include "raytrace/image/image_file.hpp"
 #include "raytrace/util/error.hpp"
+#include "raytrace/util/limits.hpp"
 #include "raytrace/util/message.hpp"
 #include "raytrace/util/parallel.hpp"
+#include "raytrace/util/path.hpp"
 
 namespace rt {
 
@@ -41,27 +44,19 @@ MergeArguments parseMerge(const std::vector<std::string>& args) {
   return m;
 }
 
-// The first attribute, the part aside, in which `tile` differs from `first`: "" if none.
-std::string difference(const ExrImage& tile, const ExrImage& first) {
-  auto keys = tile.attributes;
-  keys.insert(first.attributes.begin(), first.attributes.end());
-  for (const auto& [key, ignored] : keys) {
-    if (key == kTilePartAttribute) continue;
-    const auto a = tile.attributes.find(key), b = first.attributes.find(key);
-    const std::string mine = a == tile.attributes.end() ? "none" : quote(a->second);
-    const std::string theirs = b == first.attributes.end() ? "none" : quote(b->second);
-    if (mine != theirs) return "its " + key + " is " + mine + ", not " + theirs;
-  }
-  return "";
-}
-
 std::string pixel(int x, int y) { return "column " + std::to_string(x) + ", row " + std::to_string(y); }
 
 }  // namespace
 
-int merge(const std::vector<std::string>& args) {
+int merge(const std::vector<std::string>& args, const std::optional<TileRequest>& request) {
   const MergeArguments m = parseMerge(args);
   checkImagePath(m.output);
+  for (const std::string& name : m.tiles) {
+    if (sameFile(name, m.output)) {
+      throw Error("-o " + quote(m.output, kMaxQuotedPath) + " is the tile " + quote(name, kMaxQuotedPath) +
+                  ": merge would replace it (name another file)");
+    }
+  }
   std::optional<ExrImage> first;
   std::optional<Image> image;
   std::vector<int> owner;  // per pixel of the picture, top row first: 1 + the index of the tile holding it
@@ -71,12 +66,30 @@ int merge(const std::vector<std::string>& args) {
     if (!tile.attributes.count("raytrace.command")) {
       throw Error(quote(name, kMaxQuotedPath) + " is not a raytrace tile: it has no raytrace.command attribute");
     }
+    if (request) {
+      std::string why = headerDifference(tile.attributes, request->header, true);
+      if (why.empty() && (tile.width != request->width || tile.height != request->height)) {
+        why = "its picture is " + std::to_string(tile.width) + "x" + std::to_string(tile.height) + ", not " +
+              std::to_string(request->width) + "x" + std::to_string(request->height);
+      }
+      if (!why.empty()) {
+        throw Error(quote(name, kMaxQuotedPath) + " is not a tile of the render asked for: " + why);
+      }
+    }
     if (!first) {
       toByteOf(tile.attributes, name);
+      // The picture and which tile holds each pixel, before taking them: a tile of a few bytes may name a
+      // picture of 30000 x 30000.
+      const std::uint64_t pixels = std::uint64_t(tile.width) * std::uint64_t(tile.height);
+      const std::string shortage =
+          memoryShortage("merging into a " + std::to_string(tile.width) + "x" + std::to_string(tile.height) +
+                             " picture",
+                         pixels * (sizeof(Color) + sizeof(int)), availableMemory());
+      if (!shortage.empty()) throw Error(quote(name, kMaxQuotedPath) + ": " + shortage);
       image.emplace(tile.width, tile.height);
       owner.assign(size_t(tile.width) * size_t(tile.height), 0);
     } else {
-      std::string why = difference(tile, *first);
+      std::string why = headerDifference(tile.attributes, first->attributes, true);
       if (why.empty() && (tile.width != first->width || tile.height != first->height)) why = "its size differs";
       if (!why.empty()) {
         throw Error(quote(name, kMaxQuotedPath) + " is a tile of another render than " +
@@ -109,7 +122,16 @@ int merge(const std::vector<std::string>& args) {
                 " pixels of the picture uncovered, the first at " + pixel(int(at % size_t(first->width)),
                                                                           int(at / size_t(first->width))));
   }
-  writeImage(*image, m.output, toByteOf(first->attributes, m.tiles[0]), m.threads);
+  if (imageFormat(m.output) == ImageFormat::Exr) {
+    // The one-machine render's header: the part is the whole picture.
+    auto attributes = first->attributes;
+    attributes[kTilePartAttribute] = "0,0," + std::to_string(first->width) + "," + std::to_string(first->height);
+    writeExr(ExrImage{first->width, first->height, wholeImage(first->width, first->height), std::move(*image),
+                      std::move(attributes)},
+             m.output);
+  } else {
+    writeImage(*image, m.output, toByteOf(first->attributes, m.tiles[0]), m.threads);
+  }
   return 0;
 }
 

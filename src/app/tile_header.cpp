@@ -2,8 +2,12 @@
 
 #include <cinttypes>
 #include <cstdio>
+#include <optional>
+
+#include <sys/stat.h>
 
 #include "raytrace/app/arguments.hpp"
+#include "raytrace/image/exr_file.hpp"
 #include "raytrace/parse/scene_file.hpp"
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/message.hpp"
@@ -44,6 +48,39 @@ std::map<std::string, std::string> tileHeader(const Invocation& inv, const std::
                                                   std::to_string(r.x1) + "," + std::to_string(r.y1)
                                             : inv.tile},
   };
+}
+
+std::string headerDifference(const std::map<std::string, std::string>& mine,
+                             const std::map<std::string, std::string>& wanted, bool ignorePart) {
+  auto keys = mine;
+  keys.insert(wanted.begin(), wanted.end());
+  for (const auto& [key, ignored] : keys) {
+    if (ignorePart && key == kTilePartAttribute) continue;
+    const auto a = mine.find(key), b = wanted.find(key);
+    const std::string have = a == mine.end() ? "none" : quote(a->second);
+    const std::string want = b == wanted.end() ? "none" : quote(b->second);
+    if (have != want) return "its " + printable(key) + " is " + have + ", not " + want;
+  }
+  return "";
+}
+
+std::string tileStaleness(const Invocation& inv, const std::string& command, const std::string& path) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) return "missing";
+  std::optional<ExrImage> read;
+  try {
+    read.emplace(readExr(path));
+  } catch (const Error& e) {
+    return "unreadable (" + printable(e.what(), kMaxQuotedPath) + ")";
+  }
+  const ExrImage& tile = *read;
+  const std::string why = headerDifference(tile.attributes, tileHeader(inv, command), false);
+  if (!why.empty()) return "stale (" + why + ")";
+  const Region r = inv.region.value_or(wholeImage(inv.width, inv.height));
+  if (tile.width != inv.width || tile.height != inv.height || !(tile.window == r)) {
+    return "stale (its pixels are not this tile's)";
+  }
+  return "";
 }
 
 Conventions::ToByte toByteOf(const std::map<std::string, std::string>& header, const std::string& file) {

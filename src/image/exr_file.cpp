@@ -1,7 +1,14 @@
 #include "raytrace/image/exr_file.hpp"
 
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
 #include <exception>
+#include <fstream>
+#include <map>
 #include <vector>
+
+#include <sys/stat.h>
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -79,6 +86,82 @@ int side(int lo, int hi, const char* what) {
   return int(n);
 }
 
+std::uint32_t littleEndian(const std::string& bytes, size_t at) {
+  std::uint32_t v = 0;
+  for (int i = 3; i >= 0; --i) v = v << 8 | static_cast<unsigned char>(bytes[at + size_t(i)]);
+  return v;
+}
+
+// Whether an attribute's value of `type` is as long as its declared size says: OpenEXR reads the types below by
+// their own structure, not by the size, so a value that disagrees would set its reading apart from ours (and
+// a preview's or a string vector's own counts would be allocated unchecked).
+bool consistent(const std::string& type, const std::string& value) {
+  static const std::map<std::string, size_t> fixed = {
+      {"box2i", 16}, {"box2f", 16},   {"compression", 1}, {"lineOrder", 1}, {"envmap", 1},  {"deepImageState", 1},
+      {"float", 4},  {"double", 8},   {"int", 4},         {"v2i", 8},       {"v2f", 8},     {"v2d", 16},
+      {"v3i", 12},   {"v3f", 12},     {"v3d", 24},        {"m33f", 36},     {"m33d", 72},   {"m44f", 64},
+      {"m44d", 128}, {"tiledesc", 9}, {"chromaticities", 32}, {"keycode", 28}, {"timecode", 8}, {"rational", 8}};
+  const size_t n = value.size();
+  if (const auto it = fixed.find(type); it != fixed.end()) return n == it->second;
+  if (type == "chlist") {  // names, each with 16 bytes of description, then an empty name
+    for (size_t at = 0; at < n;) {
+      const size_t end = value.find('\0', at);
+      if (end == std::string::npos) return false;
+      if (end == at) return end + 1 == n;
+      at = end + 1 + 16;
+    }
+    return false;
+  }
+  if (type == "preview") return n >= 8 && n - 8 == std::uint64_t(littleEndian(value, 0)) * littleEndian(value, 4) * 4;
+  if (type == "stringvector") {  // strings, each after its length
+    for (size_t at = 0; at < n;) {
+      if (n - at < 4 || littleEndian(value, at) > n - at - 4) return false;
+      at += 4 + littleEndian(value, at);
+    }
+  }
+  return true;
+}
+
+// The header checked against the file before OpenEXR reads it: it allocates what an attribute declares, so 27
+// bytes declaring 2 GiB would take 2 GiB. A value cannot be longer than the bytes left in the file, nor other
+// than its type's structure says. Also refused here: what is not a regular file (a FIFO would block), a
+// multi-part or deep file (not a tile).
+void checkHeader(const std::string& path) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) throw Error(std::strerror(errno));
+  if (!S_ISREG(st.st_mode)) throw Error("it is not a regular file");
+  std::ifstream in(path, std::ios::binary);
+  unsigned char start[8];
+  if (!in.read(reinterpret_cast<char*>(start), 8)) throw Error("it is too short for an OpenEXR file");
+  if (start[0] != 0x76 || start[1] != 0x2f || start[2] != 0x31 || start[3] != 0x01) {
+    throw Error("it is not an OpenEXR file");
+  }
+  if (start[5] & 0x18) throw Error("it is a multi-part or deep OpenEXR file, not a tile");
+  const std::uint64_t size = std::uint64_t(st.st_size);
+  constexpr size_t kMaxName = 255;  // OpenEXR's longest attribute or type name
+  for (;;) {
+    std::string name, type;
+    if (!std::getline(in, name, '\0')) throw Error("its header ends early");
+    if (name.empty()) return;
+    if (!std::getline(in, type, '\0')) throw Error("its header ends early");
+    if (name.size() > kMaxName || type.size() > kMaxName) throw Error("its header has a name too long");
+    std::string n(4, '\0');
+    if (!in.read(n.data(), 4)) throw Error("its header ends early");
+    const std::uint64_t bytes = littleEndian(n, 0);
+    const std::uint64_t at = std::uint64_t(in.tellg());
+    if (bytes > size - at) {
+      throw Error("its attribute " + quote(name) + " declares " + std::to_string(bytes) + " bytes, but only " +
+                  std::to_string(size - at) + " are left in the file");
+    }
+    std::string value(bytes, '\0');
+    in.read(value.data(), std::streamsize(bytes));
+    if (!consistent(type, value)) {
+      throw Error("its attribute " + quote(name) + " of type " + quote(type) + " is not " + std::to_string(bytes) +
+                  " bytes long, as it declares");
+    }
+  }
+}
+
 }  // namespace
 
 void writeExr(const ExrImage& image, const std::string& path) {
@@ -91,6 +174,7 @@ void writeExr(const Image& image, const std::string& path) {
 
 ExrImage readExr(const std::string& path) {
   try {
+    checkHeader(path);
     Imf::InputFile file(path.c_str());
     const Imf::Header& header = file.header();
     const Imath::Box2i display = header.displayWindow(), data = header.dataWindow();
@@ -100,7 +184,14 @@ ExrImage readExr(const std::string& path) {
                         data.max.y - display.min.y + 1};
     Image pixels(side(data.min.x, data.max.x, "data"), side(data.min.y, data.max.y, "data"));
     for (const char* c : kChannels) {
-      if (!header.channels().findChannel(c)) throw Error("it has no " + std::string(c) + " channel");
+      const Imf::Channel* channel = header.channels().findChannel(c);
+      if (!channel) throw Error("it has no " + std::string(c) + " channel");
+      if (channel->type != Imf::FLOAT) throw Error("its " + std::string(c) + " channel is not 32-bit float");
+    }
+    // A tile re-saved lossily keeps its attributes but not the render's floats. B44 and DWA lose only half
+    // floats, refused above; PXR24 rounds 32-bit ones.
+    if (header.compression() == Imf::PXR24_COMPRESSION) {
+      throw Error("it is compressed with PXR24, which rounds its floats: they are not the render's");
     }
     std::map<std::string, std::string> attributes;
     for (auto a = header.begin(); a != header.end(); ++a) {
@@ -110,7 +201,8 @@ ExrImage readExr(const std::string& path) {
     file.readPixels(data.min.y, data.max.y);
     return ExrImage{width, height, window, std::move(pixels), std::move(attributes)};
   } catch (const std::exception& e) {
-    throw Error("cannot read " + quote(path, kMaxQuotedPath) + ": " + e.what());
+    // One bounded line: OpenEXR's own messages repeat the path, unquoted, over several lines.
+    throw Error("cannot read " + quote(path, kMaxQuotedPath) + ": " + printable(e.what(), kMaxQuotedPath));
   }
 }
 

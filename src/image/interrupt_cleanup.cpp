@@ -11,7 +11,10 @@ namespace rt {
 
 namespace {
 
-constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+// Every signal whose default action ends the process without the program's doing, bar SIGKILL (which
+// cannot be caught) and SIGXFSZ (ignored: a full file is a write error, reported as one).
+constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM,
+                            SIGPIPE, SIGXCPU, SIGVTALRM, SIGPROF};
 
 // Read by the handler, on any thread, so only what async-signal-safe code may use: a fixed buffer, published
 // by a lock-free atomic flag.

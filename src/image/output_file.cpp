@@ -102,6 +102,14 @@ void checkWritableFolder(const std::string& path) {
   if (stat(name.c_str(), &st) != 0) cannotWrite(path, errno);
   if (!S_ISDIR(st.st_mode)) cannotWrite(path, ENOTDIR);
   if (access(name.c_str(), W_OK | X_OK) != 0) cannotWrite(path, errno);
+  struct stat there {};
+  if (lstat(path.c_str(), &there) != 0 || S_ISLNK(there.st_mode)) return;
+  if (!S_ISREG(there.st_mode)) {
+    throw Error("cannot write " + quote(path, kMaxQuotedPath) + ": something other than a file is there");
+  }
+  if (!(there.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH))) {
+    throw Error("cannot write " + quote(path, kMaxQuotedPath) + ": it is read-only (make it writable to replace it)");
+  }
 }
 
 }  // namespace rt

@@ -1,9 +1,13 @@
 #include "raytrace/render/irradiance_prepass.hpp"
 
+#include <cstdint>
 #include <mutex>
 #include <vector>
 
 #include "raytrace/render/tracer.hpp"
+#include "raytrace/util/error.hpp"
+#include "raytrace/util/limits.hpp"
+#include "raytrace/util/message.hpp"
 #include "raytrace/util/parallel.hpp"
 
 namespace rt {
@@ -14,9 +18,21 @@ IrradianceCache<T> prepareIrradianceCache(const Scene<T>& scene, const Camera<T>
   IrradianceCache<T> cache(*options.gi.cache, camera.eye(), camera.pixelSize());
   const Tracer<T> prototype(scene, options);
   std::mutex countsMutex;
+  uint64_t records = 0, traced = 0;  // so far, for the memory the next pass is likely to take
   for (int stride = kFirstCacheStride; stride >= 1; stride /= 2) {
     // Row by row: each row's records come from one tracer in pixel order, and the rows are appended in order.
     const int rows = (camera.height() + stride - 1) / stride;
+    // The cache grows with pixels × samples; a pass is checked before it runs, at as many records per traced
+    // pixel as the passes before made (twice: its rows, then the cache's copy).
+    const uint64_t pixels = uint64_t(rows) * uint64_t((camera.width() + stride - 1) / stride);
+    if (traced > 0) {
+      const uint64_t expected = records * pixels / traced;
+      const std::string shortage =
+          memoryShortage("the irradiance cache, at some " + thousands(records + expected) + " records,",
+                         (records + 2 * expected) * sizeof(IrradianceRecord<T>), availableMemory());
+      if (!shortage.empty()) throw Error(shortage + " (a larger --gi-cache accuracy makes fewer)");
+    }
+    traced += pixels;
     std::vector<std::vector<IrradianceRecord<T>>> made(static_cast<size_t>(rows));
     parallelFor(rows, options.threads, [&](int row) {
       const int y = row * stride;
@@ -38,6 +54,7 @@ IrradianceCache<T> prepareIrradianceCache(const Scene<T>& scene, const Camera<T>
     });
     std::vector<IrradianceRecord<T>> pass;
     for (const auto& row : made) pass.insert(pass.end(), row.begin(), row.end());
+    records += pass.size();
     cache.add(pass);
   }
   return cache;

@@ -1,12 +1,16 @@
 #include "raytrace/render/renderer.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <mutex>
 #include <optional>
 #include <type_traits>
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "raytrace/util/error.hpp"
+#include "raytrace/util/limits.hpp"
+#include "raytrace/util/message.hpp"
 #include "raytrace/util/parallel.hpp"
 #include "raytrace/util/progress.hpp"
 #include "raytrace/util/stopwatch.hpp"
@@ -26,8 +30,17 @@ constexpr int kTile = 32;
 // finished row of a tile to store(x0, y, x1, colours): the colours of pixels x0 … x1 − 1 of row y (counted
 // upward, as Image::at counts).
 template <class Store>
-void renderRows(const SceneDesc& desc, int width, int height, const Region& region, const RenderOptions& options,
+void renderRows(const SceneDesc& desc, int width, int height, const Region& region, const RenderOptions& requested,
                 const RenderMonitor& monitor, const Store& store) {
+  // Each thread's tracer keeps shadow rays for every light: a million lights take gigabytes. As many threads as
+  // there is memory for (the image is the same on any number), and at least one; counted at double's size.
+  const std::uint64_t perTracer = desc.lights.size() * Tracer<double>::bytesPerLight(requested);
+  const std::uint64_t available = availableMemory();
+  const std::string shortage =
+      memoryShortage("rendering " + thousands(desc.lights.size()) + " lights", perTracer, available);
+  if (!shortage.empty()) throw Error(shortage);
+  RenderOptions options = requested;
+  if (perTracer > 0) options.threads = int(std::min(std::uint64_t(options.threads), available / perTracer));
   Stopwatch watch;
   withScene(desc, width, height, options, [&](const auto& scene, const auto& camera) {
     using T = typename std::decay_t<decltype(scene)>::Real;

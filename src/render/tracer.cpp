@@ -80,8 +80,11 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
 }
 
 template <class T> bool Tracer<T>::matters(float weight, int depth) {
-  if (raysLeft_ == 0 || weight * bound_[size_t(conventions_.maxDepth - depth)] < cutoff_) return false;
+  if (raysLeft_ == 0 || sampleRaysLeft_ == 0 || weight * bound_[size_t(conventions_.maxDepth - depth)] < cutoff_) {
+    return false;
+  }
   --raysLeft_;
+  --sampleRaysLeft_;
   return true;
 }
 
@@ -99,6 +102,7 @@ Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRec
       path.key = pixelKey(options_.gi.seed, x, y, i * n + j);
       ++counts_.eye;
       raysLeft_ = treeRays_ - 1;
+      sampleRaysLeft_ = kSampleRays - 1;
       sum += trace(camera.sampleRay(x, y, i, j, n), RayRecord::Kind::Primary, path, record).color;
     }
   }
@@ -180,6 +184,7 @@ template <class T> void Tracer<T>::traceBatch(Batch& batch, int count, RayRecord
     for (int i = 0; i < size; ++i) {
       const size_t r = size_t(first + i);
       raysLeft_ = treeRays_ - 1;
+      if (batch.paths[r].bounce == 0) sampleRaysLeft_ = kSampleRays - 1;  // an eye ray, not a gathered one
       const Traced t = follow(packet[i], hits[i], kind, batch.paths[r], nullptr, shadows.data() + size_t(i) * lights);
       batch.colors[r] = t.color;
       batch.distances[r] = t.distance;
@@ -325,6 +330,14 @@ Color Tracer<T>::gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path
     batch.rays[size_t(i)] = spawnRay(hit, dir, offset);
     batch.paths[size_t(i)] = Path{path.depth, path.bounce + 1, path.weight, key};
   }
+  // Past the eye sample's room the set is not traced and brings back nothing, as a tree's rays past its room.
+  if (sampleRaysLeft_ < uint64_t(count)) {
+    sampleRaysLeft_ = 0;
+    std::fill(batch.colors.begin(), batch.colors.end(), Color(0));
+    std::fill(batch.distances.begin(), batch.distances.end(), std::numeric_limits<T>::infinity());
+    return Color(0);
+  }
+  sampleRaysLeft_ -= uint64_t(count);
   counts_.gather += uint64_t(count);
   traceBatch(batch, count, RayRecord::Kind::Primary);
   Color sum(0);

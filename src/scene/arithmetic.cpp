@@ -10,7 +10,8 @@ namespace {
 
 bool courseTierSound(const SceneDesc& scene, const SceneScale& s, const TierDomain& d) {
   return scene.language == SceneLanguage::Pov && s.smallestFeature >= kCourseMinFeature &&
-         s.extent <= kCourseMaxExtent && d.textbookPixels <= kVisiblePixels &&
+         s.extent <= kCourseMaxExtent && s.largestTransform <= kCourseMaxExtent &&
+         d.textbookPixels <= kVisiblePixels &&
          d.textbookHitError <= kCourseEpsilon / 4 && d.offsetShadowPixels <= kVisiblePixels &&
          d.offsetRefractionPixels <= kVisiblePixels && smallestGap(scene) >= 2 * kCourseEpsilon;
 }

@@ -26,14 +26,16 @@ SceneScale sceneScale(const SceneDesc& scene) {
   double largest = maxAbs(scene.camera.location);
   glm::dvec3 lo = scene.camera.location, hi = scene.camera.location;
   double smallest = std::numeric_limits<double>::infinity();
+  double largestTransform = 1;
   for (const ObjectDesc& o : scene.objects) {
     smallest = std::min(smallest, worldFeature(o));
+    if (!o.transforms.empty()) composeTransforms<double>(o.transforms, &largestTransform);
     const auto [center, radius] = worldBall(o);
     largest = std::max(largest, maxAbs(center) + radius);
     lo = glm::min(lo, center - radius);
     hi = glm::max(hi, center + radius);
   }
-  return {std::max({largest, glm::length(hi - lo), 1.0}), smallest, lo, hi};
+  return {std::max({largest, glm::length(hi - lo), 1.0}), smallest, lo, hi, largestTransform};
 }
 
 double precisionBudget(const SceneDesc& scene) { return precisionBudget(sceneScale(scene)); }

@@ -2,6 +2,8 @@
 
 #include <cctype>
 
+#include <sys/stat.h>
+
 namespace rt {
 
 std::string extension(const std::string& path) {
@@ -10,6 +12,11 @@ std::string extension(const std::string& path) {
   std::string ext = named ? path.substr(dot + 1) : "";
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
   return ext;
+}
+
+bool sameFile(const std::string& a, const std::string& b) {
+  struct stat sa {}, sb {};
+  return stat(a.c_str(), &sa) == 0 && stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
 }  // namespace rt

@@ -115,6 +115,11 @@ TEST_CASE("cli: the -gi flags and their bad values") {
         "--gi-cache must be a number above 0 and at most 1, found '0.1x'");
   CHECK(errorOf({"render", "a.pov", "--gi-cache=1.5"}) ==
         "--gi-cache must be a number above 0 and at most 1, found '1.5'");
+  // Issue 35: a value of 5000 characters was echoed whole; it is quoted and cut as every other value.
+  CHECK(errorOf({"render", "a.pov", "--gi-cache=" + std::string(5000, '7') + "\x1b[2J"}) ==
+        "--gi-cache must be a number above 0 and at most 1, found '" + std::string(60, '7') + "...'");
+  CHECK(errorOf({"render", "a.pov", "--gi-cache=0.1\x1b[2J"}) ==
+        "--gi-cache must be a number above 0 and at most 1, found '0.1\\x1B[2J'");
   const rt::RenderOptions o = rt::parseFlag("-gi_bounces=3", rt::parseFlag("-gi_samples=32,8", rt::parseFlag("-gi", {})));
   CHECK(o.gi.enabled);
   CHECK(o.gi.samples == std::vector<int>{32, 8});

@@ -23,6 +23,13 @@ std::string outputOf(const std::vector<std::string>& args) {
   return out.str();
 }
 
+// What a command that succeeds says on stderr.
+std::string messagesOf(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  REQUIRE(rt::runCommand(args, out, err) == 0);
+  return err.str();
+}
+
 // A glossy sphere over a plane, with reflections: smooth and sharp pixels for the sub-samples to differ in.
 const char* const kScene =
     "camera { location <0,1,6> up <0,1,0> right <1.33333,0,0> look_at <0,0,0> }\n"
@@ -70,6 +77,9 @@ TEST_CASE("image commands: bad -o values are one whole message, before the scene
   CHECK(errorOf({"render", scene, "-o"}) == "-o needs a value");
   CHECK(errorOf({"render", scene, "--output="}) == "--output= needs a file name");
   CHECK(errorOf({"sceneinfo", scene, "-o", "a.png"}) == "-o is for the commands that write images (raycast, render)");
+  // Issue 35: the value of --output= was echoed raw, terminal escapes and all.
+  CHECK(errorOf({"sceneinfo", scene, "--output=\x1b[2J" + std::string(5000, 'a')}) ==
+        "--output is for the commands that write images (raycast, render)");
   CHECK(errorOf({"render", scene, "--tile", "0/2"}) == "a tile is written as OpenEXR: name it with -o NAME.exr");
   CHECK(errorOf({"render", scene, "--tile", "0/2", "-o", "t.png"}) ==
         "cannot write 't.png': a tile is written as OpenEXR (name it .exr)");
@@ -219,6 +229,85 @@ TEST_CASE("image commands: merge refuses tiles that do not make one picture, nam
   CHECK(errorOf({"merge", "-o", out, "--fast", t0}) == "unknown option '--fast' for merge (see raytrace help merge)");
   CHECK(dir.names() == std::vector<std::string>{"edited.exr", "gi0.exr", "gi1.exr", "plain.exr", "s.pov", "ss.exr",
                                                 "t0.exr", "t1.exr", "tall.exr", "text.exr", "third.exr"});
+}
+
+TEST_CASE("image commands: --resume keeps a tile of this very render, renders a missing, unreadable or stale one") {
+  // Issue 35: resuming used to keep any tile that was there, of whatever render.
+  const rt::test::TempDir dir;
+  const std::string scene = dir.write("s.pov", kScene);
+  const std::string tile = dir.file("t.exr"), q = "raytrace: '" + tile + "' is ";
+  const auto resumed = [&](std::vector<std::string> more) {
+    std::vector<std::string> args{"render", scene, "32", "24", "--tile", "1/2", "-o", tile, "--resume"};
+    args.insert(args.end(), more.begin(), more.end());
+    return messagesOf(args);
+  };
+  CHECK(resumed({}) == q + "missing: rendering it\n");
+  const std::string first = rt::test::readAll(tile);
+  CHECK(resumed({}) == q + "already this tile: kept\n");
+  CHECK(rt::test::readAll(tile) == first);
+  CHECK(resumed({"-ss=2"}) == q + "stale (its raytrace.options is '', not '-ss=2'): rendering it\n");
+  CHECK(resumed({"-ss=2"}) == q + "already this tile: kept\n");
+  dir.write("s.pov", std::string(kScene) + "// edited\n");
+  CHECK_THAT(resumed({"-ss=2"}), Catch::Matches("raytrace: '.*t\\.exr' is stale \\(its raytrace.sceneHash is "
+                                                "'[0-9a-f]{16}', not '[0-9a-f]{16}'\\): rendering it\n"));
+  CHECK(messagesOf({"render", scene, "32", "24", "-ss=2", "--tile", "0/2", "-o", tile, "--resume"}) ==
+        q + "stale (its raytrace.part is '1/2', not '0/2'): rendering it\n");
+  CHECK(messagesOf({"render", scene, "32", "24", "-ss=2", "--region", "0,0,32,12", "-o", tile, "--resume"}) ==
+        q + "stale (its raytrace.part is '0/2', not '0,0,32,12'): rendering it\n");
+  dir.write("t.exr", first.substr(0, 100));
+  CHECK_THAT(resumed({}), Catch::StartsWith(q + "unreadable (cannot read '" + tile + "': ") &&
+                              Catch::EndsWith("): rendering it\n"));
+  CHECK(resumed({}) == q + "already this tile: kept\n");
+  CHECK(errorOf({"render", scene, "32", "24", "-o", dir.file("w.exr"), "--resume"}) ==
+        "--resume is for tiles: give --tile or --region");
+}
+
+TEST_CASE("image commands: merge --for refuses a tile of another request; an .exr keeps the attributes") {
+  const rt::test::TempDir dir;
+  const std::string scene = dir.write("s.pov", kScene);
+  const std::string t0 = dir.file("t0.exr"), t1 = dir.file("t1.exr"), out = dir.file("out.png");
+  REQUIRE(outputOf({"render", scene, "32", "24", "--tile", "0/2", "-o", t0}).empty());
+  REQUIRE(outputOf({"render", scene, "32", "24", "--tile", "1/2", "-o", t1}).empty());
+  CHECK(outputOf({"merge", "-o", out, t0, t1, "--for", scene, "32", "24", "--threads", "2"}).empty());
+  CHECK(errorOf({"merge", "-o", out, t0, t1, "--for", scene, "40", "30"}) ==
+        "'" + t0 + "' is not a tile of the render asked for: its raytrace.size is '32x24', not '40x30'");
+  CHECK(errorOf({"merge", "-o", out, t0, t1, "--for", scene, "32", "24", "-fresnel"}) ==
+        "'" + t0 + "' is not a tile of the render asked for: its raytrace.options is '', not '-fresnel'");
+  CHECK(errorOf({"merge", "-o", out, t0, t1, "--for", scene, "32"}) ==
+        "merge's --for takes the scene, width and height, then render options (see raytrace help merge)");
+  CHECK(errorOf({"merge", "-o", out, t0, t1, "--for", scene, "32", "24", "--tile", "0/2"}) ==
+        "merge's --for names the whole render: its scene, size and render options only");
+  // An attribute's name from a file is shown as any other text from input (issue 35: terminal escapes passed).
+  rt::ExrImage odd = rt::readExr(t1);
+  odd.attributes["\x1b[2J"] = "x";
+  rt::writeExr(odd, dir.file("odd.exr"));
+  CHECK(errorOf({"merge", "-o", out, t0, dir.file("odd.exr")}) == "'" + dir.file("odd.exr") +
+                                                                   "' is a tile of another render than '" + t0 +
+                                                                   "': its \\x1B[2J is 'x', not none");
+  // Merged to OpenEXR: the one-machine file, byte for byte, so a tile of its render in turn.
+  const std::string merged = dir.file("merged.exr"), one = dir.file("one.exr");
+  REQUIRE(outputOf({"merge", "-o", merged, t1, t0}).empty());
+  REQUIRE(outputOf({"render", scene, "32", "24", "-o", one}).empty());
+  CHECK(rt::test::readAll(merged) == rt::test::readAll(one));
+  CHECK(outputOf({"merge", "-o", dir.file("again.png"), merged, "--for", scene, "32", "24"}).empty());
+}
+
+TEST_CASE("image commands: an output that is an input, under any name, is refused before anything is written") {
+  const rt::test::TempDir dir;
+  const std::string scene = dir.write("scene.png", kScene);
+  REQUIRE(link(scene.c_str(), dir.file("other.png").c_str()) == 0);
+  for (const char* command : {"render", "raycast"}) {
+    CHECK(errorOf({command, scene, "8", "6", "-o", dir.file("other.png")}) ==
+          "cannot write '" + dir.file("other.png") + "': it is the scene file, which the image would replace");
+  }
+  const std::string t0 = dir.file("t0.exr"), t1 = dir.file("t1.exr");
+  REQUIRE(outputOf({"render", scene, "8", "6", "--tile", "0/2", "-o", t0}).empty());
+  REQUIRE(outputOf({"render", scene, "8", "6", "--tile", "1/2", "-o", t1}).empty());
+  const std::string before = rt::test::readAll(t1);
+  CHECK(errorOf({"merge", "-o", dir.file("./t1.exr"), t0, t1}) ==
+        "-o '" + dir.file("./t1.exr") + "' is the tile '" + t1 + "': merge would replace it (name another file)");
+  CHECK(rt::test::readAll(t1) == before);
+  CHECK(rt::test::readAll(scene) == kScene);
 }
 
 TEST_CASE("image commands: --version, help <command> and <command> --help") {

@@ -5,12 +5,20 @@
 #include <cmath>
 #include <csignal>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <stb/stb_image.h>
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <Imath/half.h>
 
 #include "raytrace/image/exr_file.hpp"
 #include "raytrace/image/image_file.hpp"
@@ -52,6 +60,18 @@ TEST_CASE("image files: a folder that is missing, not a folder or not writable i
   CHECK_THROWS_WITH(rt::checkImagePath(dir.file("no/a.png")),
                     "cannot write '" + dir.file("no/a.png") + "': No such file or directory");
   CHECK_THROWS_WITH(rt::checkImagePath(file + "/a.png"), "cannot write '" + file + "/a.png': Not a directory");
+  // Issue 35: a read-only image or a FIFO named x.png was replaced without a word.
+  const std::string old = dir.write("old.png", "x");
+  CHECK_NOTHROW(rt::checkImagePath(old));
+  REQUIRE(chmod(old.c_str(), 0444) == 0);
+  CHECK_THROWS_WITH(rt::checkImagePath(old),
+                    "cannot write '" + old + "': it is read-only (make it writable to replace it)");
+  REQUIRE(mkfifo(dir.file("x.png").c_str(), 0600) == 0);
+  CHECK_THROWS_WITH(rt::checkImagePath(dir.file("x.png")),
+                    "cannot write '" + dir.file("x.png") + "': something other than a file is there");
+  REQUIRE(mkdir(dir.file("d.png").c_str(), 0700) == 0);
+  CHECK_THROWS_WITH(rt::checkImagePath(dir.file("d.png")),
+                    "cannot write '" + dir.file("d.png") + "': something other than a file is there");
 }
 
 TEST_CASE("image files: .hdr holds the unclamped radiance to RGBE's 8-bit mantissa") {
@@ -128,6 +148,56 @@ TEST_CASE("image files: reading what is not OpenEXR names the file") {
   CHECK_THROWS_WITH(rt::readExr(dir.file("none.exr")), Catch::StartsWith("cannot read '" + dir.file("none.exr") + "': "));
 }
 
+// Issue 35: 27 bytes declaring a 2 GiB attribute took 2.1 GB before OpenEXR found the file short; a FIFO
+// blocked merge for ever; OpenEXR's own message repeated the path over several lines.
+TEST_CASE("image files: an OpenEXR header is checked against the file before OpenEXR allocates what it says") {
+  const rt::test::TempDir dir;
+  // Magic, version 2, then an attribute "a" of type "s" declaring 0x7fffffff bytes, and 11 bytes more.
+  const std::string huge("\x76\x2f\x31\x01\x02\x00\x00\x00" "a\0s\0\xff\xff\xff\x7f" "12345678901", 27);
+  const std::string path = dir.write("huge.exr", huge);
+  CHECK_THROWS_WITH(rt::readExr(path), "cannot read '" + path +
+                                           "': its attribute 'a' declares 2147483647 bytes, but only 11 are left in the file");
+  const std::string multi = dir.write("multi.exr", std::string("\x76\x2f\x31\x01\x02\x10\x00\x00\0", 9));
+  CHECK_THROWS_WITH(rt::readExr(multi),
+                    "cannot read '" + multi + "': it is a multi-part or deep OpenEXR file, not a tile");
+  REQUIRE(mkfifo(dir.file("fifo.exr").c_str(), 0600) == 0);
+  CHECK_THROWS_WITH(rt::readExr(dir.file("fifo.exr")),
+                    "cannot read '" + dir.file("fifo.exr") + "': it is not a regular file");
+  // Re-saved lossily, as half floats (DWAB's loss) or with PXR24, a tile is not the render's floats (issue 35:
+  // such tiles merged with exit 0).
+  for (const auto& [compression, type] : {std::pair{Imf::DWAB_COMPRESSION, Imf::HALF},
+                                          std::pair{Imf::PXR24_COMPRESSION, Imf::FLOAT}}) {
+    Imf::Header header(4, 4);
+    header.compression() = compression;
+    for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(type));
+    std::vector<float> floats(16, 0.5f);
+    std::vector<half> halves(16, half(0.5f));
+    char* base = type == Imf::HALF ? reinterpret_cast<char*>(halves.data()) : reinterpret_cast<char*>(floats.data());
+    const size_t size = type == Imf::HALF ? sizeof(half) : sizeof(float);
+    {
+      Imf::OutputFile file(dir.file("saved.exr").c_str(), header);
+      Imf::FrameBuffer frame;
+      for (const char* c : {"R", "G", "B"}) frame.insert(c, Imf::Slice(type, base, size, 4 * size));
+      file.setFrameBuffer(frame);
+      file.writePixels(4);
+    }
+    CHECK_THROWS_WITH(rt::readExr(dir.file("saved.exr")),
+                      "cannot read '" + dir.file("saved.exr") + "': " +
+                          (type == Imf::HALF ? std::string("its R channel is not 32-bit float")
+                                             : "it is compressed with PXR24, which rounds its floats: they are not "
+                                               "the render's"));
+  }
+  // A file cut short: OpenEXR's message, on one line.
+  rt::writeExr(rt::Image(4, 4), dir.file("whole.exr"));
+  const std::string cut = dir.write("cut.exr", rt::test::readAll(dir.file("whole.exr")).substr(0, 340));
+  try {
+    rt::readExr(cut);
+    FAIL("read a file cut short");
+  } catch (const rt::Error& e) {
+    CHECK(std::string(e.what()).find('\n') == std::string::npos);
+  }
+}
+
 TEST_CASE("output file: a symbolic link planted at any name in the folder is never written through") {
   const rt::test::TempDir dir;
   const std::string victim = dir.write("victim.txt", "keep me");
@@ -152,8 +222,10 @@ TEST_CASE("output file: a name of 251 characters, the most with room for no suff
   CHECK(dir.names() == std::vector<std::string>{name});
 }
 
-TEST_CASE("output file: SIGTERM, SIGINT or SIGHUP while writing removes the temporary file and keeps the old one") {
-  for (const int sig : {SIGTERM, SIGINT, SIGHUP}) {
+// Issue 35: QUIT, USR1, ALRM, PIPE and XCPU used to leave the temporary file behind.
+TEST_CASE("output file: a signal that ends the process while writing removes the temporary file, keeps the old one") {
+  for (const int sig : {SIGTERM, SIGINT, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGPIPE, SIGXCPU, SIGVTALRM,
+                        SIGPROF}) {
     CAPTURE(sig);
     const rt::test::TempDir dir;
     const std::string target = dir.write("out.png", "the previous picture");

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include <catch2/catch.hpp>
@@ -331,4 +332,30 @@ TEST_CASE("The depth bomb at --depth=64: an eye ray's tree stays within 8191 ray
   // Up to that depth the tree is what the cutoff leaves, far below the budget.
   CHECK(rays(12) == 528);
   CHECK(rays(8) == 116);
+}
+
+// Issue 35: with -gi every gathered ray had a tree of its own and gathered again, so one eye sample of the
+// depth bomb cost billions of rays (minutes a pixel at --depth=64, or at -gi_bounces=7). Now one eye sample,
+// gathered trees included, stays within kSampleRays; counted, not timed.
+TEST_CASE("The depth bomb with -gi: one eye sample costs at most 2^20 rays, gathered trees included", "[render]") {
+  const SceneDesc desc = loadScene(sourceDir() + "/scenes/depth_bomb.pov");
+  const Scene<double> scene(desc, chooseArithmetic(desc));
+  const Camera<double> camera(desc.camera, 4, 3);
+  const auto rays = [&](std::optional<int> depth, std::optional<int> bounces) {
+    RenderOptions options;
+    options.depth = depth;
+    options.gi.enabled = true;
+    options.gi.samples = {8, 4};
+    options.gi.bounces = bounces;
+    Tracer<double> tracer(scene, options);
+    tracer.pixel(camera, 2, 1);
+    const RayCounts& c = tracer.counts();
+    return c.eye + c.gather + c.secondary;
+  };
+  CHECK(kSampleRays == 1048576);
+  const uint64_t deep = rays(64, std::nullopt), bounced = rays(std::nullopt, 7);
+  CHECK(deep <= kSampleRays);
+  CHECK(deep > kSampleRays / 2);  // the bound is what stopped it
+  CHECK(bounced <= kSampleRays);
+  CHECK(bounced > kSampleRays / 2);
 }

@@ -156,6 +156,22 @@ TEST_CASE("precision: the course tier for course-scale POV scenes only") {
   CHECK(tier(far) == Tier::Float);
 }
 
+// Issue 35: `translate <1e40,0,0> translate <-1e40,0,0>` leaves the sphere where it was, but the course tier
+// composes the steps in float, where 1e40 overflows and the sphere vanished. Every partial product counts.
+TEST_CASE("precision: the course tier only where float holds every step of every transform") {
+  const auto scene = [](double far) {
+    rt::SceneDesc s = withCamera({0, 0, 14});
+    add(s, rt::SphereDesc{{0, 0, 0}, 2}, {{rt::TransformStep::Kind::Translate, {far, 0, 0}},
+                                          {rt::TransformStep::Kind::Translate, {-far, 0, 0}}});
+    return s;
+  };
+  CHECK(rt::sceneScale(scene(1e40)).extent == rt::sceneScale(scene(0)).extent);  // the sphere has not moved
+  CHECK(rt::sceneScale(scene(1e40)).largestTransform == 1e40);
+  CHECK(rt::chooseArithmetic(scene(1e40)).tier == Tier::Float);
+  CHECK(rt::chooseArithmetic(scene(1000)).tier == Tier::Course);
+  CHECK(rt::chooseArithmetic(scene(1000.5)).tier == Tier::Float);
+}
+
 TEST_CASE("precision: explicit requests win over the course tier, each on its own") {
   rt::SceneDesc s = withCamera({0, 0, 14});
   add(s, rt::SphereDesc{{0, 0, 0}, 2});

@@ -92,6 +92,8 @@ echo "local-cluster: one-node cluster up in $((SECONDS - start)) s ($node, $cpus
 sinfo
 
 cd "$dir/work"
+cp "$scene" scene.pov  # a copy, edited below
+scene=$dir/work/scene.pov
 "$raytrace" render "$scene" "$width" "$height" "$@" --quiet -o one.png
 RAYTRACE=$raytrace "$here/submit.sh" -n "$tiles" -o "$dir/work/slurm.png" --wait "$scene" "$width" "$height" "$@"
 cmp one.png slurm.png
@@ -102,3 +104,24 @@ rm slurm.png slurm.png.tiles/tile-0.exr
 RAYTRACE=$raytrace "$here/submit.sh" -n "$tiles" -o "$dir/work/slurm.png" --wait "$scene" "$width" "$height" "$@"
 cmp one.png slurm.png
 echo "local-cluster: resubmitted, tile 0 alone rendered again; the same bytes ($((SECONDS - start)) s in all)"
+# Resuming after the request changed: a new height, then an edited scene, then a truncated tile. Each time
+# the stale or unreadable tiles alone are rendered again (their logs say why) and the bytes are right.
+submit() { RAYTRACE=$raytrace "$here/submit.sh" -n "$tiles" -o "$dir/work/slurm.png" --wait "$scene" "$@"; }
+check() {
+  "$raytrace" render "$scene" "$@" --quiet -o one.png
+  cmp one.png slurm.png
+  grep -h "raytrace: 'tile-" slurm.png.tiles/tile-*.log | sort | uniq -c
+}
+submit "$width" $((height + 2)) "$@"
+check "$width" $((height + 2)) "$@"
+[ "$(cat slurm.png.tiles/tile-*.log | grep -c 'is stale')" = "$tiles" ] || { echo "local-cluster: stale tiles kept" >&2; exit 1; }
+echo "// edited" >>"$scene"
+submit "$width" "$height" "$@"
+check "$width" "$height" "$@"
+[ "$(cat slurm.png.tiles/tile-*.log | grep -c 'raytrace.sceneHash')" = "$tiles" ] || { echo "local-cluster: the edit not seen" >&2; exit 1; }
+head -c 100 slurm.png.tiles/tile-1.exr >cut && mv cut slurm.png.tiles/tile-1.exr
+submit "$width" "$height" "$@"
+check "$width" "$height" "$@"
+grep -q "'tile-1.exr' is unreadable" slurm.png.tiles/tile-1.log || { echo "local-cluster: tile 1 not redone" >&2; exit 1; }
+[ "$(cat slurm.png.tiles/tile-*.log | grep -c 'kept')" = $((tiles - 1)) ] || { echo "local-cluster: not kept" >&2; exit 1; }
+echo "local-cluster: resubmitted after a new size, an edited scene and a truncated tile; the same bytes as one machine ($((SECONDS - start)) s in all)"

@@ -12,8 +12,10 @@
 #   --sbatch OPTS   more sbatch options for both jobs, e.g. "--partition=render --time=1:00:00"
 #
 # The tiles, the scene's copy and the logs go to OUT.tiles, which every node must see. Submitting again
-# resumes: only tiles not yet written are rendered (a tile is written whole or not at all). $RAYTRACE names the
-# executable on the nodes (default: raytrace on their PATH).
+# resumes: a task keeps its tile if it is of this very render (scene contents, size, options, program
+# version) and renders a missing, unreadable or stale one again, its log (tile-I.log) saying which; the merge
+# job checks every tile against the request. $RAYTRACE names the executable on the nodes (default: raytrace
+# on their PATH).
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
@@ -32,7 +34,7 @@ while (($#)); do
   esac
 done
 (($# >= 3)) || die "give the scene, width and height (see --help)"
-[[ $tiles =~ ^[1-9][0-9]*$ ]] || die "-n must be a whole number of tiles"
+[[ $tiles =~ ^[1-9][0-9]{0,4}$ ]] || die "-n must be a whole number of tiles from 1 to 32768"
 [ -n "$output" ] || die "give the merged image's name with -o"
 scene=$1 width=$2 height=$3
 shift 3
@@ -41,20 +43,15 @@ shift 3
 case $output in /*) ;; *) output=$PWD/$output ;; esac
 dir=$output.tiles
 mkdir -p "$dir"
-name=$(basename "$scene")
-cmp -s "$scene" "$dir/$name" 2>/dev/null || cp "$scene" "$dir/$name"
+name=$(basename -- "$scene")
+cmp -s "$scene" "$dir/$name" 2>/dev/null || cp -- "$scene" "$dir/$name"
+[[ $name == -* ]] && name=./$name  # not an option to raytrace
 cd "$dir"
 
-missing=()
-for ((i = 0; i < tiles; i++)); do [ -e "tile-$i.exr" ] || missing+=("$i"); done
-dependency=()
-if ((${#missing[@]})); then
-  array=$(IFS=,; echo "${missing[*]}")
-  job=$(sbatch --parsable "${extra[@]}" --array="$array" --cpus-per-task="$cpus" \
-    "$here/render-tiles.sbatch" "$tiles" "$name" "$width" "$height" "$@")
-  job=${job%%;*}
-  dependency=(--dependency=afterok:"$job")
-  echo "submit.sh: tiles ${array} of $tiles: job $job"
-fi
-merge=$(sbatch --parsable "${extra[@]}" "${dependency[@]}" "${wait[@]}" "$here/merge.sbatch" "$tiles" "$output")
+job=$(sbatch --parsable "${extra[@]}" --array="0-$((tiles - 1))" --cpus-per-task="$cpus" \
+  "$here/render-tiles.sbatch" "$tiles" "$name" "$width" "$height" "$@")
+job=${job%%;*}
+echo "submit.sh: tiles 0-$((tiles - 1)) of $tiles (current ones kept): job $job"
+merge=$(sbatch --parsable "${extra[@]}" --dependency=afterok:"$job" "${wait[@]}" "$here/merge.sbatch" "$tiles" \
+  "$output" "$name" "$width" "$height" "$@")
 echo "submit.sh: merge into $output: job ${merge%%;*}"

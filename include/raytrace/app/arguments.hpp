@@ -28,6 +28,7 @@ struct Words {
   bool writeAnywhere = false;                            // nor these: they are about the files render makes
   std::string output;                                    // -o's value; "" without -o
   std::string tile, region;                              // --tile's and --region's values; "" without them
+  bool resume = false;  // --resume: a tile already written for this very render is kept
   // The options given that only some commands take, as spelled (before any '='), in command-line order.
   std::vector<std::string> scoped;
 };

@@ -32,6 +32,7 @@ struct Invocation {
   std::string preview;               // --preview: the file the picture so far goes to, every few seconds
   std::ostream* errors = nullptr;    // where a command reports a failure it carries on after (a .cli write)
   bool writeAnywhere = false;        // --allow-write-anywhere: a .cli write may leave the current folder
+  bool resume = false;               // --resume: a tile already at -o, of this very render, is kept
   double loadSeconds = 0;         // the reading of the scene file
 };
 

@@ -1,6 +1,8 @@
 // `raytrace merge -o OUT TILE...`: the tiles of one render (--tile, --region) joined into its image.
 #pragma once
 
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +12,14 @@ namespace rt {
 // version) and cover the picture exactly once; the image is then what the render on one machine makes, bit for
 // bit, in any format (a PNG's bytes converted as that render converts them). Throws Error naming the file at
 // fault, having written nothing.
-int merge(const std::vector<std::string>& args);
+//
+// With a request (`--for SCENE WIDTH HEIGHT [render options]`, read by runCommand), every tile must also be a
+// tile of that render: what a resumed render on many machines checks, so that no tile of an older request is
+// merged. A merged OpenEXR image keeps the tiles' attributes, so it is a tile of its render in turn.
+struct TileRequest {
+  std::map<std::string, std::string> header;  // tileHeader() of the whole picture
+  int width = 0, height = 0;
+};
+int merge(const std::vector<std::string>& args, const std::optional<TileRequest>& request = std::nullopt);
 
 }  // namespace rt

@@ -20,6 +20,15 @@ constexpr const char* kToByteAttribute = "raytrace.toByte";
 // its hash (FNV-1a, 64 bits).
 std::map<std::string, std::string> tileHeader(const Invocation& inv, const std::string& command);
 
+// The first attribute in which header `mine` differs from `wanted`, the part too unless `ignorePart`:
+// "its raytrace.size is '61x43', not '80x60'", or "" if none. Values are quoted and bounded.
+std::string headerDifference(const std::map<std::string, std::string>& mine,
+                             const std::map<std::string, std::string>& wanted, bool ignorePart);
+
+// Why the file at `path` is not the tile of `command` with `inv` (its header, picture size and data window):
+// "" when it is; "missing", "unreadable (<error>)" or "stale (its <attribute> is ..., not ...)".
+std::string tileStaleness(const Invocation& inv, const std::string& command, const std::string& path);
+
 // The byte conversion a header names, or an Error naming `file` for another value.
 Conventions::ToByte toByteOf(const std::map<std::string, std::string>& header, const std::string& file);
 

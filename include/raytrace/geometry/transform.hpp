@@ -3,6 +3,8 @@
 // very float matrix the course's reference renderer builds, rounding included.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -17,8 +19,11 @@ struct TransformStep {
 
 // M = step_n ⋯ step_1: each step multiplies on the left, in T arithmetic, the way the course's reference
 // builds it. `rotate <x,y,z>` is R = Rx·Ry·Rz, itself built from the identity by left-multiplying Rz, Ry, Rx
-// in turn, so it turns about z first (§c.10; the opposite of POV-Ray's order).
-template <class T> glm::mat<4, 4, T, glm::defaultp> composeTransforms(const std::vector<TransformStep>& steps) {
+// in turn, so it turns about z first (§c.10; the opposite of POV-Ray's order). With `largest`, the largest
+// magnitude of any entry of M and of every partial product on the way is written there: what composing in T
+// must be able to hold.
+template <class T>
+glm::mat<4, 4, T, glm::defaultp> composeTransforms(const std::vector<TransformStep>& steps, T* largest = nullptr) {
   using M4 = glm::mat<4, 4, T, glm::defaultp>;
   using V3 = glm::vec<3, T, glm::defaultp>;
   const M4 identity(T(1));
@@ -40,6 +45,9 @@ template <class T> glm::mat<4, 4, T, glm::defaultp> composeTransforms(const std:
         m = r * m;
         break;
       }
+    }
+    for (int i = 0; largest && i < 4; ++i) {
+      for (int j = 0; j < 4; ++j) *largest = std::max(*largest, std::abs(m[i][j]));
     }
   }
   return m;

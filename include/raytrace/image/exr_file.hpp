@@ -24,8 +24,9 @@ void writeExr(const ExrImage& image, const std::string& path);
 // The same for a whole image without attributes.
 void writeExr(const Image& image, const std::string& path);
 
-// Reads a file writeExr wrote (or any OpenEXR file with R, G and B channels; others are ignored), with its
-// string attributes. Throws Error ("cannot read 'path': …").
+// Reads a file writeExr wrote (or any losslessly compressed OpenEXR file with 32-bit float R, G and B channels;
+// others are ignored), with its string attributes. Throws Error ("cannot read 'path': …"), having checked the
+// header's sizes against the file before OpenEXR allocates them.
 ExrImage readExr(const std::string& path);
 
 }  // namespace rt

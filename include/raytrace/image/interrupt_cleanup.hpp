@@ -1,4 +1,5 @@
-// Removal of the temporary file being written when SIGINT, SIGTERM or SIGHUP ends the program.
+// Removal of the temporary file being written when a signal ends the program (INT, TERM, HUP, QUIT, USR1, ALRM,
+// PIPE, XCPU and the others whose default is to end it).
 #pragma once
 
 #include <string>

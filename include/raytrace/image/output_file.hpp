@@ -34,8 +34,10 @@ class OutputFile {
 // `bytes` written as the file at `path` through an OutputFile.
 void writeFile(const std::string& path, const std::vector<unsigned char>& bytes);
 
-// Throws the Error writing `path` would meet in its folder (missing, not a folder, not writable), so that a
-// command can report it before it spends any time rendering.
+// Throws the Error writing `path` would meet in its folder (missing, not a folder, not writable), or at the
+// path itself (something there that is not a regular file or a symbolic link, or a read-only file, which
+// renaming over it would replace without a word), so that a command can report it before it spends any time
+// rendering.
 void checkWritableFolder(const std::string& path);
 
 }  // namespace rt

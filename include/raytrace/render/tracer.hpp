@@ -3,6 +3,7 @@
 // fill, so they print what the renderer computes.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "raytrace/render/camera.hpp"
@@ -18,6 +19,10 @@ namespace rt {
 // The depth up to which an eye ray's tree is traced in full wherever its rays can change the pixel; deeper
 // recursion (--depth above it) stays within that many rays per eye ray, 2^13 − 1 (tracer.cpp).
 constexpr int kFullTreeDepth = 12;
+// The most rays one eye sample may cost with -gi, its tree and every tree it gathers together (2^20): gathering
+// multiplies trees (each gathered ray has a tree of its own, which gathers again), and this keeps a pixel's
+// work bounded whatever the depth, bounces and sample counts; renders below it are unchanged (tracer.cpp).
+constexpr uint64_t kSampleRays = uint64_t(1) << 20;
 
 template <class T> class Tracer {
  public:
@@ -44,6 +49,13 @@ template <class T> class Tracer {
 
   // The rays traced so far, by kind.
   const RayCounts& counts() const { return counts_; }
+
+  // The memory a tracer takes per light of the scene with `options`: each batch level's shadow rays of a
+  // packet, and the shadow cache. The renderer checks it before giving each thread a tracer.
+  static std::uint64_t bytesPerLight(const RenderOptions& options) {
+    const std::uint64_t levels = 1 + std::uint64_t(options.gi.enabled ? options.gi.bounceCount() : 0);
+    return levels * Bvh<T>::kPacket * sizeof(std::optional<ShadowRay>) + sizeof(const Object<T>*);
+  }
 
  private:
   struct Traced {
@@ -134,6 +146,7 @@ template <class T> class Tracer {
   float cutoff_;
   int treeRays_;      // the most rays an eye ray's tree may have: a full tree of depth min(maxDepth, kFullTreeDepth)
   int raysLeft_ = 0;  // the secondary rays the current eye ray's tree may still have
+  uint64_t sampleRaysLeft_ = 0;  // the rays the current eye sample may still cost, gathered trees included
   std::vector<const Object<T>*> lastOccluder_;  // per light: what occluded its latest shadow ray (Scene::occluded)
   std::vector<Batch> batches_;                 // [0] tile()'s eye rays, [1 + b] the gather rays at bounce b
   RayCounts counts_;

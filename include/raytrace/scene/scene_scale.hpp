@@ -13,6 +13,9 @@ struct SceneScale {
   double extent;
   double smallestFeature;  // +∞ when no object has one (planes only, or nothing)
   glm::dvec3 lo, hi;       // the box around the camera and every bounded object: where rays start
+  // The largest entry of any object's transform and of the partial products composing it: the course tier
+  // composes them in float (geometry/transform.hpp), so they must be in its range too.
+  double largestTransform = 1;
 };
 SceneScale sceneScale(const SceneDesc& scene);
 

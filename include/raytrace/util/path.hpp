@@ -9,4 +9,7 @@ namespace rt {
 // hidden file's name is no extension).
 std::string extension(const std::string& path);
 
+// Whether `a` and `b` name one existing file (the same device and inode), however they are spelt.
+bool sameFile(const std::string& a, const std::string& b);
+
 }  // namespace rt
