@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# tools/render-parallel --resume after the request or the tiles changed (issue 35): a new size or new options,
+# tools/render-parallel --resume after the request or the tiles changed: a new size or new options,
 # an edited scene, a tile deleted or truncated. Each time only the tiles that are not of the new request are
 # rendered again, each tile's line says why, and the image is the one-machine render's bytes.
 #   tests/render_parallel_resume.sh <raytrace> <scene> <empty work directory>
@@ -52,7 +52,7 @@ grep -qF "is not a tile of the render asked for: its raytrace.options is '', not
 [ ! -e late.png ] || fail "merge wrote an image from a stale tile"
 echo "render-parallel: merge --for refuses a stale tile"
 
-# Mistakes found before any tile is rendered (issue 35): an absurd tile count, more tiles than rows, an image
+# Mistakes found before any tile is rendered: an absurd tile count, more tiles than rows, an image
 # merge cannot write; and a scene whose name starts with '-' is a scene, not an option.
 expect_error() {
   local message=$1

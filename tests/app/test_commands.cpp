@@ -90,8 +90,14 @@ TEST_CASE("cli: help for one command, help itself and merge included") {
   CHECK(help.status == 0);
   CHECK(help.out == "usage: raytrace help <command>\nthe usage, summary and options of one command\n");
   CHECK(run({"help", "merge"}).out ==
-        "usage: raytrace merge -o <image> <tile.exr>... [--threads N]\nthe tiles of one render (--tile, --region) "
-        "joined into its image, exactly as one machine renders it\n");
+        "usage: raytrace merge -o <image> <tile.exr>... [--threads N] [--for <scene> <width> <height> [options]]\n"
+        "the tiles of one render (--tile, --region) joined into its image, exactly as one machine renders it\n"
+        "options:\n"
+        "  -o, --output FILE               the image (.png, .hdr or .exr; an .exr keeps the tiles' attributes)\n"
+        "  --threads N                     convert on N threads (default: every core)\n"
+        "  --for <scene> <width> <height> [render options]\n"
+        "                                  last: every tile must be of this render (the scene's contents,\n"
+        "                                  size, options and program version), or merge writes nothing\n");
   CHECK(run({"merge", "--help"}).out == run({"help", "merge"}).out);
   const std::string sceneinfo = run({"help", "sceneinfo"}).out;
   CHECK(sceneinfo.rfind("usage: raytrace sceneinfo <scene> [options]\nthe camera, lights and objects as parsed\n"

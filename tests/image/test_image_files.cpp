@@ -163,8 +163,7 @@ TEST_CASE("image files: an OpenEXR header is checked against the file before Ope
   REQUIRE(mkfifo(dir.file("fifo.exr").c_str(), 0600) == 0);
   CHECK_THROWS_WITH(rt::readExr(dir.file("fifo.exr")),
                     "cannot read '" + dir.file("fifo.exr") + "': it is not a regular file");
-  // Re-saved lossily, as half floats (DWAB's loss) or with PXR24, a tile is not the render's floats (issue 35:
-  // such tiles merged with exit 0).
+  // Re-saved lossily, as half floats (DWAB's loss) or with PXR24, a tile is not the render's floats: refused.
   for (const auto& [compression, type] : {std::pair{Imf::DWAB_COMPRESSION, Imf::HALF},
                                           std::pair{Imf::PXR24_COMPRESSION, Imf::FLOAT}}) {
     Imf::Header header(4, 4);
