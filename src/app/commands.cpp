@@ -324,9 +324,35 @@ Invocation invocation(const Command& command, const Words& words, std::ostream& 
   return inv;
 }
 
+// --dialect=course|povray and -L DIR (or -LDIR, +LDIR): how a .pov file is read and where a POV-Ray scene's
+// #include looks. Taken out of the arguments before the others are read.
+LoadOptions takeLoadFlags(std::vector<std::string>& args) {
+  LoadOptions load;
+  std::vector<std::string> rest;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a.rfind("--dialect=", 0) == 0) {
+      const std::string d = a.substr(10);
+      if (d != "course" && d != "povray") throw Error("--dialect must be course or povray, found " + quote(d));
+      load.dialect = d == "course" ? Dialect::Course : Dialect::PovRay;
+    } else if (a == "-L") {
+      if (i + 1 == args.size()) throw Error("-L needs a folder after it");
+      load.libraryPaths.push_back(args[++i]);
+    } else if ((a.rfind("-L", 0) == 0 || a.rfind("+L", 0) == 0) && a.size() > 2) {
+      load.libraryPaths.push_back(a.substr(2));
+    } else {
+      rest.push_back(a);
+    }
+  }
+  args = rest;
+  return load;
+}
+
 }  // namespace
 
-int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int runCommand(const std::vector<std::string>& given, std::ostream& out, std::ostream& err) {
+  std::vector<std::string> args = given;
+  LoadOptions load = takeLoadFlags(args);
   if (const auto text = helpText(args)) {
     out << *text;
     return 0;
@@ -339,7 +365,11 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   // The image commands render on all their threads: the helpers start while the file is read.
   if (command.numbers == 2) startHelpers(inv.options.threads);
   Stopwatch watch;
-  inv.scene = loadScene(inv.scenePath, inv.options.threads);
+  if (inv.width > 0 && inv.height > 0) {
+    load.width = inv.width;
+    load.height = inv.height;
+  }
+  inv.scene = loadScene(inv.scenePath, inv.options.threads, load);
   inv.loadSeconds = watch.lap();
   for (const std::string& w : collapseRepeats(inv.scene.warnings)) err << w << "\n";
   return command.run(inv, out);
