@@ -58,7 +58,7 @@ Value Interpreter::declarable() {
 Value Interpreter::arrayValue(const SourceLoc& at) {
   auto a = std::make_shared<ArrayValue>();
   double total = 1;
-  while (peek().is("[")) {
+  while (peekOperator("[")) {
     next();
     const SourceLoc nAt = here();
     const double n = std::floor(number("as the array's size") + 1e-10);
@@ -70,7 +70,7 @@ Value Interpreter::arrayValue(const SourceLoc& at) {
   }
   if (a->dims.empty()) fail(at, "expected '[' and a size after 'array'");
   a->elements.resize(size_t(total));
-  if (peek().is("{")) {
+  if (peekOperator("{")) {
     size_t index = 0;
     arrayInitialiser(*a, 0, index);
   }
@@ -85,7 +85,7 @@ void Interpreter::arrayInitialiser(ArrayValue& a, size_t dim, size_t& index) {
   SourceLoc at;
   next(&at);
   for (int i = 0; i < a.dims[dim]; ++i) {
-    if (i > 0) expect(",", "between the array's elements");
+    if (i > 0 && peek().is(",")) next();  // the commas may be left out
     if (dim + 1 < a.dims.size()) {
       if (!peek().is("{")) fail(here(), "expected '{' for the next dimension of the array");
       arrayInitialiser(a, dim + 1, index);
@@ -110,6 +110,11 @@ Value Interpreter::functionValue(const SourceLoc& at) {
     next();
   } else {
     f->params = {"x", "y", "z"};
+    // An image function's size, `function 256, 256 { … }`.
+    while (!peek().is("{") && peek().kind != Token::Kind::End) {
+      expression();
+      if (peek().is(",")) next();
+    }
   }
   expect("{", "to begin the function");
   f->body.name = frames_.back().file->name;

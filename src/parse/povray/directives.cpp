@@ -134,7 +134,13 @@ void Interpreter::directive() {
 
 void Interpreter::declareDirective(bool local, const SourceLoc& at) {
   SourceLoc idAt;
-  const std::string_view id = expectWord("an identifier after #declare", &idAt);
+  std::string_view id = expectWord("an identifier after #declare", &idAt);
+  // `#declare deprecated once "message" Name = …` warns when Name is used; the warning is not kept.
+  if (id == "deprecated") {
+    if (rawPeek().isWord("once")) ++frames_.back().pos;
+    if (rawPeek().kind == Token::Kind::String) ++frames_.back().pos;
+    id = expectWord("an identifier after #declare deprecated", &idAt);
+  }
   if (isKeyword(id)) fail(idAt, "'" + std::string(id) + "' is a keyword and cannot be declared");
   std::vector<double> index;
   while (rawPeek().is("[")) {
@@ -197,8 +203,7 @@ void Interpreter::macroDefinition(const SourceLoc& at) {
   ++frames_.back().pos;
   while (!rawPeek().is(")")) {
     def->params.push_back(expectWord("a parameter name"));
-    if (rawPeek().is(",")) ++frames_.back().pos;
-    else if (!rawPeek().is(")")) fail(locOf(rawPeek()), "expected ',' or ')' in the macro's parameters");
+    if (rawPeek().is(",")) ++frames_.back().pos;  // POV-Ray lets a comma be left out or end the list
   }
   ++frames_.back().pos;
   def->body = frames_.back().pos;

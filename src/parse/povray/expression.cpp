@@ -1,5 +1,6 @@
 // Expressions with POV-Ray's precedence: outside parentheses only arithmetic (+ - * / and unary + - !), since
 // `<` and `>` also delimit vectors; inside parentheses also relations, & and |, and ?:.
+#include <algorithm>
 #include <cmath>
 
 #include "interpreter_state.hpp"
@@ -81,6 +82,11 @@ Value Interpreter::relation() {
     next();
     const SourceLoc bAt = here();
     const Value b = sum();
+    if (a.type == Value::Type::String && b.type == Value::Type::String) {
+      const int d = a.s.compare(b.s);
+      a = Value::number(op == "<" ? d < 0 : op == "<=" ? d <= 0 : op == "=" ? d == 0 : op == "!=" ? d != 0 : op == ">=" ? d >= 0 : d > 0);
+      continue;
+    }
     if (a.type != Value::Type::Float) fail(at, std::string("a comparison needs floats, found a ") + typeName(a));
     if (b.type != Value::Type::Float) fail(bAt, std::string("a comparison needs floats, found a ") + typeName(b));
     const double x = a.v[0], y = b.v[0];
@@ -166,6 +172,7 @@ Value Interpreter::binary(char op, Value a, Value b, const SourceLoc& at) {
   if (!a.numeric() || !b.numeric()) {
     fail(at, std::string("'") + op + "' needs numbers, found a " + typeName(a.numeric() ? b : a));
   }
+  if (a.size > 5 || b.size > 5) fail(at, "a list of more than 5 numbers is no vector to compute with");
   if (a.type == Value::Type::Float && b.type == Value::Type::Float) {
     const double x = a.v[0], y = b.v[0];
     return Value::number(op == '+' ? x + y : op == '-' ? x - y : op == '*' ? x * y : x / y);
@@ -237,10 +244,11 @@ Value Interpreter::vectorLiteral(const SourceLoc& at) {
     const SourceLoc cAt = here();
     const Value v = expression();
     if (v.type != Value::Type::Float) fail(cAt, std::string("a vector's component must be a float, found a ") + typeName(v));
-    if (n == 5) fail(at, "a vector has at most 5 components");
-    c[size_t(n++)] = v.v[0];
-    if (!peekOperator(",")) break;
-    next();
+    // Longer lists (a matrix, a polynomial's coefficients) keep their first five: only blocks take them.
+    if (n < 5) c[size_t(n)] = v.v[0];
+    ++n;
+    if (peekOperator(",")) next();  // the commas may be left out, and one may end the list
+    if (peekOperator(">")) break;
   }
   expect(">", "to close the vector");
   if (n < 2) fail(at, "a vector needs at least 2 components");
@@ -284,7 +292,7 @@ Value Interpreter::colour(const SourceLoc& at) {
       if (v.type == Value::Type::Float) {
         c.fill(v.v[0]);
       } else if (v.type == Value::Type::Vector || v.type == Value::Type::Colour) {
-        for (int i = 0; i < v.size; ++i) c[size_t(i)] = v.v[size_t(i)];
+        for (int i = 0; i < std::min(v.size, 5); ++i) c[size_t(i)] = v.v[size_t(i)];
       } else {
         fail(vAt, "expected a colour, found a " + std::string(typeName(v)));
       }
@@ -333,16 +341,17 @@ Value Interpreter::identifierValue(const Token& t, const SourceLoc& at) {
 
 Value Interpreter::callFunction(const FunctionDef& f, std::string_view name, const SourceLoc& at) {
   const std::vector<Value> args = arguments(at);
-  if (args.size() != f.params.size()) {
+  if (args.size() > f.params.size()) {
     fail(at, "function '" + std::string(name) + "' takes " + std::to_string(f.params.size()) + " arguments, found " +
                  std::to_string(args.size()));
   }
   if (macroDepth_ >= 400) fail(at, "function calls nested too deep");
   Scope scope;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i].type != Value::Type::Float) fail(at, "function arguments must be floats");
+  // Parameters without an argument are 0, as POV-Ray's x, y and z are for a one-argument call.
+  for (size_t i = 0; i < f.params.size(); ++i) {
+    if (i < args.size() && args[i].type != Value::Type::Float) fail(at, "function arguments must be floats");
     auto slot = std::make_shared<Slot>();
-    slot->value = args[i];
+    slot->value = i < args.size() ? args[i] : Value::number(0);
     scope.symbols[f.params[i]] = slot;
   }
   ++macroDepth_;

@@ -42,7 +42,7 @@ class Lexer {
       } else if (c == '#') {
         ++i_;
         while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t')) ++i_;
-        if (i_ >= s_.size() || !wordStart(s_[i_])) fail(t, "'#' must be followed by a directive name");
+        if (i_ >= s_.size() || !wordStart(s_[i_])) continue;  // a lone '#', which POV-Ray passes over
         t.kind = Token::Kind::Directive;
         t.text = word();
       } else {
@@ -137,7 +137,7 @@ class Lexer {
     const size_t start = i_;
     bool escapes = false;
     while (i_ < s_.size() && s_[i_] != '"') {
-      if (s_[i_] == '\n') fail(at, "this string is not closed on its line");
+      if (s_[i_] == '\n') newline();  // a string may go on over lines
       if (s_[i_] == '\\' && i_ + 1 < s_.size()) {
         escapes = true;
         ++i_;
