@@ -10,11 +10,6 @@ namespace {
 // The most elements an array may have: a typo in a size should be a message, not an exhausted memory.
 constexpr double kMaxArrayElements = 1e8;
 
-bool isColourWord(std::string_view w) {
-  return w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" || w == "rgbft" || w == "srgb" ||
-         w == "srgbf" || w == "srgbt" || w == "srgbft";
-}
-
 }  // namespace
 
 // Whether `t` begins a value rather than being a keyword of the block it is in.
@@ -26,7 +21,7 @@ bool Interpreter::startsExpression(const Token& t) {
     case Token::Kind::Symbol:
       return t.is("<") || t.is("(") || t.is("-") || t.is("+") || t.is("!");
     case Token::Kind::Word:
-      return !isKeyword(t.text) || isColourWord(t.text) || isBuiltin(t.text);
+      return t.startsValue;
     default:
       return false;
   }
@@ -44,12 +39,30 @@ Value Interpreter::declarable() {
     next();
     return functionValue(at);
   }
-  if (t.kind == Token::Kind::Word && isKeyword(t.text) && !isColourWord(t.text) && !isBuiltin(t.text)) {
+  if (t.kind == Token::Kind::Word && !t.startsValue) {
     const std::string_view keyword = next().text;
     expect("{", ("after '" + std::string(keyword) + "'").c_str());
     Value v;
     v.type = Value::Type::Node;
     v.ref = std::const_pointer_cast<Node>(block(keyword, at, "}"));
+    // `texture { … } texture { … }`: a layered texture, its layers in order.
+    auto layer = [this] {
+      const Frame& f = frames_.back();
+      return rawPeek().isWord("texture") && f.file->tokens[f.pos + 1].is("{");
+    };
+    if (keyword == "texture" && layer()) {
+      auto layers = std::make_shared<Node>();
+      layers->keyword = "layered texture";
+      layers->loc = at;
+      layers->items.push_back({Item::Kind::Node, {}, at, {}, std::static_pointer_cast<const Node>(v.ref)});
+      while (layer()) {
+        SourceLoc layerAt;
+        next(&layerAt);
+        next();
+        layers->items.push_back({Item::Kind::Node, {}, layerAt, {}, block("texture", layerAt, "}")});
+      }
+      v.ref = layers;
+    }
     return v;
   }
   return expression();

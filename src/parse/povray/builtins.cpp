@@ -19,16 +19,6 @@ namespace {
 
 constexpr double kPi = 3.1415926535897932384626;
 
-// The constants and the functions, sorted.
-constexpr std::string_view kBuiltins[] = {
-    "abs", "acos", "acosh", "asc", "asin", "asinh", "atan", "atan2", "atanh", "bitwise_and", "bitwise_or",
-    "bitwise_xor", "ceil", "chr", "clock", "clock_delta", "clock_on", "concat", "cos", "cosh", "datetime", "defined",
-    "degrees", "dimension_size", "dimensions", "div", "exp", "false", "file_exists", "final_clock", "final_frame",
-    "floor", "frame_number", "image_height", "image_width", "initial_clock", "initial_frame", "input_file_name",
-    "inside", "int", "internal", "ln", "log", "max", "max_extent", "min", "min_extent", "mod", "no", "now", "off",
-    "on", "pi", "pow", "prod", "radians", "rand", "seed", "select", "sin", "sinh", "sqrt", "str", "strcmp", "strlen",
-    "strlwr", "strupr", "substr", "sum", "t", "tan", "tanh", "trace", "true", "u", "v", "val", "vaxis_rotate",
-    "vcross", "vdot", "version", "vlength", "vnormalize", "vrotate", "vstr", "vturbulence", "x", "y", "yes", "z"};
 
 // printf's %f as str() and vstr() use it: a negative width pads with zeros, a negative precision means 6.
 std::string format(double x, double width, double precision) {
@@ -45,10 +35,6 @@ std::string format(double x, double width, double precision) {
 Value vec3(const glm::dvec3& v) { return Value::vector({v.x, v.y, v.z, 0, 0}, 3); }
 
 }  // namespace
-
-bool Interpreter::isBuiltin(std::string_view word) const {
-  return std::binary_search(std::begin(kBuiltins), std::end(kBuiltins), word);
-}
 
 std::vector<Value> Interpreter::arguments(const SourceLoc& at) {
   (void)at;

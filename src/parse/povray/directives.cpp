@@ -48,7 +48,7 @@ void Interpreter::directive() {
     version_ = number("after #version");
     if (rawPeek().is(";")) ++frames_.back().pos;
   } else if (name == "declare" || name == "local") {
-    declareDirective(name == "local", at);
+    declareDirective(name == "local");
   } else if (name == "undef") {
     const std::string_view id = expectWord("an identifier after #undef");
     for (size_t i = scopes_.size(); i-- > 0;) {
@@ -132,7 +132,7 @@ void Interpreter::directive() {
   }
 }
 
-void Interpreter::declareDirective(bool local, const SourceLoc& at) {
+void Interpreter::declareDirective(bool local) {
   SourceLoc idAt;
   std::string_view id = expectWord("an identifier after #declare", &idAt);
   // `#declare deprecated once "message" Name = …` warns when Name is used; the warning is not kept.
@@ -152,7 +152,7 @@ void Interpreter::declareDirective(bool local, const SourceLoc& at) {
   Value value = declarable();
   if (rawPeek().is(";")) ++frames_.back().pos;
   if (index.empty()) {
-    assign(id, std::move(value), local, at);
+    assign(id, std::move(value), local);
     return;
   }
   Slot* slot = find(id);
@@ -199,6 +199,7 @@ void Interpreter::macroDefinition(const SourceLoc& at) {
   def->name = expectWord("a name after #macro");
   if (isKeyword(def->name)) fail(at, "'" + std::string(def->name) + "' is a keyword and cannot name a macro");
   def->file = frames_.back().file;
+  macroInitial_[static_cast<unsigned char>(def->name[0])] = true;
   if (!rawPeek().is("(")) fail(locOf(rawPeek()), "expected '(' after the macro's name");
   ++frames_.back().pos;
   while (!rawPeek().is(")")) {
@@ -227,7 +228,7 @@ void Interpreter::invokeMacro(const std::shared_ptr<MacroDef>& macro) {
     const Frame& f = frames_.back();
     const Token& t = rawPeek();
     std::shared_ptr<Slot> slot;
-    if (t.kind == Token::Kind::Word && !isKeyword(t.text) &&
+    if (t.kind == Token::Kind::Word && !t.keyword &&
         (f.file->tokens[f.pos + 1].is(",") || f.file->tokens[f.pos + 1].is(")"))) {
       for (size_t i = scopes_.size(); i-- > 0 && !slot;) {
         const auto it = scopes_[i].symbols.find(t.text);
@@ -304,7 +305,9 @@ void Interpreter::switchDirective() {
 
 void Interpreter::forDirective(const SourceLoc& at) {
   expect("(", "after #for");
-  const std::string_view var = expectWord("the loop's identifier");
+  SourceLoc varAt;
+  const std::string_view var = expectWord("the loop's identifier", &varAt);
+  if (isKeyword(var)) fail(varAt, "'" + std::string(var) + "' is a keyword and cannot be declared");
   expect(",", "after the loop's identifier");
   const double start = number("as the loop's start");
   expect(",", "after the loop's start");
@@ -316,7 +319,7 @@ void Interpreter::forDirective(const SourceLoc& at) {
   }
   expect(")", "after the loop's range");
   if (step == 0) fail(at, "the #for loop's step is 0");
-  assign(var, Value::number(start), true, at);
+  assign(var, Value::number(start), true);
   if (step > 0 ? start <= end + kEpsilon : start >= end - kEpsilon) {
     conds_.push_back({Cond::Kind::For, frames_.size(), frames_.back().pos, var, end, step});
   } else {

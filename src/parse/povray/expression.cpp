@@ -217,20 +217,18 @@ Value Interpreter::primary() {
       break;
     case Token::Kind::Word:
       // In a function's body x, y and z are its parameters.
-      if (!isKeyword(t.text) || (frames_.back().kind == Frame::Kind::Tokens && find(t.text))) {
+      if (!t.keyword || (frames_.back().kind == Frame::Kind::Tokens && find(t.text))) {
         return identifierValue(t, at);
       }
       break;
   }
   const std::string_view w = t.text;
-  if (w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" || w == "rgbft" || w == "srgb" ||
-      w == "srgbf" || w == "srgbt" || w == "srgbft" || w == "red" || w == "green" || w == "blue" || w == "filter" ||
-      w == "transmit") {
-    return colour(at);
-  }
-  if (isBuiltin(w)) {
+  if (t.startsValue && !isColourWord(w)) {
     next();
     return builtin(w, at);
+  }
+  if (isColourWord(w) || w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") {
+    return colour(at);
   }
   if (frames_.back().kind == Frame::Kind::Tokens) fail(at, "'" + std::string(w) + "' in a function is not supported yet");
   fail(at, "expected a value, found '" + std::string(w) + "'");

@@ -21,8 +21,8 @@ void Interpreter::run(const std::string& path, std::string_view text, const Node
     const Token& t = peek();
     if (t.kind == Token::Kind::End) break;
     const Token word = next(&at);
-    if (word.kind != Token::Kind::Word || !isKeyword(word.text) || !peek().is("{")) {
-      if (word.kind == Token::Kind::Word && !isKeyword(word.text) && !find(word.text)) {
+    if (word.kind != Token::Kind::Word || !word.keyword || !peek().is("{")) {
+      if (word.kind == Token::Kind::Word && !word.keyword && !find(word.text)) {
         fail(at, "undeclared identifier '" + std::string(word.text) + "'");
       }
       fail(at, "expected an object or a directive, found " + quote(word.text));
@@ -45,7 +45,7 @@ void Interpreter::declare(const std::string& name, const std::string& value) {
 
 // The next token as it is in the current frame, directives and all; the end of an include file or of a
 // function body leaves it for the next frame's tokens.
-const Token& Interpreter::rawPeek() {
+const Token& Interpreter::endOfFrame() {
   for (;;) {
     Frame& f = frames_.back();
     const Token& t = f.file->tokens[f.pos];
@@ -65,7 +65,7 @@ const Token& Interpreter::peek() {
     const Token& t = rawPeek();
     if (t.kind == Token::Kind::Directive) {
       directive();
-    } else if (t.kind == Token::Kind::Word && !isKeyword(t.text)) {
+    } else if (t.kind == Token::Kind::Word && !t.keyword && macroInitial_[static_cast<unsigned char>(t.text[0])]) {
       Slot* s = find(t.text);
       if (!s || s->value.type != Value::Type::Macro) return t;
       invokeMacro(std::static_pointer_cast<MacroDef>(s->value.ref));
@@ -144,10 +144,9 @@ Interpreter::Slot* Interpreter::find(std::string_view name) {
   return nullptr;
 }
 
-// #declare writes the global identifier, #local the innermost level's; a parameter passed by reference is
+// #declare writes the global identifier (the callers have refused keywords), #local the innermost level's; a parameter passed by reference is
 // written through to the caller's identifier either way.
-void Interpreter::assign(std::string_view name, Value value, bool local, const SourceLoc& at) {
-  if (isKeyword(name)) fail(at, "'" + std::string(name) + "' is a keyword and cannot be declared");
+void Interpreter::assign(std::string_view name, Value value, bool local) {
   Scope& inner = scopes_.back();
   Scope& target = local || inner.byReference.count(name) ? inner : scopes_.front();
   auto& slot = target.symbols[name];

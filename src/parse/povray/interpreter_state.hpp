@@ -16,15 +16,6 @@ struct Interpreter::Scope {
   std::unordered_set<std::string_view> byReference;
 };
 
-// Where tokens come from: a file (the scene or an include), a macro body, or a function's captured tokens.
-struct Interpreter::Frame {
-  enum class Kind { File, Macro, Tokens } kind;
-  const TokenFile* file;
-  size_t pos;
-  SourceLoc from;        // the #include or the macro call
-  std::string_view name;  // the macro's
-};
-
 // An open #if, #switch, #while, #for or macro call, closed by its #end.
 struct Interpreter::Cond {
   enum class Kind { If, Switch, While, For, Macro } kind;
@@ -45,8 +36,5 @@ struct Interpreter::FunctionDef : Shared {
   std::vector<std::string_view> params;  // x, y, z when none are written
   TokenFile body;                        // the tokens between the braces, then End
 };
-
-// Whether a word is one of the 3.7 keywords (which an identifier may not be).
-bool isKeyword(std::string_view word);
 
 }  // namespace rt::povray

@@ -2,7 +2,7 @@
 #include <iterator>
 #include <string_view>
 
-#include "interpreter_state.hpp"
+#include "raytrace/parse/povray/lexer.hpp"
 
 namespace rt::povray {
 
@@ -96,7 +96,27 @@ constexpr std::string_view kKeywords[] = {
     "x", "y", "yes", "z",
 };
 
+// The built-in constants and functions, sorted.
+constexpr std::string_view kBuiltins[] = {
+    "abs", "acos", "acosh", "asc", "asin", "asinh", "atan", "atan2", "atanh", "bitwise_and", "bitwise_or",
+    "bitwise_xor", "ceil", "chr", "clock", "clock_delta", "clock_on", "concat", "cos", "cosh", "datetime", "defined",
+    "degrees", "dimension_size", "dimensions", "div", "exp", "false", "file_exists", "final_clock", "final_frame",
+    "floor", "frame_number", "image_height", "image_width", "initial_clock", "initial_frame", "input_file_name",
+    "inside", "int", "internal", "ln", "log", "max", "max_extent", "min", "min_extent", "mod", "no", "now", "off",
+    "on", "pi", "pow", "prod", "radians", "rand", "seed", "select", "sin", "sinh", "sqrt", "str", "strcmp", "strlen",
+    "strlwr", "strupr", "substr", "sum", "t", "tan", "tanh", "trace", "true", "u", "v", "val", "vaxis_rotate",
+    "vcross", "vdot", "version", "vlength", "vnormalize", "vrotate", "vstr", "vturbulence", "x", "y", "yes", "z"};
+
 }  // namespace
+
+bool isBuiltin(std::string_view word) {
+  return std::binary_search(std::begin(kBuiltins), std::end(kBuiltins), word);
+}
+
+bool isColourWord(std::string_view w) {
+  return w == "color" || w == "colour" || w == "rgb" || w == "rgbf" || w == "rgbt" || w == "rgbft" || w == "srgb" ||
+         w == "srgbf" || w == "srgbt" || w == "srgbft";
+}
 
 bool isKeyword(std::string_view word) {
   return std::binary_search(std::begin(kKeywords), std::end(kKeywords), word);

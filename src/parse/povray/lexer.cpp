@@ -33,6 +33,8 @@ class Lexer {
       if (wordStart(c)) {
         t.kind = Token::Kind::Word;
         t.text = word();
+        t.keyword = isKeyword(t.text);
+        t.startsValue = !t.keyword || isBuiltin(t.text) || isColourWord(t.text);
       } else if (digit(c) || (c == '.' && i_ + 1 < s_.size() && digit(s_[i_ + 1]))) {
         t.kind = Token::Kind::Number;
         t.number = number();

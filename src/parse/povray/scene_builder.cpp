@@ -274,12 +274,15 @@ class Builder {
       o.loc = n.loc;
       surface_ = default_;
     }
+    bool textured = false;
     for (; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
       if (transformItem(n, i, o.transforms)) continue;
       if (it.kind == Item::Kind::Node) {
         const std::string_view m = it.node->keyword;
         if (m == "bounded_by" || m == "photons" || m == "radiosity") continue;
+        if (m == "texture" && textured) refuse(it.loc, "layered texture");
+        textured = textured || m == "texture";
         if (m == "pigment" || m == "finish" || m == "texture" || m == "material" || m == "interior") {
           surfaceItem(*it.node, surface_);
         } else {

@@ -4,6 +4,7 @@
 // left after the directives, the scene statements, is handed on one by one as syntax trees (value.hpp).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -47,13 +48,25 @@ class Interpreter {
  private:
   struct Slot;
   struct Scope;
-  struct Frame;
+  // Where tokens come from: a file (the scene or an include), a macro body, or a function's captured tokens.
+  struct Frame {
+    enum class Kind { File, Macro, Tokens } kind;
+    const TokenFile* file;
+    size_t pos;
+    SourceLoc from;         // the #include or the macro call
+    std::string_view name;  // the macro's
+  };
   struct Cond;
   struct MacroDef;
   struct FunctionDef;
 
   // Tokens.
-  const Token& rawPeek();
+  const Token& rawPeek() {
+    const Frame& f = frames_.back();
+    const Token& t = f.file->tokens[f.pos];
+    return t.kind != Token::Kind::End ? t : endOfFrame();
+  }
+  const Token& endOfFrame();
   const Token& peek();
   Token next(SourceLoc* loc = nullptr);
   SourceLoc here();
@@ -66,7 +79,7 @@ class Interpreter {
 
   // Directives (directives.cpp).
   void directive();
-  void declareDirective(bool local, const SourceLoc& at);
+  void declareDirective(bool local);
   void includeDirective(const SourceLoc& at);
   void macroDefinition(const SourceLoc& at);
   void invokeMacro(const std::shared_ptr<MacroDef>& macro);
@@ -80,7 +93,7 @@ class Interpreter {
 
   // Symbols.
   Slot* find(std::string_view name);
-  void assign(std::string_view name, Value value, bool local, const SourceLoc& at);
+  void assign(std::string_view name, Value value, bool local);
 
   // Expressions (expression.cpp).
   Value expression();   // arithmetic: + - * / and unary operators
@@ -101,7 +114,6 @@ class Interpreter {
   Value callFunction(const FunctionDef& f, std::string_view name, const SourceLoc& at);
 
   // Built-in functions (builtins.cpp).
-  bool isBuiltin(std::string_view word) const;
   Value builtin(std::string_view name, const SourceLoc& at);
   std::vector<Value> arguments(const SourceLoc& at);
 
@@ -125,6 +137,8 @@ class Interpreter {
   std::string sceneFolder_;
   double version_ = 3.7;
   size_t macroDepth_ = 0;
+  // The first letters of the macros' names: most words are no macro, and this spares them a look-up.
+  std::array<bool, 256> macroInitial_{};
 };
 
 }  // namespace rt::povray
