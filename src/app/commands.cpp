@@ -324,8 +324,9 @@ Invocation invocation(const Command& command, const Words& words, std::ostream& 
   return inv;
 }
 
-// --dialect=course|povray and -L DIR (or -LDIR, +LDIR): how a .pov file is read and where a POV-Ray scene's
-// #include looks. Taken out of the arguments before the others are read.
+// --dialect=course|povray, -L DIR (or -LDIR, +LDIR) and -D name=value (or Declare=name=value): how a .pov
+// file is read, where a POV-Ray scene's #include looks, and identifiers it starts with. Taken out of the
+// arguments before the others are read.
 LoadOptions takeLoadFlags(std::vector<std::string>& args) {
   LoadOptions load;
   std::vector<std::string> rest;
@@ -340,6 +341,10 @@ LoadOptions takeLoadFlags(std::vector<std::string>& args) {
       load.libraryPaths.push_back(args[++i]);
     } else if ((a.rfind("-L", 0) == 0 || a.rfind("+L", 0) == 0) && a.size() > 2) {
       load.libraryPaths.push_back(a.substr(2));
+    } else if (a == "-D" && i + 1 < args.size() && args[i + 1].find('=') != std::string::npos) {
+      load.declares.push_back(args[++i]);
+    } else if (a.rfind("Declare=", 0) == 0 && a.find('=', 8) != std::string::npos) {
+      load.declares.push_back(a.substr(8));
     } else {
       rest.push_back(a);
     }

@@ -95,6 +95,7 @@ SceneDesc loadScene(const std::string& path, int threads, const LoadOptions& opt
     pov.libraryPaths = options.libraryPaths;
     pov.imageWidth = options.width;
     pov.imageHeight = options.height;
+    pov.declares = options.declares;
     return povray::parsePovRay(text, path, pov);
   }
   return parsePov(text, path, threads);

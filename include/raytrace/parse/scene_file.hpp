@@ -43,6 +43,7 @@ struct LoadOptions {
   Dialect dialect = Dialect::Auto;
   std::vector<std::string> libraryPaths;  // -L: folders a POV-Ray scene's #include searches
   int width = 320, height = 240;          // POV-Ray's image_width and image_height
+  std::vector<std::string> declares;      // -D name=value: identifiers a POV-Ray scene starts with
 };
 
 // The POV language a .pov file is read in.

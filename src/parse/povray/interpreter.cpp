@@ -34,13 +34,13 @@ void Interpreter::run(const std::string& path, std::string_view text, const Node
 }
 
 void Interpreter::declare(const std::string& name, const std::string& value) {
-  names_.push_back(name);
+  names_.push_back(std::make_unique<std::string>(name));
   char* end = nullptr;
   const double x = std::strtod(value.c_str(), &end);
   const bool isNumber = !value.empty() && end == value.c_str() + value.size();
   auto slot = std::make_shared<Slot>();
   slot->value = isNumber ? Value::number(x) : Value::string(value);
-  scopes_.front().symbols[names_.back()] = slot;
+  scopes_.front().symbols[*names_.back()] = slot;
 }
 
 // The next token as it is in the current frame, directives and all; the end of an include file or of a

@@ -463,6 +463,10 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   io.imageHeight = options.imageHeight;
   io.debug = options.debugOutput ? &std::cerr : nullptr;
   Interpreter interpreter(io);
+  for (const std::string& d : options.declares) {
+    const size_t eq = d.find('=');
+    interpreter.declare(d.substr(0, eq), eq == std::string::npos ? "1" : d.substr(eq + 1));
+  }
   Builder builder(scene);
   interpreter.run(path, text, [&](const std::shared_ptr<const Node>& n) { builder.statement(*n); },
                   [&](const std::shared_ptr<const Node>& n) { builder.defaults(*n); });

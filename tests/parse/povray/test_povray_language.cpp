@@ -11,6 +11,7 @@
 
 #include "raytrace/parse/povray/interpreter.hpp"
 #include "raytrace/parse/povray/scene_builder.hpp"
+#include "raytrace/parse/scene_file.hpp"
 
 namespace rt::povray {
 namespace {
@@ -125,6 +126,18 @@ TEST_CASE("macros: parameters by reference, use inside expressions, recursion an
   CHECK(deep.substr(deep.size() - 40) == "in macro 'R' called from scene.pov:1:27)");
 }
 
+TEST_CASE("identifiers from the command line are numbers or strings, visible to #ifdef", "[povray]") {
+  std::ostringstream out;
+  InterpreterOptions options;
+  options.debug = &out;
+  Interpreter interpreter(options);
+  interpreter.declare("Count", "12.5");
+  interpreter.declare("Name", "tree");
+  interpreter.run("scene.pov", "#ifdef (Count) #debug concat(str(Count * 2, 0, 1), Name) #end",
+                  [](const std::shared_ptr<const Node>&) {}, [](const std::shared_ptr<const Node>&) {});
+  CHECK(out.str() == "25.0tree");
+}
+
 TEST_CASE("a declaration without a semicolon ends before the next directive", "[povray]") {
   CHECK(run("#declare A = array[2]\n#declare A[0] = 3\n#declare A[1] = A[0] * 2\n#debug str(A[1],0,0)") == "6");
 }
@@ -189,6 +202,11 @@ TEST_CASE("a .pov file is POV-Ray 3.7 when it uses a directive or global_setting
   CHECK_FALSE(usesPovRayLanguage("// #include \"colors.inc\"\ncamera { location <0,0,5> }"));
   CHECK_FALSE(usesPovRayLanguage("/* #declare */ sphere { <0,0,0>, 1 pigment { color rgb <1,0,0> } }"));
   CHECK_FALSE(usesPovRayLanguage("my_global_settings"));
+  // --dialect overrides the rule either way.
+  CHECK(povDialect("camera {}", Dialect::Auto) == SceneLanguage::Pov);
+  CHECK(povDialect("#version 3.7;", Dialect::Auto) == SceneLanguage::PovRay);
+  CHECK(povDialect("#version 3.7;", Dialect::Course) == SceneLanguage::Pov);
+  CHECK(povDialect("camera {}", Dialect::PovRay) == SceneLanguage::PovRay);
 }
 
 TEST_CASE("every file of POV-Ray's standard include library parses when included", "[povray]") {

@@ -128,7 +128,7 @@ class Interpreter {
   InterpreterOptions options_;
   std::vector<std::unique_ptr<TokenFile>> files_;
   std::vector<std::unique_ptr<std::string>> texts_;  // include files' bytes, which the tokens point into
-  std::vector<std::string> names_;                   // names declared from the command line
+  std::vector<std::unique_ptr<std::string>> names_;  // names declared from the command line
   std::vector<Frame> frames_;
   std::vector<Cond> conds_;
   std::vector<Scope> scopes_;

@@ -14,6 +14,7 @@ struct PovRayOptions {
   std::vector<std::string> libraryPaths;  // -L folders
   int imageWidth = 320, imageHeight = 240;
   bool debugOutput = true;  // #debug and #warning text to stderr
+  std::vector<std::string> declares;  // "name=value", a number or else a string, as POV-Ray's Declare=
 };
 
 SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovRayOptions& options = {});
