@@ -102,24 +102,24 @@ Value Interpreter::relation() {
 }
 
 Value Interpreter::sum() {
-  const SourceLoc at = here();
   Value a = product();
   for (;;) {
-    const bool plus = peekOperator("+");
-    if (!plus && !peekOperator("-")) return a;
-    next();
-    a = binary(plus ? '+' : '-', std::move(a), product(), at);
+    const char op = peekSymbol();
+    if (op != '+' && op != '-') return a;
+    SourceLoc at;
+    next(&at);
+    a = binary(op, std::move(a), product(), at);
   }
 }
 
 Value Interpreter::product() {
-  const SourceLoc at = here();
   Value a = unary();
   for (;;) {
-    const bool times = peekOperator("*");
-    if (!times && !peekOperator("/")) return a;
-    next();
-    a = binary(times ? '*' : '/', std::move(a), unary(), at);
+    const char op = peekSymbol();
+    if (op != '*' && op != '/') return a;
+    SourceLoc at;
+    next(&at);
+    a = binary(op, std::move(a), unary(), at);
   }
 }
 
@@ -142,7 +142,7 @@ Value Interpreter::unary() {
 
 Value Interpreter::postfix() {
   Value v = primary();
-  while (peekOperator(".")) {
+  while (peekSymbol() == '.') {
     SourceLoc at;
     next(&at);
     const std::string_view c = expectWord("a component after '.'");

@@ -90,14 +90,17 @@ SourceLoc Interpreter::locOf(const Token& t) const { return frames_.back().file-
 // first, so that a macro used in an expression returns into it; any other directive ends the expression, as it
 // would be carried out before the value it follows is stored.
 bool Interpreter::peekOperator(std::string_view op) {
+  peekSymbol();
+  return rawPeek().is(op);
+}
+
+char Interpreter::peekSymbol() {
   for (;;) {
     const Token& t = rawPeek();
-    if (t.kind == Token::Kind::Directive &&
-        (t.text == "end" || t.text == "else" || t.text == "elseif" || t.text == "break")) {
-      directive();
-      continue;
-    }
-    return t.is(op);
+    if (t.kind == Token::Kind::Symbol) return t.text[0];
+    if (t.kind != Token::Kind::Directive) return 0;
+    if (t.text != "end" && t.text != "else" && t.text != "elseif" && t.text != "break") return 0;
+    directive();
   }
 }
 

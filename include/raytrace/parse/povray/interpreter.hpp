@@ -72,6 +72,7 @@ class Interpreter {
   SourceLoc here();
   SourceLoc locOf(const Token& t) const;
   bool peekOperator(std::string_view op);
+  char peekSymbol();  // the next token's first character if it is a symbol, else 0 (as peekOperator)
   void expect(std::string_view symbol, const char* what);
   std::string_view expectWord(const char* what, SourceLoc* loc = nullptr);
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
