@@ -57,7 +57,7 @@ struct Folder {
   std::vector<std::string> files;
 };
 
-TEST_CASE("built-in functions, operators, arrays, loops and conditions give POV-Ray's values", "[povray]") {
+TEST_CASE("povray: built-in functions, operators, arrays, loops and conditions give POV-Ray's values", "[povray]") {
   const std::string scene = R"POV(#version 3.7;
 #declare A = array[2][3] { {1, 2, 3}, {4, 5, 6} };
 #debug concat(str(abs(-2.5),0,4)," ",str(acos(0.5),0,6)," ",str(asin(0.5),0,6)," ",str(atan2(1,2),0,6)," ",str(ceil(1.2),0,1)," ",str(floor(-1.2),0,1),"\n")
@@ -99,7 +99,7 @@ AnoB
 )");
 }
 
-TEST_CASE("rand gives POV-Ray's sequence for each seed", "[povray]") {
+TEST_CASE("povray: rand gives POV-Ray's sequence for each seed", "[povray]") {
   CHECK(run(R"(#declare R = seed(0); #declare S = seed(12345);
 #debug concat(str(R,0,0), " ", str(S,0,0), "\n")
 #for (I, 0, 2) #debug concat(str(rand(R),0,12), " ", str(rand(S),0,12), "\n") #end
@@ -109,13 +109,13 @@ TEST_CASE("rand gives POV-Ray's sequence for each seed", "[povray]") {
         "0.046072868175\n0.421992875268\n");
 }
 
-TEST_CASE("#switch falls through to the next #case until #break", "[povray]") {
+TEST_CASE("povray: #switch falls through to the next #case until #break", "[povray]") {
   CHECK(run("#declare A = 2;\n#switch (A)\n#case (1) #debug \"one\"\n#case (2) #debug \"two\"\n#case (3) "
             "#debug \"three\"\n#break\n#case (4) #debug \"four\"\n#end\n#switch (5) #range (4, 6) #debug \"range\" "
             "#break #else #debug \"else\" #end") == "twothreerange");
 }
 
-TEST_CASE("macros: parameters by reference, use inside expressions, recursion and local identifiers", "[povray]") {
+TEST_CASE("povray: macros: parameters by reference, use inside expressions, recursion and local identifiers", "[povray]") {
   CHECK(run("#macro M(P) #declare P = P + 1; #end #declare Q = 1; M(Q) #debug str(Q,0,0)") == "2");
   CHECK(run("#macro Add(A, B) A + B #end #debug str(Add(1,2)*3, 0, 0)") == "7");
   CHECK(run("#macro F(N) #if (N <= 1) 1 #else N * F(N - 1) #end #end #debug str(F(5), 0, 0)") == "120");
@@ -126,7 +126,7 @@ TEST_CASE("macros: parameters by reference, use inside expressions, recursion an
   CHECK(deep.substr(deep.size() - 40) == "in macro 'R' called from scene.pov:1:27)");
 }
 
-TEST_CASE("identifiers from the command line are numbers or strings, visible to #ifdef", "[povray]") {
+TEST_CASE("povray: identifiers from the command line are numbers or strings, visible to #ifdef", "[povray]") {
   std::ostringstream out;
   InterpreterOptions options;
   options.debug = &out;
@@ -138,11 +138,11 @@ TEST_CASE("identifiers from the command line are numbers or strings, visible to 
   CHECK(out.str() == "25.0tree");
 }
 
-TEST_CASE("a declaration without a semicolon ends before the next directive", "[povray]") {
+TEST_CASE("povray: a declaration without a semicolon ends before the next directive", "[povray]") {
   CHECK(run("#declare A = array[2]\n#declare A[0] = 3\n#declare A[1] = A[0] * 2\n#debug str(A[1],0,0)") == "6");
 }
 
-TEST_CASE("an error in an include file or a macro names the chain of places", "[povray]") {
+TEST_CASE("povray: an error in an include file or a macro names the chain of places", "[povray]") {
   Folder folder;
   folder.write("inner.inc", "#declare A = 1;\n  #declare B = Nope;\n");
   folder.write("scene.pov", "#version 3.7;\n#include \"inner.inc\"\n");
@@ -156,7 +156,7 @@ TEST_CASE("an error in an include file or a macro names the chain of places", "[
         "scene.pov:3:1: error: a directive is still open at the end of the file: #end is missing");
 }
 
-TEST_CASE("what cannot be drawn yet is refused as not supported, after the whole file has parsed", "[povray]") {
+TEST_CASE("povray: what cannot be drawn yet is refused as not supported, after the whole file has parsed", "[povray]") {
   CHECK(failure("#version 3.7;\n  isosurface { function { x*x + y - 1 } }\n") ==
         "scene.pov:2:3: error: 'isosurface' is not supported yet");
   CHECK(failure("#version 3.7;\nsphere { 0, 1 pigment { checker } }\n") ==
@@ -166,7 +166,7 @@ TEST_CASE("what cannot be drawn yet is refused as not supported, after the whole
         "scene.pov:3:25: error: undeclared identifier 'Rde'");
 }
 
-TEST_CASE("the scene: camera by POV-Ray's rules, lights, shapes, colours and transforms", "[povray]") {
+TEST_CASE("povray: the scene: camera by POV-Ray's rules, lights, shapes, colours and transforms", "[povray]") {
   const SceneDesc s = parsePovRay(R"(#version 3.7;
 #include "colors.inc"
 camera { location <0, 0, -5> look_at <0, 0, 0> angle 90 }
@@ -195,7 +195,7 @@ box { <1, 1, 1>, <0, 0, 0> pigment { rgbf <0, 0, 1, 0.5> } }
   CHECK(s.objects[1].material.ambient == Color(0, 0, 0.1f));  // POV-Ray's default finish
 }
 
-TEST_CASE("a .pov file is POV-Ray 3.7 when it uses a directive or global_settings", "[povray]") {
+TEST_CASE("povray: a .pov file is POV-Ray 3.7 when it uses a directive or global_settings", "[povray]") {
   CHECK(usesPovRayLanguage("#version 3.7;"));
   CHECK(usesPovRayLanguage("camera {}\n  # declare A = 1;"));
   CHECK(usesPovRayLanguage("global_settings { assumed_gamma 1 }"));
@@ -209,7 +209,7 @@ TEST_CASE("a .pov file is POV-Ray 3.7 when it uses a directive or global_setting
   CHECK(povDialect("camera {}", Dialect::PovRay) == SceneLanguage::PovRay);
 }
 
-TEST_CASE("every file of POV-Ray's standard include library parses when included", "[povray]") {
+TEST_CASE("povray: every file of POV-Ray's standard include library parses when included", "[povray]") {
   const std::string folder = "/usr/share/povray-3.7/include";
   DIR* dir = opendir(folder.c_str());
   if (!dir) {
