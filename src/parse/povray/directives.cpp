@@ -34,7 +34,8 @@ void Interpreter::pushFile(const std::string& path, std::string_view text, const
   try {
     lex(text, file);
   } catch (const ParseError& e) {
-    throw Error(e.what() + chain());
+    const std::string what = e.what();
+    throw ParseError(e.loc(), what.substr(what.find(": error: ") + 9) + chain());
   }
 }
 

@@ -79,6 +79,7 @@ Token Interpreter::next(SourceLoc* loc) {
   const Token t = peek();
   if (loc) *loc = locOf(t);
   if (t.kind != Token::Kind::End) ++frames_.back().pos;
+  if (++tokensRead_ == options_.maxTokens) fail(locOf(t), "the scene reads more than " + std::to_string(options_.maxTokens) + " tokens");
   return t;
 }
 

@@ -462,6 +462,7 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   io.imageWidth = options.imageWidth;
   io.imageHeight = options.imageHeight;
   io.debug = options.debugOutput ? &std::cerr : nullptr;
+  io.maxTokens = options.maxTokens;
   Interpreter interpreter(io);
   for (const std::string& d : options.declares) {
     const size_t eq = d.find('=');

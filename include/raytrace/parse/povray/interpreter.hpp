@@ -25,6 +25,7 @@ struct InterpreterOptions {
   std::string standardLibrary = "/usr/share/povray-3.7/include";
   int imageWidth = 320, imageHeight = 240;  // image_width, image_height
   std::ostream* debug = nullptr;            // #debug and #warning text; none if null
+  size_t maxTokens = 0;                     // stop after reading this many tokens (0: no limit), for fuzzing
 };
 
 class Interpreter {
@@ -138,6 +139,7 @@ class Interpreter {
   std::string sceneFolder_;
   double version_ = 3.7;
   size_t macroDepth_ = 0;
+  size_t tokensRead_ = 0;
   // The first letters of the macros' names: most words are no macro, and this spares them a look-up.
   std::array<bool, 256> macroInitial_{};
 };

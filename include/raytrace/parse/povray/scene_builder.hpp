@@ -15,6 +15,7 @@ struct PovRayOptions {
   int imageWidth = 320, imageHeight = 240;
   bool debugOutput = true;  // #debug and #warning text to stderr
   std::vector<std::string> declares;  // "name=value", a number or else a string, as POV-Ray's Declare=
+  size_t maxTokens = 0;               // InterpreterOptions::maxTokens
 };
 
 SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovRayOptions& options = {});
