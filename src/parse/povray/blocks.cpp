@@ -1,4 +1,5 @@
 // What a #declare may hold beyond an expression: arrays, functions, and blocks of scene syntax kept as trees.
+#include <algorithm>
 #include <cmath>
 
 #include "interpreter_state.hpp"
@@ -97,6 +98,7 @@ Value Interpreter::arrayValue(const SourceLoc& at) {
 void Interpreter::arrayInitialiser(ArrayValue& a, size_t dim, size_t& index) {
   SourceLoc at;
   next(&at);
+  const Nested nested(*this, at);
   for (int i = 0; i < a.dims[dim]; ++i) {
     if (i > 0 && peek().is(",")) next();  // the commas may be left out
     if (dim + 1 < a.dims.size()) {
@@ -149,6 +151,7 @@ Value Interpreter::functionValue(const SourceLoc& at) {
 
 // The items of a block up to `close`: values, keywords, and nested blocks (`keyword { … }` or `[ … ]`).
 std::shared_ptr<const Node> Interpreter::block(std::string_view keyword, const SourceLoc& at, std::string_view close) {
+  const Nested nested(*this, at);
   auto node = std::make_shared<Node>();
   node->keyword = keyword;
   node->loc = at;
@@ -192,6 +195,10 @@ std::shared_ptr<const Node> Interpreter::block(std::string_view keyword, const S
       }
     } else {
       fail(item.loc, "unexpected " + quote(t.text) + " in '" + std::string(keyword) + "'");
+    }
+    if (item.kind == Item::Kind::Node) {
+      node->depth = std::max(node->depth, item.node->depth + 1);
+      if (node->depth > 1000) fail(item.loc, "objects or blocks nested more than 1000 deep");
     }
     node->items.push_back(std::move(item));
   }

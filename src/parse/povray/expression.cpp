@@ -128,6 +128,7 @@ Value Interpreter::unary() {
   if (t.is("-") || t.is("+") || t.is("!")) {
     SourceLoc at;
     const char op = next(&at).text[0];
+    const Nested nested(*this, at);
     Value v = unary();
     if (!v.numeric()) fail(at, std::string("'") + op + "' needs a number, found a " + typeName(v));
     if (op == '-') {
@@ -204,6 +205,7 @@ Value Interpreter::primary() {
       return Value::string(std::string(next().text));
     case Token::Kind::Symbol:
       if (t.is("(")) {
+        const Nested nested(*this, at);
         next();
         Value v = fullExpression();
         expect(")", "to close the parenthesis");
@@ -235,6 +237,7 @@ Value Interpreter::primary() {
 }
 
 Value Interpreter::vectorLiteral(const SourceLoc& at) {
+  const Nested nested(*this, at);
   next();
   std::array<double, 5> c{};
   int n = 0;

@@ -140,6 +140,15 @@ void Interpreter::fail(const SourceLoc& loc, const std::string& message) const {
   throw ParseError(loc, message + chain());
 }
 
+Interpreter::Nested::Nested(Interpreter& interpreter, const SourceLoc& at) : in(interpreter) {
+  // Each level takes a few stack frames of the expression or block parser; 1000 levels stay far inside the
+  // 8 MiB a thread has.
+  if (++in.nesting_ > 1000) {
+    --in.nesting_;
+    in.fail(at, "expressions or blocks nested more than 1000 deep");
+  }
+}
+
 Interpreter::Slot* Interpreter::find(std::string_view name) {
   for (size_t i = scopes_.size(); i-- > 0;) {
     const auto it = scopes_[i].symbols.find(name);

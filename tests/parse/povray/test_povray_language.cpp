@@ -138,6 +138,15 @@ TEST_CASE("povray: identifiers from the command line are numbers or strings, vis
   CHECK(out.str() == "25.0tree");
 }
 
+TEST_CASE("povray: too deep a nesting is an error, not a stack overflow", "[povray]") {
+  CHECK(run("#declare A = " + std::string(5000, '(') + "1" + std::string(5000, ')') + ";") ==
+        "scene.pov:1:1014: error: expressions or blocks nested more than 1000 deep");
+  CHECK(run("#declare A = " + std::string(100000, '-') + "1;") ==
+        "scene.pov:1:1014: error: expressions or blocks nested more than 1000 deep");
+  CHECK(failure("#declare A = sphere { 0, 1 }\n#for (I, 1, 5000) #declare A = object { A } #end\nobject { A }\n") ==
+        "scene.pov:2:41: error: objects or blocks nested more than 1000 deep");
+}
+
 TEST_CASE("povray: a declaration without a semicolon ends before the next directive", "[povray]") {
   CHECK(run("#declare A = array[2]\n#declare A[0] = 3\n#declare A[1] = A[0] * 2\n#debug str(A[1],0,0)") == "6");
 }

@@ -77,6 +77,12 @@ class Interpreter {
   void expect(std::string_view symbol, const char* what);
   std::string_view expectWord(const char* what, SourceLoc* loc = nullptr);
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
+  // One more level of nesting for as long as it lives; too deep a nesting is an error, not a stack overflow.
+  struct Nested {
+    Interpreter& in;
+    Nested(Interpreter& interpreter, const SourceLoc& at);
+    ~Nested() { --in.nesting_; }
+  };
   std::string chain() const;
 
   // Directives (directives.cpp).
@@ -140,6 +146,7 @@ class Interpreter {
   double version_ = 3.7;
   size_t macroDepth_ = 0;
   size_t tokensRead_ = 0;
+  size_t nesting_ = 0;  // parentheses, vectors, unary operators and blocks open, each a level of recursion
   // The first letters of the macros' names: most words are no macro, and this spares them a look-up.
   std::array<bool, 256> macroInitial_{};
 };

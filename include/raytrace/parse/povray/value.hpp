@@ -75,6 +75,7 @@ struct Node : Shared {
   std::string_view keyword;
   SourceLoc loc;
   std::vector<Item> items;
+  int depth = 1;  // 1 + the deepest node among the items, bounded so that walking a tree cannot overflow the stack
 };
 
 // `array[N][M]…`: elements in row-major order, unset ones of type None.
