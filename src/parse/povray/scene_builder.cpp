@@ -239,33 +239,46 @@ class Builder {
   bool object(const Node& n, ObjectDesc& o) {
     const std::string_view k = n.keyword;
     size_t i = 0;
-    std::vector<Value> args;
-    while (i < n.items.size() && n.items[i].kind == Item::Kind::Value) args.push_back(n.items[i++].value);
+    std::vector<const Item*> values;
+    while (i < n.items.size() && n.items[i].kind == Item::Kind::Value) values.push_back(&n.items[i++]);
     auto need = [&](size_t count) {
-      if (args.size() < count) throw ParseError(n.loc, "'" + std::string(k) + "' needs " + std::to_string(count) + " values, found " + std::to_string(args.size()));
+      if (values.size() < count) {
+        throw ParseError(n.loc, "'" + std::string(k) + "' needs " + std::to_string(count) + " values, found " +
+                                    std::to_string(values.size()));
+      }
+    };
+    auto vector = [&](size_t j) {
+      const Value& v = values[j]->value;
+      if (!v.numeric()) throw ParseError(values[j]->loc, std::string("expected a vector, found a ") + typeName(v));
+      return vec3(v);
+    };
+    auto number = [&](size_t j) {
+      const Value& v = values[j]->value;
+      if (v.type != Value::Type::Float) throw ParseError(values[j]->loc, std::string("expected a float, found a ") + typeName(v));
+      return v.v[0];
     };
     if (k == "object") {
       if (i >= n.items.size() || n.items[i].kind != Item::Kind::Node) throw ParseError(n.loc, "'object' needs an object identifier");
       if (!object(*n.items[i++].node, o)) return false;
     } else if (k == "sphere") {
       need(2);
-      o.shape = SphereDesc{vec3(args[0]), args[1].v[0]};
+      o.shape = SphereDesc{vector(0), number(1)};
     } else if (k == "box") {
       need(2);
-      const glm::dvec3 a = vec3(args[0]), b = vec3(args[1]);
+      const glm::dvec3 a = vector(0), b = vector(1);
       o.shape = BoxDesc{glm::min(a, b), glm::max(a, b)};
     } else if (k == "cone") {
       need(4);
-      o.shape = ConeDesc{vec3(args[0]), args[1].v[0], vec3(args[2]), args[3].v[0]};
+      o.shape = ConeDesc{vector(0), number(1), vector(2), number(3)};
     } else if (k == "cylinder") {
       need(3);
-      o.shape = CylinderDesc{vec3(args[0]), vec3(args[1]), args[2].v[0]};
+      o.shape = CylinderDesc{vector(0), vector(1), number(2)};
     } else if (k == "plane") {
       need(2);
-      o.shape = PlaneDesc{vec3(args[0]), args[1].v[0]};
+      o.shape = PlaneDesc{vector(0), number(1)};
     } else if (k == "triangle") {
       need(3);
-      o.shape = TriangleDesc{vec3(args[0]), vec3(args[1]), vec3(args[2])};
+      o.shape = TriangleDesc{vector(0), vector(1), vector(2)};
     } else {
       refuse(n.loc, k);
       return false;
@@ -375,10 +388,11 @@ class Builder {
       const std::string_view w = it.word;
       if (w == "perspective") continue;
       const Value* v = valueAfter(n, i);
-      if (!v || !v->numeric()) {
+      if (!v) {
         refuse(it.loc, w);
         continue;
       }
+      if (!v->numeric()) throw ParseError(n.items[i].loc, "expected a vector after '" + std::string(w) + "', found a " + typeName(*v));
       if (w == "location") location = vec3(*v);
       else if (w == "direction") direction = vec3(*v);
       else if (w == "up") up = vec3(*v);
