@@ -150,10 +150,14 @@ void Interpreter::declareDirective(bool local) {
     expect("]", "after the index");
   }
   expect("=", "after the identifier");
+  // #declare sets the global identifier, #local the current level's, and a parameter passed by reference is
+  // written through to the caller's identifier either way. The level is chosen before the value is read:
+  // reading past the end of an include file leaves that file's level.
+  const size_t level = local || scopes_.back().byReference.count(id) ? scopes_.size() - 1 : 0;
   Value value = declarable();
   if (rawPeek().is(";")) ++frames_.back().pos;
   if (index.empty()) {
-    assign(id, std::move(value), local);
+    if (level < scopes_.size()) assign(id, std::move(value), level);
     return;
   }
   Slot* slot = find(id);
@@ -320,7 +324,7 @@ void Interpreter::forDirective(const SourceLoc& at) {
   }
   expect(")", "after the loop's range");
   if (step == 0) fail(at, "the #for loop's step is 0");
-  assign(var, Value::number(start), true);
+  assign(var, Value::number(start), scopes_.size() - 1);
   if (step > 0 ? start <= end + kEpsilon : start >= end - kEpsilon) {
     conds_.push_back({Cond::Kind::For, frames_.size(), frames_.back().pos, var, end, step});
   } else {

@@ -157,12 +157,9 @@ Interpreter::Slot* Interpreter::find(std::string_view name) {
   return nullptr;
 }
 
-// #declare writes the global identifier (the callers have refused keywords), #local the innermost level's; a parameter passed by reference is
-// written through to the caller's identifier either way.
-void Interpreter::assign(std::string_view name, Value value, bool local) {
-  Scope& inner = scopes_.back();
-  Scope& target = local || inner.byReference.count(name) ? inner : scopes_.front();
-  auto& slot = target.symbols[name];
+// Sets an identifier of scope level `level` (the callers have refused keywords).
+void Interpreter::assign(std::string_view name, Value value, size_t level) {
+  auto& slot = scopes_[level].symbols[name];
   if (!slot) slot = std::make_shared<Slot>();
   slot->value = std::move(value);
 }

@@ -147,6 +147,13 @@ TEST_CASE("povray: too deep a nesting is an error, not a stack overflow", "[povr
         "scene.pov:2:41: error: objects or blocks nested more than 1000 deep");
 }
 
+TEST_CASE("povray: #local in an include file ends with the file, even as its last line", "[povray]") {
+  Folder folder;
+  folder.write("local.inc", "#local Thing = 2;\n#local Item = cylinder { -1, 1, 1 }");
+  CHECK(run("#declare Thing = 1;\n#include \"local.inc\"\n#ifdef (Item) #debug \"found\" #else #debug \"gone\" #end\n"
+            "#debug str(Thing, 0, 0)", folder.path + "/scene.pov") == "gone1");
+}
+
 TEST_CASE("povray: a declaration without a semicolon ends before the next directive", "[povray]") {
   CHECK(run("#declare A = array[2]\n#declare A[0] = 3\n#declare A[1] = A[0] * 2\n#debug str(A[1],0,0)") == "6");
 }

@@ -101,7 +101,7 @@ class Interpreter {
 
   // Symbols.
   Slot* find(std::string_view name);
-  void assign(std::string_view name, Value value, bool local);
+  void assign(std::string_view name, Value value, size_t level);
 
   // Expressions (expression.cpp).
   Value expression();   // arithmetic: + - * / and unary operators
