@@ -45,6 +45,15 @@ void Interpreter::directive() {
   at = locOf(d);
   const std::string_view name = d.text;
   ++frames_.back().pos;
+  const size_t base = condBase_;
+  const bool conditional = name == "if" || name == "elseif" || name == "while" || name == "switch" ||
+                           name == "case" || name == "range" || name == "for";
+  if (conditional) condBase_ = conds_.size();
+  directive(name, at);
+  condBase_ = base;
+}
+
+void Interpreter::directive(std::string_view name, const SourceLoc& at) {
   if (name == "version") {
     version_ = number("after #version");
     if (rawPeek().is(";")) ++frames_.back().pos;
@@ -150,10 +159,13 @@ void Interpreter::declareDirective(bool local) {
     expect("]", "after the index");
   }
   expect("=", "after the identifier");
-  // #declare sets the global identifier, #local the current level's, and a parameter passed by reference is
-  // written through to the caller's identifier either way. The level is chosen before the value is read:
-  // reading past the end of an include file leaves that file's level.
-  const size_t level = local || scopes_.back().byReference.count(id) ? scopes_.size() - 1 : 0;
+  // #local sets the current level's identifier; #declare the innermost one of that name (a macro's parameter
+  // passed by reference is the caller's identifier), or else a global one, as POV-Ray 3.7 does. The level is
+  // chosen before the value is read: reading past the end of an include file leaves that file's level.
+  size_t level = scopes_.size() - 1;
+  if (!local) {
+    while (level > 0 && !scopes_[level].symbols.count(id)) --level;
+  }
   Value value = declarable();
   if (rawPeek().is(";")) ++frames_.back().pos;
   if (index.empty()) {
@@ -248,7 +260,6 @@ void Interpreter::invokeMacro(const std::shared_ptr<MacroDef>& macro) {
     }
     if (n < macro->params.size()) {
       scope.symbols[macro->params[n]] = slot;
-      scope.byReference.insert(macro->params[n]);
     }
     ++n;
     SourceLoc sepAt;

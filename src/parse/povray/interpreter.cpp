@@ -99,7 +99,7 @@ char Interpreter::peekSymbol() {
   for (;;) {
     const Token& t = rawPeek();
     if (t.kind == Token::Kind::Symbol) return t.text[0];
-    if (t.kind != Token::Kind::Directive) return 0;
+    if (t.kind != Token::Kind::Directive || conds_.size() <= condBase_) return 0;
     if (t.text != "end" && t.text != "else" && t.text != "elseif" && t.text != "break") return 0;
     directive();
   }

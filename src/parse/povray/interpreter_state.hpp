@@ -13,7 +13,6 @@ struct Interpreter::Slot {
 // bare identifier share the caller's slot, so `#declare` on them changes the caller's identifier.
 struct Interpreter::Scope {
   std::unordered_map<std::string_view, std::shared_ptr<Slot>> symbols;
-  std::unordered_set<std::string_view> byReference;
 };
 
 // An open #if, #switch, #while, #for or macro call, closed by its #end.

@@ -99,6 +99,72 @@ AnoB
 )");
 }
 
+TEST_CASE("povray: identifiers' levels, #break, loops, arrays and macros give POV-Ray's values", "[povray]") {
+  CHECK(run(R"POV(#version 3.7;
+#macro Set() #local V = 5; #declare V = 7; #debug concat(str(V,0,0), " ") #end
+#declare V = 1; Set() #debug concat(str(V,0,0), "\n")
+#macro Outer(A) #local B = A * 2; Inner() #end
+#macro Inner() #debug concat("inner sees B=", str(B,0,0), "\n") #end
+Outer(3)
+#declare I = 0;
+#while (I < 10) #declare I = I + 1; #if (I = 3) #break #end #end
+#debug concat("I=", str(I,0,0), "\n")
+#declare S = "";
+#for (J, 5, 1, -2) #declare S = concat(S, str(J,0,0)); #end
+#debug concat(S, "\n")
+#declare Arr = array[3] {<1,2,3>, <4,5,6>, <7,8,9>};
+#debug concat(vstr(3, Arr[1] + Arr[2], ",", 0, 0), "\n")
+#macro Mk(R) sphere { 0, R } #end
+#declare Obj = Mk(2)
+#debug concat(str(dimension_size(Arr,1),0,0), "\n")
+#declare C = <1,2,3>;
+#declare C2 = C * <2,2,2> + 1;
+#debug concat(vstr(3,C2,",",0,0), " ", str(vdot(C, C),0,0), "\n")
+#local L = 9; #debug concat(str(L,0,0), "\n")
+#declare Q = 2 * (3 + 4) - 10 / 4; #debug concat(str(Q,0,3), "\n")
+#declare W = -<1,2>; #debug concat(vstr(2,W,",",0,0), "\n")
+#declare F = 5; #declare F = F * F; #debug concat(str(F,0,0), "\n")
+#debug concat(str(strlen(concat("ab", chr(67))),0,0), substr("abcdef", 3, 2), "\n")
+#if (defined(Obj)) #debug "Obj\n" #end
+#switch (3) #range (1, 2) #debug "low\n" #break #range (3, 4) #debug "mid\n" #break #else #debug "hi\n" #end
+)POV") == R"(7 1
+inner sees B=6
+I=3
+531
+11,13,15
+3
+3,5,7 14
+9
+11.500
+-1,-2
+25
+3cd
+Obj
+mid
+)");
+}
+
+TEST_CASE("povray: directives end expressions where POV-Ray's do, and macros return into them", "[povray]") {
+  CHECK(run(R"POV(#version 3.7;
+#macro F(N) #if (N <= 1) 1 #else N * F(N - 1) #end #end
+#debug concat(str(F(3) + 1, 0, 0), "\n")
+#declare A = 0;
+#if (A) #else #debug "else\n" #end
+#if (1) #end
+#while (A < 2) #declare A = A + 1; #end
+#debug concat(str(A, 0, 0), "\n")
+#if (1) #if (0) #else #debug "inner else\n" #end #end
+#declare B = 2;
+#if (B = 2) #declare C = 10; #else #declare C = 20; #end
+#debug concat(str(C, 0, 0), "\n")
+)POV") == R"(7
+else
+2
+inner else
+10
+)");
+}
+
 TEST_CASE("povray: rand gives POV-Ray's sequence for each seed", "[povray]") {
   CHECK(run(R"(#declare R = seed(0); #declare S = seed(12345);
 #debug concat(str(R,0,0), " ", str(S,0,0), "\n")

@@ -12,7 +12,6 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 #include "raytrace/parse/povray/lexer.hpp"
@@ -87,6 +86,7 @@ class Interpreter {
 
   // Directives (directives.cpp).
   void directive();
+  void directive(std::string_view name, const SourceLoc& at);
   void declareDirective(bool local);
   void includeDirective(const SourceLoc& at);
   void macroDefinition(const SourceLoc& at);
@@ -146,7 +146,10 @@ class Interpreter {
   double version_ = 3.7;
   size_t macroDepth_ = 0;
   size_t tokensRead_ = 0;
-  size_t nesting_ = 0;  // parentheses, vectors, unary operators and blocks open, each a level of recursion
+  size_t nesting_ = 0;
+  // While a directive's own condition is read, the directives its expression may end at belong to levels
+  // opened before it and must wait: only those opened since (a macro called in it) are carried out.
+  size_t condBase_ = 0;  // parentheses, vectors, unary operators and blocks open, each a level of recursion
   // The first letters of the macros' names: most words are no macro, and this spares them a look-up.
   std::array<bool, 256> macroInitial_{};
 };
