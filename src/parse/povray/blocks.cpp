@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "interpreter_state.hpp"
+#include "raytrace/util/limits.hpp"
+#include "raytrace/util/message.hpp"
 
 namespace rt::povray {
 
@@ -83,6 +85,9 @@ Value Interpreter::arrayValue(const SourceLoc& at) {
     a->dims.push_back(int(n));
   }
   if (a->dims.empty()) fail(at, "expected '[' and a size after 'array'");
+  const std::string shortage = memoryShortage("an array of " + thousands(size_t(total)) + " elements",
+                                              std::uint64_t(total) * sizeof(Value), availableMemory());
+  if (!shortage.empty()) fail(at, shortage);
   a->elements.resize(size_t(total));
   if (peekOperator("{")) {
     size_t index = 0;

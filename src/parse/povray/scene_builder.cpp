@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "raytrace/parse/povray/interpreter.hpp"
+#include "raytrace/util/limits.hpp"
 
 namespace rt::povray {
 
@@ -53,7 +54,10 @@ class Builder {
       scene_.conventions.background = Color(s.colour[0], s.colour[1], s.colour[2]);
     } else {
       ObjectDesc o;
-      if (object(n, o)) scene_.objects.push_back(std::move(o));
+      if (!object(n, o)) return;
+      const std::string shortage = objectMemoryShortage(scene_.objects.size(), scene_.objects.size() + 1, "the scene");
+      if (!shortage.empty()) throw ParseError(n.loc, shortage);
+      scene_.objects.push_back(std::move(o));
     }
   }
 
