@@ -44,7 +44,7 @@ Value Interpreter::declarable() {
   }
   if (t.kind == Token::Kind::Word && !t.startsValue) {
     const std::string_view keyword = next().text;
-    expect("{", ("after '" + std::string(keyword) + "'").c_str());
+    expect("{", "after the keyword");
     Value v;
     v.type = Value::Type::Node;
     v.ref = std::const_pointer_cast<Node>(block(keyword, at, "}"));

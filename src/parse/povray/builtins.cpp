@@ -87,7 +87,7 @@ Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
     return Value::number(find(id) != nullptr);
   }
   if (name == "dimensions" || name == "dimension_size") {
-    expect("(", ("after " + std::string(name)).c_str());
+    expect("(", "after the function's name");
     const SourceLoc aAt = here();
     const Value a = expression();
     if (a.type != Value::Type::Array) fail(aAt, "expected an array, found a " + std::string(typeName(a)));

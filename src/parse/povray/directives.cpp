@@ -237,7 +237,7 @@ void Interpreter::macroDefinition(const SourceLoc& at) {
 void Interpreter::invokeMacro(const std::shared_ptr<MacroDef>& macro) {
   SourceLoc at = locOf(rawPeek());
   ++frames_.back().pos;
-  expect("(", ("after macro '" + std::string(macro->name) + "'").c_str());
+  expect("(", "after the macro's name");
   Scope scope;
   size_t n = 0;
   bool more = !peek().is(")");

@@ -316,7 +316,7 @@ Value Interpreter::identifierValue(const Token& t, const SourceLoc& at) {
     const auto& a = static_cast<const ArrayValue&>(*v->ref);
     size_t flat = 0;
     for (size_t k = 0; k < a.dims.size(); ++k) {
-      expect("[", ("for the next index of '" + std::string(name) + "'").c_str());
+      expect("[", "for the array's next index");
       const SourceLoc iAt = here();
       const double i = std::floor(number("as an array index") + kEpsilon);
       expect("]", "after the index");
