@@ -24,7 +24,9 @@ bool isFile(const std::string& path) {
 }  // namespace
 
 void Interpreter::pushFile(const std::string& path, std::string_view text, const SourceLoc* from) {
-  if (frames_.size() >= kMaxIncludeDepth) fail(*from, "include files nested more than " + std::to_string(kMaxIncludeDepth) + " deep");
+  size_t files = 0;
+  for (const Frame& f : frames_) files += f.kind == Frame::Kind::File;
+  if (files >= kMaxIncludeDepth) fail(*from, "include files nested more than " + std::to_string(kMaxIncludeDepth) + " deep");
   files_.push_back(std::make_unique<TokenFile>());
   TokenFile& file = *files_.back();
   file.name = path;
@@ -186,7 +188,9 @@ void Interpreter::declareDirective(bool local) {
 }
 
 void Interpreter::includeDirective(const SourceLoc& at) {
+  holdFile_ = true;
   const Value name = expression();
+  holdFile_ = false;
   if (name.type != Value::Type::String) fail(at, "#include needs a file name, found a " + std::string(typeName(name)));
   std::string path;
   if (!name.s.empty() && name.s[0] == '/') {

@@ -50,6 +50,7 @@ const Token& Interpreter::endOfFrame() {
     Frame& f = frames_.back();
     const Token& t = f.file->tokens[f.pos];
     if (t.kind != Token::Kind::End || frames_.size() == 1 || f.kind == Frame::Kind::Tokens) return t;
+    if (holdFile_ && f.kind == Frame::Kind::File) return t;
     if (f.kind == Frame::Kind::Macro) fail(f.from, "macro '" + std::string(f.name) + "' has no #end");
     for (const Cond& c : conds_) {
       if (c.frame == frames_.size()) fail(locOf(t), "a directive is still open at the end of the file: #end is missing");

@@ -232,6 +232,9 @@ TEST_CASE("povray: an error in an include file or a macro names the chain of pla
         "inner.inc:2:16: error: undeclared identifier 'Nope' (included from " + folder.path + "/scene.pov:4:1)");
   CHECK(failure("#macro Tree(H)\n  sphere { 0, H pigment { Bad } }\n#end\n\n  Tree(1)\n") ==
         "scene.pov:2:27: error: undeclared identifier 'Bad' (in macro 'Tree' called from scene.pov:5:3)");
+  folder.write("self.inc", "#include \"self.inc\"\n");
+  const std::string deep = failure("#include \"self.inc\"\n", folder.path + "/scene.pov");
+  CHECK(deep.rfind("self.inc:1:1: error: include files nested more than 64 deep (included from self.inc:1:1, ", 0) == 0);
   CHECK(failure("#include \"missing.inc\"") == "scene.pov:1:1: error: cannot find the include file 'missing.inc'");
   CHECK(failure("#error \"stop here\"") == "scene.pov:1:1: error: stop here");
   CHECK(failure("#if (1)\nsphere { 0, 1 }\n") ==

@@ -149,7 +149,10 @@ class Interpreter {
   size_t nesting_ = 0;
   // While a directive's own condition is read, the directives its expression may end at belong to levels
   // opened before it and must wait: only those opened since (a macro called in it) are carried out.
-  size_t condBase_ = 0;  // parentheses, vectors, unary operators and blocks open, each a level of recursion
+  size_t condBase_ = 0;
+  // While an #include's file name is read, the end of the current file is not left: an include file that
+  // includes itself must nest, and stop at the depth limit.
+  bool holdFile_ = false;  // parentheses, vectors, unary operators and blocks open, each a level of recursion
   // The first letters of the macros' names: most words are no macro, and this spares them a look-up.
   std::array<bool, 256> macroInitial_{};
 };
