@@ -213,6 +213,28 @@ const std::vector<Option> kOptions = {
        if (v.empty()) throw Error(word + " needs a file name");
        w.preview = v;
      }},
+    {"--dialect", nullptr, "course|povray", Form::Joined, Scope::Any, Section::General,
+     "how a .pov file is read (default: POV-Ray 3.7 when it uses a\n"
+     "directive or global_settings, else the course's subset)",
+     [](Words& w, const std::string& v, const std::string&) {
+       w.load.dialect = choice("--dialect", v, Names<Dialect>{{"course", Dialect::Course}, {"povray", Dialect::PovRay}});
+     }},
+    {"-L", nullptr, "DIR", Form::Either, Scope::Any, Section::General,
+     "a folder a POV-Ray scene's #include searches, after the scene's\n"
+     "own and before the standard include library (also +LDIR)",
+     [](Words& w, const std::string& v, const std::string& word) {
+       if (v.empty()) throw Error(word + " needs a folder");
+       w.load.libraryPaths.push_back(v);
+     },
+     "needs a folder after it"},
+    {"-D", nullptr, "NAME=VALUE", Form::Either, Scope::Any, Section::General,
+     "declare NAME (a number or a string) before a POV-Ray scene is read\n"
+     "(also Declare=NAME=VALUE)",
+     [](Words& w, const std::string& v, const std::string& word) {
+       if (v.find('=') == std::string::npos || v[0] == '=') throw Error(word + " needs NAME=VALUE, found " + quote(v));
+       w.load.declares.push_back(v);
+     },
+     "needs NAME=VALUE after it"},
     {"-sds", nullptr, nullptr, Form::Switch, Scope::Any, Section::General,
      "accepted for the course; a hierarchy is used whenever it pays",
      // The course's "use a hierarchy": ours decides per scene (Scene, Hierarchy).
@@ -298,7 +320,14 @@ Words readWords(const std::vector<std::string>& args, size_t first) {
   Words words;
   for (size_t i = first; i < args.size(); ++i) {
     const std::string& a = args[i];
-    if (a.size() > 1 && a[0] == '-' && (std::isalpha(static_cast<unsigned char>(a[1])) || a[1] == '-')) {
+    // POV-Ray's own spellings of -L and -D: +LDIR or -LDIR, and Declare=NAME=VALUE.
+    if (a.size() > 2 && (a.rfind("+L", 0) == 0 || (a.rfind("-L", 0) == 0 && a[2] != '='))) {
+      words.load.libraryPaths.push_back(a.substr(2));
+    } else if (a.rfind("Declare=", 0) == 0) {
+      std::vector<std::string> spelled{"-D", a.substr(8)};
+      size_t at = 0;
+      readOption(spelled, at, words);
+    } else if (a.size() > 1 && a[0] == '-' && (std::isalpha(static_cast<unsigned char>(a[1])) || a[1] == '-')) {
       readOption(args, i, words);
     } else {
       words.positional.push_back(a);

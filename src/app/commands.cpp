@@ -244,7 +244,10 @@ int mergeCommand(const std::vector<std::string>& args, std::ostream& err) {
   }
   Invocation inv = invocation(*commandNamed("render"), words, err);
   inv.progress = nullptr;
-  inv.scene = loadScene(inv.scenePath, inv.options.threads);
+  LoadOptions load = words.load;
+  load.width = inv.width;
+  load.height = inv.height;
+  inv.scene = loadScene(inv.scenePath, inv.options.threads, load);
   return merge(own, TileRequest{tileHeader(inv, "render"), inv.width, inv.height});
 }
 
@@ -263,7 +266,12 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   // The image commands render on all their threads: the helpers start while the file is read.
   if (command.numbers == 2) startHelpers(inv.options.threads);
   Stopwatch watch;
-  inv.scene = loadScene(inv.scenePath, inv.options.threads);
+  LoadOptions load = words.load;
+  if (inv.width > 0 && inv.height > 0) {
+    load.width = inv.width;
+    load.height = inv.height;
+  }
+  inv.scene = loadScene(inv.scenePath, inv.options.threads, load);
   inv.loadSeconds = watch.lap();
   for (const std::string& w : collapseRepeats(inv.scene.warnings)) err << w << "\n";
   return command.run(inv, out);

@@ -15,6 +15,7 @@
 #include "raytrace/util/parallel.hpp"
 #include "raytrace/util/path.hpp"
 #include "raytrace/parse/pov_parser.hpp"
+#include "raytrace/parse/povray/scene_builder.hpp"
 
 namespace rt {
 
@@ -77,13 +78,27 @@ SceneLanguage sceneLanguage(const std::string& path, std::string_view text) {
   return looksLikeCs3451(text) ? SceneLanguage::Cs3451 : SceneLanguage::Pov;
 }
 
-SceneDesc loadScene(const std::string& path, int threads) {
+SceneLanguage povDialect(std::string_view text, Dialect dialect) {
+  if (dialect == Dialect::Auto) return povray::usesPovRayLanguage(text) ? SceneLanguage::PovRay : SceneLanguage::Pov;
+  return dialect == Dialect::PovRay ? SceneLanguage::PovRay : SceneLanguage::Pov;
+}
+
+SceneDesc loadScene(const std::string& path, int threads, const LoadOptions& options) {
   const FileText file = readFile(path, threads);
   std::string_view text = file.view();
   // A UTF-8 byte-order mark, which some editors put first, is no part of the scene in either language.
   constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
   if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark) text.remove_prefix(kByteOrderMark.size());
-  return sceneLanguage(path, text) == SceneLanguage::Cs3451 ? parseCs3451(text, path) : parsePov(text, path, threads);
+  if (sceneLanguage(path, text) == SceneLanguage::Cs3451) return parseCs3451(text, path);
+  if (povDialect(text, options.dialect) == SceneLanguage::PovRay) {
+    povray::PovRayOptions pov;
+    pov.libraryPaths = options.libraryPaths;
+    pov.imageWidth = options.width;
+    pov.imageHeight = options.height;
+    pov.declares = options.declares;
+    return povray::parsePovRay(text, path, pov);
+  }
+  return parsePov(text, path, threads);
 }
 
 }  // namespace rt

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "raytrace/parse/scene_file.hpp"
 #include "raytrace/render/options.hpp"
 
 namespace rt {
@@ -29,6 +30,7 @@ struct Words {
   std::string output;                                    // -o's value; "" without -o
   std::string tile, region;                              // --tile's and --region's values; "" without them
   bool resume = false;  // --resume: a tile already written for this very render is kept
+  LoadOptions load;     // --dialect, -L, -D: how the scene file is read
   // The options given that only some commands take, as spelled (before any '='), in command-line order.
   std::vector<std::string> scoped;
 };

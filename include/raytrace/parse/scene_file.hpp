@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "raytrace/scene/description.hpp"
 
@@ -34,7 +35,21 @@ FileText readFile(const std::string& path, int threads = 1);
 // from its text (looksLikeCs3451), with the POV subset as the fallback.
 SceneLanguage sceneLanguage(const std::string& path, std::string_view text);
 
+// How a .pov file is read: by the rule of docs/povray-language.md (POV-Ray 3.7 when it uses a directive or
+// global_settings, else the course's subset), or as the command line's --dialect says.
+enum class Dialect { Auto, Course, PovRay };
+
+struct LoadOptions {
+  Dialect dialect = Dialect::Auto;
+  std::vector<std::string> libraryPaths;  // -L: folders a POV-Ray scene's #include searches
+  int width = 320, height = 240;          // POV-Ray's image_width and image_height
+  std::vector<std::string> declares;      // -D name=value: identifiers a POV-Ray scene starts with
+};
+
+// The POV language a .pov file is read in.
+SceneLanguage povDialect(std::string_view text, Dialect dialect);
+
 // Reads and parses a scene in its language (sceneLanguage), a large POV file on up to `threads` threads.
-SceneDesc loadScene(const std::string& path, int threads = 1);
+SceneDesc loadScene(const std::string& path, int threads = 1, const LoadOptions& options = {});
 
 }  // namespace rt

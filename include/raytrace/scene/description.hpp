@@ -45,7 +45,9 @@ struct Conventions {
   bool shadeDeepest = true;      // .cli: a ray at maxDepth that hits returns black (cs3451 §A.4)
 };
 
-enum class SceneLanguage { Pov, Cs3451 };
+// Pov is the course's subset of POV-Ray; PovRay the POV-Ray 3.7 language (docs/povray-language.md), whose
+// shading model later work picks by this.
+enum class SceneLanguage { Pov, Cs3451, PovRay };
 
 // An image the file itself asks for (.cli `write`), showing the scene as it stood at that command. A .cli file
 // only adds lights and objects and changes its camera and background, so the scene then is the first `lights`

@@ -1,0 +1,160 @@
+// The POV-Ray 3.7 scene language as POV-Ray reads it: one pass over the tokens, with the directives (#declare,
+// #if, #while, #macro, #include …) carried out as they are met, so a macro's body or a loop's body simply
+// continues the token stream wherever it is used, inside an expression as much as between objects. What is
+// left after the directives, the scene statements, is handed on one by one as syntax trees (value.hpp).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "raytrace/parse/povray/lexer.hpp"
+#include "raytrace/parse/povray/value.hpp"
+
+namespace rt::povray {
+
+struct InterpreterOptions {
+  std::vector<std::string> libraryPaths;  // -L folders, searched after the scene's own folder
+  std::string standardLibrary = "/usr/share/povray-3.7/include";
+  int imageWidth = 320, imageHeight = 240;  // image_width, image_height
+  std::ostream* debug = nullptr;            // #debug and #warning text; none if null
+  size_t maxTokens = 0;                     // stop after reading this many tokens (0: no limit), for fuzzing
+};
+
+class Interpreter {
+ public:
+  // `statement` receives every top-level scene statement (camera, light_source, an object, global_settings …);
+  // `defaults` every `#default { … }` block, at its place in the file.
+  using NodeSink = std::function<void(const std::shared_ptr<const Node>&)>;
+
+  explicit Interpreter(InterpreterOptions options);
+  ~Interpreter();
+
+  // Runs a whole scene. Throws ParseError with the include and macro chain of the place.
+  void run(const std::string& path, std::string_view text, const NodeSink& statement, const NodeSink& defaults);
+
+  // `name=value` from the command line (-D), a number or else a string, visible to #ifdef.
+  void declare(const std::string& name, const std::string& value);
+
+  // The language version #version last set (3.7 unless a scene says otherwise).
+  double version() const { return version_; }
+
+ private:
+  struct Slot;
+  struct Scope;
+  // Where tokens come from: a file (the scene or an include), a macro body, or a function's captured tokens.
+  struct Frame {
+    enum class Kind { File, Macro, Tokens } kind;
+    const TokenFile* file;
+    size_t pos;
+    SourceLoc from;         // the #include or the macro call
+    std::string_view name;  // the macro's
+  };
+  struct Cond;
+  struct MacroDef;
+  struct FunctionDef;
+
+  // Tokens.
+  const Token& rawPeek() {
+    const Frame& f = frames_.back();
+    const Token& t = f.file->tokens[f.pos];
+    return t.kind != Token::Kind::End ? t : endOfFrame();
+  }
+  const Token& endOfFrame();
+  const Token& peek();
+  Token next(SourceLoc* loc = nullptr);
+  SourceLoc here();
+  SourceLoc locOf(const Token& t) const;
+  bool peekOperator(std::string_view op);
+  char peekSymbol();  // the next token's first character if it is a symbol, else 0 (as peekOperator)
+  void expect(std::string_view symbol, const char* what);
+  std::string_view expectWord(const char* what, SourceLoc* loc = nullptr);
+  [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
+  // One more level of nesting for as long as it lives; too deep a nesting is an error, not a stack overflow.
+  struct Nested {
+    Interpreter& in;
+    Nested(Interpreter& interpreter, const SourceLoc& at);
+    ~Nested() { --in.nesting_; }
+  };
+  std::string chain() const;
+
+  // Directives (directives.cpp).
+  void directive();
+  void directive(std::string_view name, const SourceLoc& at);
+  void declareDirective(bool local);
+  void includeDirective(const SourceLoc& at);
+  void macroDefinition(const SourceLoc& at);
+  void invokeMacro(const std::shared_ptr<MacroDef>& macro);
+  void ifDirective(bool truth);
+  void switchDirective();
+  void forDirective(const SourceLoc& at);
+  void endDirective(const SourceLoc& at);
+  void breakDirective(const SourceLoc& at);
+  std::string_view skipTo(bool stopAtElse, bool stopAtCase);
+  void pushFile(const std::string& path, std::string_view text, const SourceLoc* from);
+
+  // Symbols.
+  Slot* find(std::string_view name);
+  void assign(std::string_view name, Value value, size_t level);
+
+  // Expressions (expression.cpp).
+  Value expression();   // arithmetic: + - * / and unary operators
+  Value fullExpression();  // inside parentheses: also relations, & | and ?:
+  Value logical();
+  Value relation();
+  Value sum();
+  Value product();
+  Value unary();
+  Value postfix();
+  Value primary();
+  Value vectorLiteral(const SourceLoc& at);
+  Value colour(const SourceLoc& at);
+  Value identifierValue(const Token& t, const SourceLoc& at);
+  double number(const char* what);
+  double truth(const Value& v, const SourceLoc& at);
+  Value binary(char op, Value a, Value b, const SourceLoc& at);
+  Value callFunction(const FunctionDef& f, std::string_view name, const SourceLoc& at);
+
+  // Built-in functions (builtins.cpp).
+  Value builtin(std::string_view name, const SourceLoc& at);
+  std::vector<Value> arguments(const SourceLoc& at);
+
+  // Values that are more than an expression (blocks.cpp).
+  Value declarable();
+  Value arrayValue(const SourceLoc& at);
+  void arrayInitialiser(ArrayValue& a, size_t dim, size_t& index);
+  Value functionValue(const SourceLoc& at);
+  std::shared_ptr<const Node> block(std::string_view keyword, const SourceLoc& at, std::string_view close);
+  bool startsExpression(const Token& t);
+
+  InterpreterOptions options_;
+  std::vector<std::unique_ptr<TokenFile>> files_;
+  std::vector<std::unique_ptr<std::string>> texts_;  // include files' bytes, which the tokens point into
+  std::vector<std::unique_ptr<std::string>> names_;  // names declared from the command line
+  std::vector<Frame> frames_;
+  std::vector<Cond> conds_;
+  std::vector<Scope> scopes_;
+  std::vector<std::uint32_t> randStates_;
+  NodeSink defaults_;
+  std::string sceneFolder_;
+  double version_ = 3.7;
+  size_t macroDepth_ = 0;
+  size_t tokensRead_ = 0;
+  size_t nesting_ = 0;
+  // While a directive's own condition is read, the directives its expression may end at belong to levels
+  // opened before it and must wait: only those opened since (a macro called in it) are carried out.
+  size_t condBase_ = 0;
+  // While an #include's file name is read, the end of the current file is not left: an include file that
+  // includes itself must nest, and stop at the depth limit.
+  bool holdFile_ = false;  // parentheses, vectors, unary operators and blocks open, each a level of recursion
+  // The first letters of the macros' names: most words are no macro, and this spares them a look-up.
+  std::array<bool, 256> macroInitial_{};
+};
+
+}  // namespace rt::povray

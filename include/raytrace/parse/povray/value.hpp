@@ -1,0 +1,87 @@
+// What a POV-Ray identifier or expression holds: a float, a vector or colour, a string, an array, or a piece
+// of scene syntax (an object, texture, pigment, camera …) kept as the tree it was written as.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "raytrace/util/error.hpp"
+
+namespace rt::povray {
+
+struct Token;
+struct TokenFile;
+
+// A value that is shared rather than copied: arrays, syntax trees, functions, macros.
+struct Shared {
+  virtual ~Shared() = default;
+};
+
+struct Value {
+  enum class Type : unsigned char { None, Float, Vector, Colour, String, Array, Node, Function, Macro };
+  Type type = Type::None;
+  int size = 1;  // components of a vector (2–5); a colour always has 5: red, green, blue, filter, transmit
+  std::array<double, 5> v{};
+  std::string s;
+  std::shared_ptr<Shared> ref;
+
+  static Value number(double x) {
+    Value r;
+    r.type = Type::Float;
+    r.v[0] = x;
+    return r;
+  }
+  static Value vector(std::array<double, 5> c, int n) {
+    Value r;
+    r.type = Type::Vector;
+    r.size = n;
+    r.v = c;
+    return r;
+  }
+  static Value colour(std::array<double, 5> c) {
+    Value r;
+    r.type = Type::Colour;
+    r.size = 5;
+    r.v = c;
+    return r;
+  }
+  static Value string(std::string text) {
+    Value r;
+    r.type = Type::String;
+    r.s = std::move(text);
+    return r;
+  }
+  bool numeric() const { return type == Type::Float || type == Type::Vector || type == Type::Colour; }
+};
+
+// The name POV-Ray's messages give a type: "float", "vector", "colour", "string", …
+const char* typeName(const Value& v);
+
+// An element of a syntax tree: a keyword, a value, or a nested block.
+struct Node;
+struct Item {
+  enum class Kind : unsigned char { Keyword, Value, Node } kind;
+  std::string_view word;  // the keyword (points into a file's text, which lives as long as the interpreter)
+  SourceLoc loc;
+  Value value;                 // for Value
+  std::shared_ptr<const Node> node;  // for Node
+};
+
+// `keyword { items }` as written (with identifiers replaced by what they held), e.g. a sphere, a pigment, or
+// a `[0.5 color Red]` entry of a map, whose keyword is "[".
+struct Node : Shared {
+  std::string_view keyword;
+  SourceLoc loc;
+  std::vector<Item> items;
+  int depth = 1;  // 1 + the deepest node among the items, bounded so that walking a tree cannot overflow the stack
+};
+
+// `array[N][M]…`: elements in row-major order, unset ones of type None.
+struct ArrayValue : Shared {
+  std::vector<int> dims;
+  std::vector<Value> elements;
+};
+
+}  // namespace rt::povray

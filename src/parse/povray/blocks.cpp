@@ -1,0 +1,212 @@
+// What a #declare may hold beyond an expression: arrays, functions, and blocks of scene syntax kept as trees.
+#include <algorithm>
+#include <cmath>
+
+#include "interpreter_state.hpp"
+#include "raytrace/util/limits.hpp"
+#include "raytrace/util/message.hpp"
+
+namespace rt::povray {
+
+namespace {
+
+// The most elements an array may have: a typo in a size should be a message, not an exhausted memory.
+constexpr double kMaxArrayElements = 1e8;
+
+}  // namespace
+
+// Whether `t` begins a value rather than being a keyword of the block it is in.
+bool Interpreter::startsExpression(const Token& t) {
+  switch (t.kind) {
+    case Token::Kind::Number:
+    case Token::Kind::String:
+      return true;
+    case Token::Kind::Symbol:
+      return t.is("<") || t.is("(") || t.is("-") || t.is("+") || t.is("!");
+    case Token::Kind::Word:
+      return t.startsValue;
+    default:
+      return false;
+  }
+}
+
+Value Interpreter::declarable() {
+  SourceLoc at;
+  const Token& t = peek();
+  at = locOf(t);
+  if (t.isWord("array")) {
+    next();
+    return arrayValue(at);
+  }
+  if (t.isWord("function")) {
+    next();
+    return functionValue(at);
+  }
+  if (t.kind == Token::Kind::Word && !t.startsValue) {
+    const std::string_view keyword = next().text;
+    expect("{", "after the keyword");
+    Value v;
+    v.type = Value::Type::Node;
+    v.ref = std::const_pointer_cast<Node>(block(keyword, at, "}"));
+    // `texture { … } texture { … }`: a layered texture, its layers in order.
+    auto layer = [this] {
+      const Frame& f = frames_.back();
+      return rawPeek().isWord("texture") && f.file->tokens[f.pos + 1].is("{");
+    };
+    if (keyword == "texture" && layer()) {
+      auto layers = std::make_shared<Node>();
+      layers->keyword = "layered texture";
+      layers->loc = at;
+      layers->items.push_back({Item::Kind::Node, {}, at, {}, std::static_pointer_cast<const Node>(v.ref)});
+      while (layer()) {
+        SourceLoc layerAt;
+        next(&layerAt);
+        next();
+        layers->items.push_back({Item::Kind::Node, {}, layerAt, {}, block("texture", layerAt, "}")});
+      }
+      v.ref = layers;
+    }
+    return v;
+  }
+  return expression();
+}
+
+Value Interpreter::arrayValue(const SourceLoc& at) {
+  auto a = std::make_shared<ArrayValue>();
+  double total = 1;
+  while (peekOperator("[")) {
+    next();
+    const SourceLoc nAt = here();
+    const double n = std::floor(number("as the array's size") + 1e-10);
+    expect("]", "after the array's size");
+    if (!(n >= 1)) fail(nAt, "an array's size must be at least 1");
+    total *= n;
+    if (total > kMaxArrayElements) fail(nAt, "an array of more than " + std::to_string(long(kMaxArrayElements)) + " elements");
+    a->dims.push_back(int(n));
+  }
+  if (a->dims.empty()) fail(at, "expected '[' and a size after 'array'");
+  const std::string shortage = memoryShortage("an array of " + thousands(size_t(total)) + " elements",
+                                              std::uint64_t(total) * sizeof(Value), availableMemory());
+  if (!shortage.empty()) fail(at, shortage);
+  a->elements.resize(size_t(total));
+  if (peekOperator("{")) {
+    size_t index = 0;
+    arrayInitialiser(*a, 0, index);
+  }
+  Value v;
+  v.type = Value::Type::Array;
+  v.ref = a;
+  return v;
+}
+
+// `{ e, e, … }` for the last dimension, `{ { … }, { … } }` for the ones before it.
+void Interpreter::arrayInitialiser(ArrayValue& a, size_t dim, size_t& index) {
+  SourceLoc at;
+  next(&at);
+  const Nested nested(*this, at);
+  for (int i = 0; i < a.dims[dim]; ++i) {
+    if (i > 0 && peek().is(",")) next();  // the commas may be left out
+    if (dim + 1 < a.dims.size()) {
+      if (!peek().is("{")) fail(here(), "expected '{' for the next dimension of the array");
+      arrayInitialiser(a, dim + 1, index);
+    } else {
+      a.elements[index++] = declarable();
+    }
+  }
+  if (peekOperator(",")) next();
+  if (!peek().is("}")) fail(here(), "the array has " + std::to_string(a.dims[dim]) + " elements here, not more");
+  next();
+}
+
+// `function { … }` or `function(a, b) { … }`: the tokens are kept to be evaluated when called.
+Value Interpreter::functionValue(const SourceLoc& at) {
+  auto f = std::make_shared<FunctionDef>();
+  if (peek().is("(")) {
+    next();
+    while (!peek().is(")")) {
+      f->params.push_back(expectWord("a parameter name"));
+      if (peek().is(",")) next();
+    }
+    next();
+  } else {
+    f->params = {"x", "y", "z"};
+    // An image function's size, `function 256, 256 { … }`.
+    while (!peek().is("{") && peek().kind != Token::Kind::End) {
+      expression();
+      if (peek().is(",")) next();
+    }
+  }
+  expect("{", "to begin the function");
+  f->body.name = frames_.back().file->name;
+  int depth = 1;
+  for (;;) {
+    const Token& t = peek();
+    if (t.kind == Token::Kind::End) fail(at, "this function has no closing '}'");
+    if (t.is("{")) ++depth;
+    if (t.is("}") && --depth == 0) break;
+    f->body.tokens.push_back(next());
+  }
+  next();
+  f->body.tokens.push_back(Token{});
+  Value v;
+  v.type = Value::Type::Function;
+  v.ref = f;
+  return v;
+}
+
+// The items of a block up to `close`: values, keywords, and nested blocks (`keyword { … }` or `[ … ]`).
+std::shared_ptr<const Node> Interpreter::block(std::string_view keyword, const SourceLoc& at, std::string_view close) {
+  const Nested nested(*this, at);
+  auto node = std::make_shared<Node>();
+  node->keyword = keyword;
+  node->loc = at;
+  for (;;) {
+    const Token& t = peek();
+    if (t.is(close)) {
+      next();
+      return node;
+    }
+    Item item;
+    item.loc = locOf(t);
+    if (t.kind == Token::Kind::End) fail(at, "this '" + std::string(keyword) + "' has no closing '" + std::string(close) + "'");
+    if (t.is(",") || t.is(";")) {
+      next();
+      continue;
+    }
+    if (t.is("[")) {
+      next();
+      item.kind = Item::Kind::Node;
+      item.node = block("[", item.loc, "]");
+    } else if (t.isWord("function")) {
+      next();
+      item.kind = Item::Kind::Value;
+      item.value = functionValue(item.loc);
+    } else if (startsExpression(t)) {
+      item.kind = Item::Kind::Value;
+      item.value = expression();
+      if (item.value.type == Value::Type::Node) {
+        item.kind = Item::Kind::Node;
+        item.node = std::static_pointer_cast<const Node>(item.value.ref);
+        item.value = Value();
+      }
+    } else if (t.kind == Token::Kind::Word) {
+      item.word = next().text;
+      if (peek().is("{")) {
+        next();
+        item.kind = Item::Kind::Node;
+        item.node = block(item.word, item.loc, "}");
+      } else {
+        item.kind = Item::Kind::Keyword;
+      }
+    } else {
+      fail(item.loc, "unexpected " + quote(t.text) + " in '" + std::string(keyword) + "'");
+    }
+    if (item.kind == Item::Kind::Node) {
+      node->depth = std::max(node->depth, item.node->depth + 1);
+      if (node->depth > 1000) fail(item.loc, "objects or blocks nested more than 1000 deep");
+    }
+    node->items.push_back(std::move(item));
+  }
+}
+
+}  // namespace rt::povray

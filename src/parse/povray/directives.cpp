@@ -1,0 +1,426 @@
+// The # directives: identifiers, conditions, loops, macros, includes and messages.
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <sys/stat.h>
+
+#include "interpreter_state.hpp"
+
+namespace rt::povray {
+
+namespace {
+
+// POV-Ray's own limits are of the same order; deeper nesting is a runaway recursion in practice.
+constexpr size_t kMaxIncludeDepth = 64;
+constexpr size_t kMaxMacroDepth = 400;
+constexpr double kEpsilon = 1e-10;  // POV-Ray's tolerance for = and #case
+
+bool isFile(const std::string& path) {
+  struct stat st;
+  return stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
+}  // namespace
+
+void Interpreter::pushFile(const std::string& path, std::string_view text, const SourceLoc* from) {
+  size_t files = 0;
+  for (const Frame& f : frames_) files += f.kind == Frame::Kind::File;
+  if (files >= kMaxIncludeDepth) fail(*from, "include files nested more than " + std::to_string(kMaxIncludeDepth) + " deep");
+  files_.push_back(std::make_unique<TokenFile>());
+  TokenFile& file = *files_.back();
+  file.name = path;
+  Frame frame{Frame::Kind::File, &file, 0, from ? *from : SourceLoc{}, {}};
+  frames_.push_back(frame);
+  if (from) scopes_.emplace_back();
+  try {
+    lex(text, file);
+  } catch (const ParseError& e) {
+    const std::string what = e.what();
+    throw ParseError(e.loc(), what.substr(what.find(": error: ") + 9) + chain());
+  }
+}
+
+void Interpreter::directive() {
+  SourceLoc at;
+  const Token& d = rawPeek();
+  at = locOf(d);
+  const std::string_view name = d.text;
+  ++frames_.back().pos;
+  const size_t base = condBase_;
+  const bool conditional = name == "if" || name == "elseif" || name == "while" || name == "switch" ||
+                           name == "case" || name == "range" || name == "for";
+  if (conditional) condBase_ = conds_.size();
+  directive(name, at);
+  condBase_ = base;
+}
+
+void Interpreter::directive(std::string_view name, const SourceLoc& at) {
+  if (name == "version") {
+    version_ = number("after #version");
+    if (rawPeek().is(";")) ++frames_.back().pos;
+  } else if (name == "declare" || name == "local") {
+    declareDirective(name == "local");
+  } else if (name == "undef") {
+    const std::string_view id = expectWord("an identifier after #undef");
+    for (size_t i = scopes_.size(); i-- > 0;) {
+      if (scopes_[i].symbols.erase(id)) break;
+    }
+  } else if (name == "default") {
+    expect("{", "after #default");
+    defaults_(block("default", at, "}"));
+  } else if (name == "if") {
+    ifDirective(truth(expression(), at) != 0);
+  } else if (name == "ifdef" || name == "ifndef") {
+    expect("(", "after #ifdef");
+    const std::string_view id = expectWord("an identifier");
+    bool defined = find(id) != nullptr;
+    if (defined && rawPeek().is("[")) {
+      const Value& a = find(id)->value;
+      next();
+      const double i = number("as an array index");
+      expect("]", "after the index");
+      const auto* arr = a.type == Value::Type::Array ? static_cast<const ArrayValue*>(a.ref.get()) : nullptr;
+      defined = arr && i >= 0 && size_t(i) < arr->elements.size() && arr->elements[size_t(i)].type != Value::Type::None;
+    }
+    expect(")", "after the identifier");
+    ifDirective(defined == (name == "ifdef"));
+  } else if (name == "else" || name == "elseif") {
+    if (conds_.empty() || conds_.back().frame != frames_.size()) fail(at, "#" + std::string(name) + " without #if");
+    if (conds_.back().kind == Cond::Kind::Switch) return;  // falls through, like a #case
+    if (conds_.back().kind != Cond::Kind::If) fail(at, "#" + std::string(name) + " without #if");
+    conds_.pop_back();
+    skipTo(false, false);
+  } else if (name == "end") {
+    endDirective(at);
+  } else if (name == "switch") {
+    switchDirective();
+  } else if (name == "case" || name == "range") {
+    if (conds_.empty() || conds_.back().kind != Cond::Kind::Switch || conds_.back().frame != frames_.size()) {
+      fail(at, "#" + std::string(name) + " without #switch");
+    }
+    // A case after the one that matched: its condition is read and the tokens run on until #break.
+    if (name == "case") {
+      expression();
+    } else {
+      expect("(", "after #range");
+      number("as the range's low end");
+      expect(",", "between the range's ends");
+      number("as the range's high end");
+      expect(")", "after the range");
+    }
+  } else if (name == "break") {
+    breakDirective(at);
+  } else if (name == "while") {
+    const size_t start = frames_.back().pos - 1;
+    if (truth(expression(), at) != 0) {
+      conds_.push_back({Cond::Kind::While, frames_.size(), start, {}, 0, 1});
+    } else {
+      skipTo(false, false);
+    }
+  } else if (name == "for") {
+    forDirective(at);
+  } else if (name == "macro") {
+    macroDefinition(at);
+  } else if (name == "include") {
+    includeDirective(at);
+  } else if (name == "debug" || name == "warning" || name == "render" || name == "statistics") {
+    const Value text = expression();
+    if (text.type != Value::Type::String) fail(at, "#" + std::string(name) + " needs a string, found a " + typeName(text));
+    if (options_.debug) {
+      if (name == "warning") {
+        *options_.debug << at.str() << ": warning: " << text.s << "\n";
+      } else {
+        *options_.debug << text.s;
+      }
+    }
+  } else if (name == "error") {
+    const Value text = expression();
+    fail(at, text.type == Value::Type::String ? text.s : std::string("#error"));
+  } else if (name == "fopen" || name == "fclose" || name == "read" || name == "write") {
+    fail(at, "'#" + std::string(name) + "' is not supported yet");
+  } else {
+    fail(at, "unknown directive '#" + std::string(name) + "'");
+  }
+}
+
+void Interpreter::declareDirective(bool local) {
+  SourceLoc idAt;
+  std::string_view id = expectWord("an identifier after #declare", &idAt);
+  // `#declare deprecated once "message" Name = …` warns when Name is used; the warning is not kept.
+  if (id == "deprecated") {
+    if (rawPeek().isWord("once")) ++frames_.back().pos;
+    if (rawPeek().kind == Token::Kind::String) ++frames_.back().pos;
+    id = expectWord("an identifier after #declare deprecated", &idAt);
+  }
+  if (isKeyword(id)) fail(idAt, "'" + std::string(id) + "' is a keyword and cannot be declared");
+  std::vector<double> index;
+  while (rawPeek().is("[")) {
+    next();
+    index.push_back(number("as an array index"));
+    expect("]", "after the index");
+  }
+  expect("=", "after the identifier");
+  // #local sets the current level's identifier; #declare the innermost one of that name (a macro's parameter
+  // passed by reference is the caller's identifier), or else a global one, as POV-Ray 3.7 does. The level is
+  // chosen before the value is read: reading past the end of an include file leaves that file's level.
+  size_t level = scopes_.size() - 1;
+  if (!local) {
+    while (level > 0 && !scopes_[level].symbols.count(id)) --level;
+  }
+  Value value = declarable();
+  if (rawPeek().is(";")) ++frames_.back().pos;
+  if (index.empty()) {
+    if (level < scopes_.size()) assign(id, std::move(value), level);
+    return;
+  }
+  Slot* slot = find(id);
+  if (!slot || slot->value.type != Value::Type::Array) fail(idAt, "'" + std::string(id) + "' is not an array");
+  auto& a = static_cast<ArrayValue&>(*slot->value.ref);
+  if (index.size() != a.dims.size()) fail(idAt, "'" + std::string(id) + "' has " + std::to_string(a.dims.size()) + " dimensions");
+  size_t flat = 0;
+  for (size_t k = 0; k < index.size(); ++k) {
+    const double i = std::floor(index[k] + kEpsilon);
+    if (!(i >= 0 && i < a.dims[k])) fail(idAt, "index " + std::to_string(long(i)) + " is out of range for '" + std::string(id) + "'");
+    flat = flat * size_t(a.dims[k]) + size_t(i);
+  }
+  a.elements[flat] = std::move(value);
+}
+
+void Interpreter::includeDirective(const SourceLoc& at) {
+  holdFile_ = true;
+  const Value name = expression();
+  holdFile_ = false;
+  if (name.type != Value::Type::String) fail(at, "#include needs a file name, found a " + std::string(typeName(name)));
+  std::string path;
+  if (!name.s.empty() && name.s[0] == '/') {
+    if (isFile(name.s)) path = name.s;
+  } else {
+    std::vector<std::string> folders{sceneFolder_};
+    for (const std::string& l : options_.libraryPaths) folders.push_back(l + "/");
+    folders.push_back(options_.standardLibrary + "/");
+    for (const std::string& folder : folders) {
+      if (isFile(folder + name.s)) {
+        path = folder + name.s;
+        break;
+      }
+    }
+  }
+  if (path.empty()) fail(at, "cannot find the include file " + quote(name.s));
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (!in) fail(at, "cannot read the include file " + quote(name.s));
+  texts_.push_back(std::make_unique<std::string>(bytes.str()));
+  pushFile(name.s, *texts_.back(), &at);
+}
+
+void Interpreter::macroDefinition(const SourceLoc& at) {
+  auto def = std::make_shared<MacroDef>();
+  def->name = expectWord("a name after #macro");
+  if (isKeyword(def->name)) fail(at, "'" + std::string(def->name) + "' is a keyword and cannot name a macro");
+  def->file = frames_.back().file;
+  macroInitial_[static_cast<unsigned char>(def->name[0])] = true;
+  if (!rawPeek().is("(")) fail(locOf(rawPeek()), "expected '(' after the macro's name");
+  ++frames_.back().pos;
+  while (!rawPeek().is(")")) {
+    def->params.push_back(expectWord("a parameter name"));
+    if (rawPeek().is(",")) ++frames_.back().pos;  // POV-Ray lets a comma be left out or end the list
+  }
+  ++frames_.back().pos;
+  def->body = frames_.back().pos;
+  skipTo(false, false);
+  Value v;
+  v.type = Value::Type::Macro;
+  v.ref = def;
+  auto& slot = scopes_.front().symbols[def->name];
+  if (!slot) slot = std::make_shared<Slot>();
+  slot->value = std::move(v);
+}
+
+void Interpreter::invokeMacro(const std::shared_ptr<MacroDef>& macro) {
+  SourceLoc at = locOf(rawPeek());
+  ++frames_.back().pos;
+  expect("(", "after the macro's name");
+  Scope scope;
+  size_t n = 0;
+  bool more = !peek().is(")");
+  while (more) {
+    const Frame& f = frames_.back();
+    const Token& t = rawPeek();
+    std::shared_ptr<Slot> slot;
+    if (t.kind == Token::Kind::Word && !t.keyword &&
+        (f.file->tokens[f.pos + 1].is(",") || f.file->tokens[f.pos + 1].is(")"))) {
+      for (size_t i = scopes_.size(); i-- > 0 && !slot;) {
+        const auto it = scopes_[i].symbols.find(t.text);
+        if (it != scopes_[i].symbols.end()) slot = it->second;
+      }
+    }
+    if (slot) {
+      ++frames_.back().pos;
+    } else {
+      slot = std::make_shared<Slot>();
+      slot->value = declarable();
+    }
+    if (n < macro->params.size()) {
+      scope.symbols[macro->params[n]] = slot;
+    }
+    ++n;
+    SourceLoc sepAt;
+    const Token sep = next(&sepAt);
+    if (sep.is(")")) break;
+    if (!sep.is(",")) fail(sepAt, "expected ',' or ')' in the arguments of macro '" + std::string(macro->name) + "'");
+  }
+  if (!more) next();
+  if (n != macro->params.size()) {
+    fail(at, "macro '" + std::string(macro->name) + "' takes " + std::to_string(macro->params.size()) +
+                 " arguments, found " + std::to_string(n));
+  }
+  if (macroDepth_ >= kMaxMacroDepth) fail(at, "macro calls nested more than " + std::to_string(kMaxMacroDepth) + " deep");
+  ++macroDepth_;
+  frames_.push_back({Frame::Kind::Macro, macro->file, macro->body, at, macro->name});
+  scopes_.push_back(std::move(scope));
+  conds_.push_back({Cond::Kind::Macro, frames_.size(), 0, {}, 0, 1});
+}
+
+void Interpreter::ifDirective(bool truth) {
+  for (;;) {
+    if (truth) {
+      conds_.push_back({Cond::Kind::If, frames_.size(), 0, {}, 0, 1});
+      return;
+    }
+    const std::string_view stop = skipTo(true, false);
+    if (stop == "end") return;
+    if (stop == "else") {
+      truth = true;
+    } else {
+      const SourceLoc at = here();
+      truth = this->truth(expression(), at) != 0;
+    }
+  }
+}
+
+void Interpreter::switchDirective() {
+  const double value = number("after #switch");
+  for (;;) {
+    const std::string_view stop = skipTo(false, true);
+    if (stop == "end") return;
+    bool match = stop == "else";
+    if (stop == "case") {
+      match = std::abs(number("after #case") - value) < kEpsilon;
+    } else if (stop == "range") {
+      expect("(", "after #range");
+      const double low = number("as the range's low end");
+      expect(",", "between the range's ends");
+      const double high = number("as the range's high end");
+      expect(")", "after the range");
+      match = value >= low && value <= high;
+    }
+    if (match) {
+      conds_.push_back({Cond::Kind::Switch, frames_.size(), 0, {}, 0, 1});
+      return;
+    }
+  }
+}
+
+void Interpreter::forDirective(const SourceLoc& at) {
+  expect("(", "after #for");
+  SourceLoc varAt;
+  const std::string_view var = expectWord("the loop's identifier", &varAt);
+  if (isKeyword(var)) fail(varAt, "'" + std::string(var) + "' is a keyword and cannot be declared");
+  expect(",", "after the loop's identifier");
+  const double start = number("as the loop's start");
+  expect(",", "after the loop's start");
+  const double end = number("as the loop's end");
+  double step = 1;
+  if (peekOperator(",")) {
+    next();
+    step = number("as the loop's step");
+  }
+  expect(")", "after the loop's range");
+  if (step == 0) fail(at, "the #for loop's step is 0");
+  assign(var, Value::number(start), scopes_.size() - 1);
+  if (step > 0 ? start <= end + kEpsilon : start >= end - kEpsilon) {
+    conds_.push_back({Cond::Kind::For, frames_.size(), frames_.back().pos, var, end, step});
+  } else {
+    skipTo(false, false);
+  }
+}
+
+void Interpreter::endDirective(const SourceLoc& at) {
+  if (conds_.empty() || conds_.back().frame != frames_.size()) fail(at, "#end without a directive to end");
+  Cond& c = conds_.back();
+  switch (c.kind) {
+    case Cond::Kind::If:
+    case Cond::Kind::Switch:
+      conds_.pop_back();
+      break;
+    case Cond::Kind::While:
+      frames_.back().pos = c.pos;
+      conds_.pop_back();
+      break;
+    case Cond::Kind::For: {
+      Slot* s = find(c.var);
+      if (!s || s->value.type != Value::Type::Float) fail(at, "the #for loop's identifier is no longer a float");
+      const double i = s->value.v[0] + c.step;
+      s->value.v[0] = i;
+      if (c.step > 0 ? i <= c.end + kEpsilon : i >= c.end - kEpsilon) {
+        frames_.back().pos = c.pos;
+      } else {
+        conds_.pop_back();
+      }
+      break;
+    }
+    case Cond::Kind::Macro:
+      conds_.pop_back();
+      frames_.pop_back();
+      scopes_.pop_back();
+      --macroDepth_;
+      break;
+  }
+}
+
+void Interpreter::breakDirective(const SourceLoc& at) {
+  size_t levels = 0;
+  for (size_t i = conds_.size(); i-- > 0;) {
+    const Cond& c = conds_[i];
+    if (c.frame != frames_.size() || c.kind == Cond::Kind::Macro) break;
+    ++levels;
+    if (c.kind == Cond::Kind::Switch || c.kind == Cond::Kind::While || c.kind == Cond::Kind::For) {
+      conds_.resize(i);
+      for (size_t k = 0; k < levels; ++k) skipTo(false, false);
+      return;
+    }
+  }
+  fail(at, "#break outside #switch, #while or #for");
+}
+
+// Skips tokens, nested directives whole, up to the #end of the current level (returning "end"), or to an
+// #else or #elseif, or to a #case, #range or #else, when asked. The position is then just after that directive.
+std::string_view Interpreter::skipTo(bool stopAtElse, bool stopAtCase) {
+  Frame& f = frames_.back();
+  const SourceLoc start = locOf(f.file->tokens[f.pos == 0 ? 0 : f.pos - 1]);
+  int depth = 0;
+  for (;;) {
+    const Token& t = f.file->tokens[f.pos];
+    if (t.kind == Token::Kind::End) {
+      if (f.kind == Frame::Kind::Macro) fail(f.from, "macro '" + std::string(f.name) + "' has no #end");
+      fail(start, "this directive has no #end");
+    }
+    ++f.pos;
+    if (t.kind != Token::Kind::Directive) continue;
+    const std::string_view n = t.text;
+    if (n == "if" || n == "ifdef" || n == "ifndef" || n == "switch" || n == "while" || n == "for" || n == "macro") {
+      ++depth;
+    } else if (n == "end") {
+      if (depth == 0) return n;
+      --depth;
+    } else if (depth == 0 && stopAtElse && (n == "else" || n == "elseif")) {
+      return n;
+    } else if (depth == 0 && stopAtCase && (n == "case" || n == "range" || n == "else")) {
+      return n;
+    }
+  }
+}
+
+}  // namespace rt::povray

@@ -1,0 +1,39 @@
+// The interpreter's inner records, shared by its source files and by no one else.
+#pragma once
+
+#include "raytrace/parse/povray/interpreter.hpp"
+
+namespace rt::povray {
+
+struct Interpreter::Slot {
+  Value value;
+};
+
+// The identifiers of one level: the global one, an include file's, or a macro call's. Parameters passed as a
+// bare identifier share the caller's slot, so `#declare` on them changes the caller's identifier.
+struct Interpreter::Scope {
+  std::unordered_map<std::string_view, std::shared_ptr<Slot>> symbols;
+};
+
+// An open #if, #switch, #while, #for or macro call, closed by its #end.
+struct Interpreter::Cond {
+  enum class Kind { If, Switch, While, For, Macro } kind;
+  size_t frame;        // frames_ depth it belongs to
+  size_t pos = 0;      // While: the #while directive; For: the first token of the body
+  std::string_view var;  // For
+  double end = 0, step = 1;
+};
+
+struct Interpreter::MacroDef : Shared {
+  std::string_view name;
+  const TokenFile* file;
+  size_t body;  // the first token after the parameter list
+  std::vector<std::string_view> params;
+};
+
+struct Interpreter::FunctionDef : Shared {
+  std::vector<std::string_view> params;  // x, y, z when none are written
+  TokenFile body;                        // the tokens between the braces, then End
+};
+
+}  // namespace rt::povray
