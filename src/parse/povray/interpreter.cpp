@@ -142,11 +142,9 @@ void Interpreter::fail(const SourceLoc& loc, const std::string& message) const {
 }
 
 Interpreter::Nested::Nested(Interpreter& interpreter, const SourceLoc& at) : in(interpreter) {
-  // Each level takes a few stack frames of the expression or block parser; 1000 levels stay far inside the
-  // 8 MiB a thread has.
-  if (++in.nesting_ > 1000) {
+  if (++in.nesting_ > kMaxNesting) {
     --in.nesting_;
-    in.fail(at, "expressions or blocks nested more than 1000 deep");
+    in.fail(at, "expressions or blocks nested more than " + std::to_string(kMaxNesting) + " deep");
   }
 }
 

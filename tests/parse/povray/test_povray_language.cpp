@@ -206,11 +206,11 @@ TEST_CASE("povray: identifiers from the command line are numbers or strings, vis
 
 TEST_CASE("povray: too deep a nesting is an error, not a stack overflow", "[povray]") {
   CHECK(run("#declare A = " + std::string(5000, '(') + "1" + std::string(5000, ')') + ";") ==
-        "scene.pov:1:1014: error: expressions or blocks nested more than 1000 deep");
+        "scene.pov:1:270: error: expressions or blocks nested more than 256 deep");
   CHECK(run("#declare A = " + std::string(100000, '-') + "1;") ==
-        "scene.pov:1:1014: error: expressions or blocks nested more than 1000 deep");
+        "scene.pov:1:270: error: expressions or blocks nested more than 256 deep");
   CHECK(failure("#declare A = sphere { 0, 1 }\n#for (I, 1, 5000) #declare A = object { A } #end\nobject { A }\n") ==
-        "scene.pov:2:41: error: objects or blocks nested more than 1000 deep");
+        "scene.pov:2:41: error: objects or blocks nested more than 256 deep");
 }
 
 TEST_CASE("povray: #local in an include file ends with the file, even as its last line", "[povray]") {

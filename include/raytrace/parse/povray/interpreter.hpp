@@ -77,6 +77,9 @@ class Interpreter {
   std::string_view expectWord(const char* what, SourceLoc* loc = nullptr);
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
   // One more level of nesting for as long as it lives; too deep a nesting is an error, not a stack overflow.
+  // Each level takes several stack frames of the expression or block parser, up to 8 KiB in a sanitizer
+  // build: 256 levels stay well inside the 8 MiB a thread has.
+  static constexpr size_t kMaxNesting = 256;
   struct Nested {
     Interpreter& in;
     Nested(Interpreter& interpreter, const SourceLoc& at);
