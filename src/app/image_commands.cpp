@@ -156,9 +156,7 @@ int raycast(const Invocation& inv, std::ostream&) {
     for (int y = bottom; y < inv.height - region.y0; ++y) {
       for (int x = region.x0; x < region.x1; ++x) {
         const auto hit = scene.closestHit(camera.pixelRay(x, y), {});
-        std::optional<Material> textured;
-        image.at(x - region.x0, y - bottom) =
-            hit ? hit->object->materialAt(*hit, textured).pigment : inv.scene.conventions.background;
+        image.at(x - region.x0, y - bottom) = hit ? hit->object->material().pigment : inv.scene.conventions.background;
       }
     }
     return 0;

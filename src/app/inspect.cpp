@@ -99,9 +99,8 @@ int firsthit(const Invocation& inv, std::ostream& out) {
       out << "No Hit\n";
       return 0;
     }
-    std::optional<Material> textured;
     out << "T = " << fixed4(hit->t) << "\nObject Type: " << hit->object->name()
-        << "\nColor: " << bare(hit->object->materialAt(*hit, textured).pigment) << "\n";
+        << "\nColor: " << bare(hit->object->material().pigment) << "\n";
     return 0;
   });
 }

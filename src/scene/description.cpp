@@ -10,7 +10,6 @@ SceneDesc sceneAt(const SceneDesc& whole, const WriteDesc& write) {
   scene.lights.assign(whole.lights.begin(), whole.lights.begin() + std::ptrdiff_t(write.lights));
   scene.objects.assign(whole.objects.begin(), whole.objects.begin() + std::ptrdiff_t(write.objects));
   scene.conventions = whole.conventions;
-  scene.textures = whole.textures;
   scene.conventions.background = write.background;
   return scene;
 }

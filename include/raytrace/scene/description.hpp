@@ -2,7 +2,6 @@
 // Both scene languages (POV subset and .cli) produce this; Scene<T> (scene.hpp) is built from it.
 #pragma once
 
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -66,7 +65,6 @@ struct SceneDesc {
   CameraDesc camera;
   std::vector<LightDesc> lights;
   std::vector<ObjectDesc> objects;
-  std::vector<std::shared_ptr<const Texture>> textures;  // what the objects' Material::texture point to
   Conventions conventions;
   std::vector<std::string> warnings;  // "file:line:col: warning: …", printed before any output
   // The images the file asks for, in order; empty for POV, whose `render` writes output.png.

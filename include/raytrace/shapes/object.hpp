@@ -9,7 +9,6 @@
 #include "raytrace/geometry/hit.hpp"
 #include "raytrace/geometry/interval.hpp"
 #include "raytrace/surface/material.hpp"
-#include "raytrace/surface/texture.hpp"
 #include "raytrace/geometry/ray.hpp"
 
 namespace rt {
@@ -72,12 +71,6 @@ template <class T> class Object {
   const Material& material() const { return material_; }
   // Calls f(material) for every material a hit on this object can report: its own, or a group's parts'.
   virtual void forEachMaterial(const std::function<void(const Material&)>& f) const { f(material_); }
-  // The material at a hit on this object: its own, or where it has a texture, the texture's at the hit (made
-  // in `scratch`, which costs nothing on the many hits without one).
-  const Material& materialAt(const Hit<T>& hit, std::optional<Material>& scratch) const {
-    if (!material_.texture) return material_;
-    return scratch.emplace(material_.texture->at(glm::dvec3(hit.point)));
-  }
   int id() const { return id_; }  // 1-based position in the scene file, as printrays shows it
 
  private:

@@ -5,8 +5,6 @@
 
 namespace rt {
 
-class Texture;
-
 // A POV-Ray `finish` block as written (docs/reference/csc473.md §b): what `sceneinfo` prints, and what the POV parser
 // makes a Material of.
 struct Finish {
@@ -29,10 +27,6 @@ struct Material {
   float roughness = 1;   // Cook-Torrance α = roughness² (§c.2)
   float reflection = 0;  // POV `reflection`, .cli Krefl
   float ior = 1;
-  // Where set, the surface varies: whatever reads it at a hit reads texture->at(point) (Object::materialAt)
-  // instead of the values above. Owned by the scene's description (SceneDesc::textures); a plain pointer
-  // keeps Material trivially copied, which the shading of every hit relies on (docs/performance.md).
-  const Texture* texture = nullptr;
 };
 
 }  // namespace rt
