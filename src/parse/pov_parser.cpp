@@ -231,8 +231,8 @@ class PovParser {
     if (v < 0) throw ParseError(at, std::string(what) + " must not be negative, found " + num(v));
     return v;
   }
- private:
 
+ private:
   // An object, from the '{' after its keyword to its closing brace.
   ObjectDesc readObject(const Token& keyword) {
     expect('{', "after " + keyword.quoted());

@@ -28,9 +28,9 @@ SceneScale sceneScale(const SceneDesc& scene) {
   double smallest = std::numeric_limits<double>::infinity();
   double largestTransform = 1;
   for (const ObjectDesc& o : scene.objects) {
-    smallest = std::min(smallest, worldFeature(o));
-    if (!o.transforms.empty()) composeTransforms<double>(o.transforms, &largestTransform);
-    const auto [center, radius] = worldBall(o);
+    const WorldExtent e = worldExtent(o, &largestTransform);
+    smallest = std::min(smallest, e.feature);
+    const auto [center, radius] = e.ball;
     largest = std::max(largest, maxAbs(center) + radius);
     lo = glm::min(lo, center - radius);
     hi = glm::max(hi, center + radius);

@@ -26,14 +26,14 @@ const char* CsgDesc::name() const { return kTypeNames[size_t(op)]; }
 
 double CsgDesc::smallestFeature() const {
   double smallest = std::numeric_limits<double>::infinity();
-  for (const ObjectDesc& c : children) smallest = std::min(smallest, worldFeature(c));
+  for (const ObjectDesc& c : children) smallest = std::min(smallest, worldExtent(c).feature);
   return smallest;
 }
 
 Ball CsgDesc::boundingBall() const {
   Aabb<double> box;
   for (const ObjectDesc& c : children) {
-    const Ball b = worldBall(c);
+    const Ball b = worldExtent(c).ball;
     box.expand(b.center - b.radius);
     box.expand(b.center + b.radius);
   }

@@ -15,14 +15,12 @@ Stretch stretch(const glm::dmat4& m) {
   return {most, least};
 }
 
-double worldFeature(const ObjectDesc& o) {
-  return stretch(o.worldFromObject()).least * std::visit([](const auto& k) { return k.smallestFeature(); }, o.shape);
-}
-
-Ball worldBall(const ObjectDesc& o) {
-  const glm::dmat4 worldFromObject = o.worldFromObject();
+WorldExtent worldExtent(const ObjectDesc& o, double* largestEntry) {
+  const glm::dmat4 worldFromObject = composeTransforms<double>(o.transforms, largestEntry);
+  const Stretch s = stretch(worldFromObject);
+  const double feature = std::visit([](const auto& k) { return k.smallestFeature(); }, o.shape);
   const Ball local = std::visit([](const auto& k) { return k.boundingBall(); }, o.shape);
-  return {glm::dvec3(worldFromObject * glm::dvec4(local.center, 1)), stretch(worldFromObject).most * local.radius};
+  return {s.least * feature, {glm::dvec3(worldFromObject * glm::dvec4(local.center, 1)), s.most * local.radius}};
 }
 
 }  // namespace rt

@@ -13,9 +13,13 @@ struct Stretch {
 };
 Stretch stretch(const glm::dmat4& m);
 
-// The smallest length the object's silhouette depends on, in the world; +∞ for none (a plane).
-double worldFeature(const ObjectDesc& o);
-// A ball around the object in the world. An unbounded object gives a point of it, with radius 0.
-Ball worldBall(const ObjectDesc& o);
+// An object's lengths in the world, from its transforms composed once.
+struct WorldExtent {
+  double feature;  // the smallest length its silhouette depends on; +∞ for none (a plane)
+  Ball ball;       // a ball around it; an unbounded object gives a point of it, with radius 0
+};
+// With `largestEntry`, the largest magnitude of the transform's entries and partial products is kept there
+// (composeTransforms).
+WorldExtent worldExtent(const ObjectDesc& o, double* largestEntry = nullptr);
 
 }  // namespace rt
