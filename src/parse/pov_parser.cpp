@@ -17,12 +17,6 @@ namespace rt {
 
 namespace {
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
 // The shortest an object can be written: `plane{<0,1,0>,0}`.
 constexpr size_t kMinObjectBytes = 16;
 
@@ -156,7 +150,7 @@ class PovParser {
     }
     rgb = Color(float(v[0]), float(v[1]), float(v[2]));
     filter = v.size == 4 ? float(v[3]) : 0.0f;
-    if (filter < 0 || filter > 1) throw ParseError(at, "filter must be between 0 and 1, found " + num(filter));
+    if (filter < 0 || filter > 1) throw ParseError(at, "filter must be between 0 and 1, found " + shortest(filter));
   }
 
   void parseCamera(const Token& keyword) {
@@ -222,13 +216,13 @@ class PovParser {
   double positive(const char* what) {
     const SourceLoc at = peek().loc;
     const double v = numberFor(what);
-    if (!(v > 0)) throw ParseError(at, std::string(what) + " must be greater than 0, found " + num(v));
+    if (!(v > 0)) throw ParseError(at, std::string(what) + " must be greater than 0, found " + shortest(v));
     return v;
   }
   double nonNegative(const char* what) {
     const SourceLoc at = peek().loc;
     const double v = numberFor(what);
-    if (v < 0) throw ParseError(at, std::string(what) + " must not be negative, found " + num(v));
+    if (v < 0) throw ParseError(at, std::string(what) + " must not be negative, found " + shortest(v));
     return v;
   }
 
@@ -240,20 +234,8 @@ class PovParser {
     obj.loc = keyword.loc;
     obj.shape = *readShape(keyword.text, *this);
     parseModifiers(obj, keyword);
-    if (auto* csg = std::get_if<CsgDesc>(&obj.shape); csg && obj.textured) {
-      for (ObjectDesc& child : csg->children) inheritTexture(child, obj);
-    }
+    passTextureDown(obj);
     return obj;
-  }
-
-  // As POV-Ray does: a CSG child without a texture of its own takes the group's, and so do its own children.
-  static void inheritTexture(ObjectDesc& child, const ObjectDesc& group) {
-    if (child.textured) return;
-    child.material = group.material;
-    child.finish = group.finish;
-    if (auto* csg = std::get_if<CsgDesc>(&child.shape)) {
-      for (ObjectDesc& grandchild : csg->children) inheritTexture(grandchild, group);
-    }
   }
 
   // pigment, finish and transforms, in any order and repeated, up to the object's closing brace.
@@ -315,14 +297,14 @@ class PovParser {
       } else if (t.text == "roughness") {
         f.roughness = numberAfter(t);
         // 0 would make the exponent 2/roughness² − 2 infinite.
-        if (!(f.roughness > 0)) throw ParseError(at, "roughness must be greater than 0, found " + num(f.roughness));
+        if (!(f.roughness > 0)) throw ParseError(at, "roughness must be greater than 0, found " + shortest(f.roughness));
       } else if (t.text == "reflection") {
         f.reflection = numberAfter(t);
       } else if (t.text == "refraction") {
         f.refraction = numberAfter(t);
       } else if (t.text == "ior") {
         f.ior = numberAfter(t);
-        if (!(f.ior > 0)) throw ParseError(at, "ior must be greater than 0, found " + num(f.ior));
+        if (!(f.ior > 0)) throw ParseError(at, "ior must be greater than 0, found " + shortest(f.ior));
       } else if (t.text == "metallic") {
         // A real POV-Ray finish keyword that this renderer does not model: read, said, and ignored.
         numberAfter(t);

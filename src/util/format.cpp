@@ -11,6 +11,12 @@ std::string fixed4(double v) {
   return buf;
 }
 
+std::string shortest(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
 std::string bare(const glm::dvec3& v) { return fixed4(v.x) + " " + fixed4(v.y) + " " + fixed4(v.z); }
 std::string braces(const glm::dvec3& v) { return "{" + bare(v) + "}"; }
 

@@ -39,6 +39,20 @@ struct ObjectDesc {
   glm::dmat4 worldFromObject() const { return composeTransforms<double>(transforms); }
 };
 
+// As POV-Ray does: a CSG group's child without a texture of its own takes the group's, and so do its own
+// children.
+inline void passTextureDown(ObjectDesc& group) {
+  auto* csg = std::get_if<CsgDesc>(&group.shape);
+  if (!csg || !group.textured) return;
+  for (ObjectDesc& child : csg->children) {
+    if (child.textured) continue;
+    child.material = group.material;
+    child.finish = group.finish;
+    child.textured = true;
+    passTextureDown(child);
+  }
+}
+
 template <class K> struct KindTag {
   using Kind = K;
 };

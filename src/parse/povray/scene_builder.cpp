@@ -1,10 +1,12 @@
 #include "raytrace/parse/povray/scene_builder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <optional>
 
 #include "raytrace/parse/povray/interpreter.hpp"
+#include "raytrace/util/format.hpp"
 #include "raytrace/util/limits.hpp"
 
 namespace rt::povray {
@@ -54,10 +56,7 @@ class Builder {
       scene_.conventions.background = Color(s.colour[0], s.colour[1], s.colour[2]);
     } else {
       ObjectDesc o;
-      if (!object(n, o)) return;
-      const std::string shortage = objectMemoryShortage(scene_.objects.size(), scene_.objects.size() + 1, "the scene");
-      if (!shortage.empty()) throw ParseError(n.loc, shortage);
-      scene_.objects.push_back(std::move(o));
+      if (object(n, o)) add(std::move(o), n.loc);
     }
   }
 
@@ -73,6 +72,21 @@ class Builder {
   }
 
  private:
+  // A union's children go into the scene one by one, under the union's transforms: the same surfaces, and the
+  // hierarchy bounds each of them (POV-Ray's split_union).
+  void add(ObjectDesc o, const SourceLoc& at) {
+    if (auto* csg = std::get_if<CsgDesc>(&o.shape); csg && csg->op == CsgOp::Union) {
+      for (ObjectDesc& child : csg->children) {
+        child.transforms.insert(child.transforms.end(), o.transforms.begin(), o.transforms.end());
+        add(std::move(child), at);
+      }
+      return;
+    }
+    const std::string shortage = objectMemoryShortage(scene_.objects.size(), scene_.objects.size() + 1, "the scene");
+    if (!shortage.empty()) throw ParseError(at, shortage);
+    scene_.objects.push_back(std::move(o));
+  }
+
   void refuse(const SourceLoc& loc, std::string_view what) {
     if (!unsupported_) unsupported_ = Unsupported{loc, std::string(what)};
   }
@@ -239,69 +253,122 @@ class Builder {
     }
   }
 
-  // One object into `o`; false when it cannot be drawn (and is refused).
-  bool object(const Node& n, ObjectDesc& o) {
-    const std::string_view k = n.keyword;
-    size_t i = 0;
-    std::vector<const Item*> values;
-    while (i < n.items.size() && n.items[i].kind == Item::Kind::Value) values.push_back(&n.items[i++]);
-    auto need = [&](size_t count) {
-      if (values.size() < count) {
-        throw ParseError(n.loc, "'" + std::string(k) + "' needs " + std::to_string(count) + " values, found " +
-                                    std::to_string(values.size()));
+  // A shape's values for its kind's read() (shapes/kind.hpp), taken from the items of its node in order.
+  class ItemReader {
+   public:
+    ItemReader(Builder& b, const Node& n, size_t& i) : b_(b), n_(n), i_(i) {}
+    glm::dvec3 vec3(const char* what) {
+      const Item& it = take(what);
+      if (!it.value.numeric()) throw ParseError(it.loc, std::string("expected a vector for ") + what + ", found a " + typeName(it.value));
+      return povray::vec3(it.value);
+    }
+    double number(const char* what) {
+      const Item& it = take(what);
+      if (it.value.type != Value::Type::Float) throw ParseError(it.loc, std::string("expected a float for ") + what + ", found a " + typeName(it.value));
+      return it.value.v[0];
+    }
+    double positive(const char* what) {
+      const SourceLoc at = here();
+      const double v = number(what);
+      if (!(v > 0)) throw ParseError(at, std::string(what) + " must be greater than 0, found " + shortest(v));
+      return v;
+    }
+    double nonNegative(const char* what) {
+      const SourceLoc at = here();
+      const double v = number(what);
+      if (v < 0) throw ParseError(at, std::string(what) + " must not be negative, found " + shortest(v));
+      return v;
+    }
+    void comma(const char*) {}  // the interpreter has dropped them
+    SourceLoc here() const { return i_ < n_.items.size() ? n_.items[i_].loc : n_.loc; }
+    bool objectNext() {
+      while (i_ < n_.items.size() && b_.lightHere(n_.items[i_])) ++i_;
+      return i_ < n_.items.size() && isObject(n_.items[i_]);
+    }
+    ObjectDesc object() {
+      ObjectDesc child;
+      b_.object(*n_.items[i_++].node, child);
+      return child;
+    }
+
+   private:
+    const Item& take(const char* what) {
+      if (i_ >= n_.items.size() || n_.items[i_].kind != Item::Kind::Value) {
+        throw ParseError(here(), "'" + std::string(n_.keyword) + "' needs " + what);
       }
-    };
-    auto vector = [&](size_t j) {
-      const Value& v = values[j]->value;
-      if (!v.numeric()) throw ParseError(values[j]->loc, std::string("expected a vector, found a ") + typeName(v));
-      return vec3(v);
-    };
-    auto number = [&](size_t j) {
-      const Value& v = values[j]->value;
-      if (v.type != Value::Type::Float) throw ParseError(values[j]->loc, std::string("expected a float, found a ") + typeName(v));
-      return v.v[0];
-    };
+      return n_.items[i_++];
+    }
+    Builder& b_;
+    const Node& n_;
+    size_t& i_;
+  };
+
+  // Whether an item is an object: a shape of ours, or one of POV-Ray's that is refused when read.
+  static bool isObject(const Item& it) {
+    static constexpr std::string_view kPovObjects[] = {
+        "bicubic_patch", "blob", "cubic", "disc", "height_field", "isosurface", "julia_fractal", "lathe", "mesh",
+        "mesh2", "object", "ovus", "parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic",
+        "smooth_triangle", "sor", "sphere_sweep", "superellipsoid", "text", "torus"};
+    if (it.kind != Item::Kind::Node) return false;
+    const std::string_view k = it.node->keyword;
+    return isShapeKeyword(k) || std::find(std::begin(kPovObjects), std::end(kPovObjects), k) != std::end(kPovObjects);
+  }
+
+  // A light source inside an object (POV-Ray moves it with the object): added to the scene here, and moved by
+  // the object's transforms once they are known (object()).
+  bool lightHere(const Item& it) {
+    if (it.kind != Item::Kind::Node || it.node->keyword != "light_source") return false;
+    light(*it.node);
+    return true;
+  }
+
+  // One object into `o`, and its surface into `s`; false when it cannot be drawn (and is refused).
+  bool object(const Node& n, ObjectDesc& o) {
+    Surface s = default_;
+    return object(n, o, s);
+  }
+
+  bool object(const Node& n, ObjectDesc& o, Surface& s) {
+    const std::string_view k = n.keyword;
+    const size_t firstLight = scene_.lights.size();
+    size_t i = 0;
     if (k == "object") {
       if (i >= n.items.size() || n.items[i].kind != Item::Kind::Node) throw ParseError(n.loc, "'object' needs an object identifier");
-      if (!object(*n.items[i++].node, o)) return false;
-    } else if (k == "sphere") {
-      need(2);
-      o.shape = SphereDesc{vector(0), number(1)};
-    } else if (k == "box") {
-      need(2);
-      const glm::dvec3 a = vector(0), b = vector(1);
-      o.shape = BoxDesc{glm::min(a, b), glm::max(a, b)};
-    } else if (k == "cone") {
-      need(4);
-      o.shape = ConeDesc{vector(0), number(1), vector(2), number(3)};
-    } else if (k == "cylinder") {
-      need(3);
-      o.shape = CylinderDesc{vector(0), vector(1), number(2)};
-    } else if (k == "plane") {
-      need(2);
-      o.shape = PlaneDesc{vector(0), number(1)};
-    } else if (k == "triangle") {
-      need(3);
-      o.shape = TriangleDesc{vector(0), vector(1), vector(2)};
+      if (!object(*n.items[i++].node, o, s)) return false;
     } else {
-      refuse(n.loc, k);
-      return false;
-    }
-    if (k != "object") {
+      ItemReader reader(*this, n, i);
+      // A union of light sources alone, which POV-Ray allows to move them together.
+      const bool lightsAlone = k == "union" && std::none_of(n.items.begin(), n.items.end(), isObject);
+      std::optional<ShapeDesc> shape = lightsAlone ? ShapeDesc(CsgDesc{}) : readShape(k, reader);
+      if (!shape) {
+        refuse(n.loc, k);
+        return false;
+      }
+      o.shape = std::move(*shape);
       o.loc = n.loc;
-      surface_ = default_;
+      if (auto* box = std::get_if<BoxDesc>(&o.shape)) *box = BoxDesc{glm::min(box->min, box->max), glm::max(box->min, box->max)};
     }
+    auto* csg = std::get_if<CsgDesc>(&o.shape);
+    const size_t ownTransforms = o.transforms.size();  // after those of an `object { Name` before them
     bool textured = false;
     for (; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
       if (transformItem(n, i, o.transforms)) continue;
+      if (csg && k != "object" && isObject(it)) {
+        ObjectDesc child;
+        object(*it.node, child);
+        csg->children.push_back(std::move(child));
+        continue;
+      }
+      if (lightHere(it)) continue;
       if (it.kind == Item::Kind::Node) {
         const std::string_view m = it.node->keyword;
         if (m == "bounded_by" || m == "photons" || m == "radiosity") continue;
         if (m == "texture" && textured) refuse(it.loc, "layered texture");
         textured = textured || m == "texture";
         if (m == "pigment" || m == "finish" || m == "texture" || m == "material" || m == "interior") {
-          surfaceItem(*it.node, surface_);
+          surfaceItem(*it.node, s);
+          o.textured = true;
         } else {
           refuse(it.loc, m);
         }
@@ -315,13 +382,16 @@ class Builder {
         refuse(it.loc, "a value here");
       }
     }
-    if (k == "object") return true;
-    material(o);
+    material(o, s);
+    passTextureDown(o);
+    const glm::dmat4 m = composeTransforms<double>(std::vector(o.transforms.begin() + long(ownTransforms), o.transforms.end()));
+    for (size_t l = firstLight; l < scene_.lights.size(); ++l) {
+      scene_.lights[l].position = glm::dvec3(m * glm::dvec4(scene_.lights[l].position, 1));
+    }
     return true;
   }
 
-  void material(ObjectDesc& o) {
-    const Surface& s = surface_;
+  void material(ObjectDesc& o, const Surface& s) {
     const PovFinish& f = s.finish;
     if (s.colour[4] > 0) refuse(o.loc, "transmit");
     o.finish.ambient = (f.ambient.r + f.ambient.g + f.ambient.b) / 3;
@@ -461,9 +531,17 @@ class Builder {
 
  private:
   SceneDesc& scene_;
-  Surface default_, surface_;
+  Surface default_;
   std::optional<Unsupported> unsupported_;
 };
+
+// global_settings' ambient_light scales every ambient term, a CSG group's parts' too.
+void scaleAmbient(ObjectDesc& o, const Color& light) {
+  o.material.ambient *= light;
+  if (auto* csg = std::get_if<CsgDesc>(&o.shape)) {
+    for (ObjectDesc& child : csg->children) scaleAmbient(child, light);
+  }
+}
 
 }  // namespace
 
@@ -490,7 +568,7 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   interpreter.run(path, text, [&](const std::shared_ptr<const Node>& n) { builder.statement(*n); },
                   [&](const std::shared_ptr<const Node>& n) { builder.defaults(*n); });
   builder.finish();
-  for (ObjectDesc& o : scene.objects) o.material.ambient *= builder.ambientLight_;
+  for (ObjectDesc& o : scene.objects) scaleAmbient(o, builder.ambientLight_);
   return scene;
 }
 

@@ -1,0 +1,98 @@
+// The POV-Ray scene builder: what each statement of a scene becomes in the scene description.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "raytrace/parse/povray/scene_builder.hpp"
+
+namespace rt::povray {
+namespace {
+
+SceneDesc scene(const std::string& body) {
+  return parsePovRay("#version 3.7;\n#include \"colors.inc\"\n" + body, "scene.pov", PovRayOptions{{}, 320, 240, false});
+}
+
+std::string failure(const std::string& body) {
+  try {
+    scene(body);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST_CASE("povray scene: a union's children become objects of the scene under the union's transforms and texture",
+          "[povray]") {
+  const SceneDesc s = scene(R"(
+#declare Pair = union {
+  sphere { 0, 1 translate y }
+  box { 0, 1 pigment { Red } }
+  pigment { Green }
+  scale 2
+}
+object { Pair translate x }
+object { Pair }
+)");
+  REQUIRE(s.objects.size() == 4);
+  CHECK(std::get<SphereDesc>(s.objects[0].shape).radius == 1);
+  CHECK(s.objects[0].material.pigment == Color(0, 1, 0));  // the union's
+  CHECK(s.objects[1].material.pigment == Color(1, 0, 0));  // its own
+  // The child's own transforms, then the union's, then the object's.
+  REQUIRE(s.objects[0].transforms.size() == 3);
+  CHECK(s.objects[0].transforms[0].v == glm::dvec3(0, 1, 0));
+  CHECK(s.objects[0].transforms[1].v == glm::dvec3(2));
+  CHECK(s.objects[0].transforms[2].v == glm::dvec3(1, 0, 0));
+  CHECK(s.objects[2].transforms.size() == 2);
+  CHECK(s.objects[3].transforms.size() == 1);
+}
+
+TEST_CASE("povray scene: intersection, difference and merge stay groups, their children textured as POV-Ray does",
+          "[povray]") {
+  const SceneDesc s = scene(R"(
+difference {
+  box { -1, 1 }
+  union { sphere { 0, 1.2 pigment { Blue } } cylinder { -2*x, 2*x, 0.5 } }
+  pigment { Yellow }
+  rotate 90*y
+}
+merge { sphere { 0, 1 } sphere { x, 1 } }
+)");
+  REQUIRE(s.objects.size() == 2);
+  const auto& diff = std::get<CsgDesc>(s.objects[0].shape);
+  CHECK(diff.op == CsgOp::Difference);
+  REQUIRE(diff.children.size() == 2);
+  CHECK(diff.children[0].material.pigment == Color(1, 1, 0));
+  const auto& inner = std::get<CsgDesc>(diff.children[1].shape);
+  CHECK(inner.op == CsgOp::Union);  // inside a difference a union is a solid, not split
+  CHECK(inner.children[0].material.pigment == Color(0, 0, 1));
+  CHECK(inner.children[1].material.pigment == Color(1, 1, 0));
+  CHECK(s.objects[0].transforms.size() == 1);
+  CHECK(std::get<CsgDesc>(s.objects[1].shape).op == CsgOp::Merge);
+  CHECK(s.objects[1].material.pigment == Color(0));  // POV-Ray's default texture is black
+}
+
+TEST_CASE("povray scene: light sources inside objects move with them; a union may hold lights alone", "[povray]") {
+  const SceneDesc s = scene(R"(
+union { light_source { <1, 0, 0> White } light_source { <0, 1, 0> Red } translate 10*z }
+#declare Lamp = union { sphere { 0, 0.1 } light_source { 0 White } translate y }
+object { Lamp translate x }
+)");
+  REQUIRE(s.lights.size() == 3);
+  CHECK(s.lights[0].position == glm::dvec3(1, 0, 10));
+  CHECK(s.lights[1].position == glm::dvec3(0, 1, 10));
+  CHECK(s.lights[1].color == Color(1, 0, 0));
+  CHECK(s.lights[2].position == glm::dvec3(1, 1, 0));
+  REQUIRE(s.objects.size() == 1);
+}
+
+TEST_CASE("povray scene: a shape or group that cannot be drawn yet is refused where it is written", "[povray]") {
+  CHECK(failure("union { sphere { 0, 1 }\n torus { 1, 0.2 } }\n") == "scene.pov:4:2: error: 'torus' is not supported yet");
+  CHECK(failure("intersection { sphere { 0, 1 } plane { y, 0 } inverse }\n") ==
+        "scene.pov:3:47: error: 'inverse' is not supported yet");
+  CHECK(failure("sphere { 0 }\n") == "scene.pov:3:1: error: 'sphere' needs the sphere radius");
+  CHECK(failure("sphere { 0, -1 }\n") == "scene.pov:3:13: error: the sphere radius must be greater than 0, found -1");
+  CHECK(failure("difference { pigment { Red } }\n") == "scene.pov:3:14: error: expected an object inside 'difference'");
+}
+
+}  // namespace
+}  // namespace rt::povray
