@@ -156,7 +156,9 @@ int raycast(const Invocation& inv, std::ostream&) {
     for (int y = bottom; y < inv.height - region.y0; ++y) {
       for (int x = region.x0; x < region.x1; ++x) {
         const auto hit = scene.closestHit(camera.pixelRay(x, y), {});
-        image.at(x - region.x0, y - bottom) = hit ? hit->object->material().pigment : inv.scene.conventions.background;
+        Material textured;
+        image.at(x - region.x0, y - bottom) =
+            hit ? hit->object->materialAt(hit->point, textured).pigment : inv.scene.conventions.background;
       }
     }
     return 0;

@@ -99,8 +99,9 @@ int firsthit(const Invocation& inv, std::ostream& out) {
       out << "No Hit\n";
       return 0;
     }
+    Material textured;
     out << "T = " << fixed4(hit->t) << "\nObject Type: " << hit->object->name()
-        << "\nColor: " << bare(hit->object->material().pigment) << "\n";
+        << "\nColor: " << bare(hit->object->materialAt(hit->point, textured).pigment) << "\n";
     return 0;
   });
 }

@@ -16,6 +16,15 @@ namespace rt {
 
 namespace {
 
+const char* toByteName(Conventions::ToByte mode) {
+  switch (mode) {
+    case Conventions::ToByte::Round: return "round";
+    case Conventions::ToByte::Truncate: return "truncate";
+    case Conventions::ToByte::Srgb: return "srgb";
+  }
+  return "round";
+}
+
 // FNV-1a, 64 bits (Fowler, Noll and Vo; IETF draft-eastlake-fnv): a content check, not a defence against
 // someone forging a scene.
 std::string contentHash(const std::string& path) {
@@ -43,7 +52,7 @@ std::map<std::string, std::string> tileHeader(const Invocation& inv, const std::
       {"raytrace.sceneHash", contentHash(inv.scenePath)},
       {"raytrace.size", std::to_string(inv.width) + "x" + std::to_string(inv.height)},
       {"raytrace.options", pixelFlags(inv.options)},
-      {kToByteAttribute, inv.scene.conventions.toByte == Conventions::ToByte::Round ? "round" : "truncate"},
+      {kToByteAttribute, toByteName(inv.scene.conventions.toByte)},
       {kTilePartAttribute, inv.tile.empty() ? std::to_string(r.x0) + "," + std::to_string(r.y0) + "," +
                                                   std::to_string(r.x1) + "," + std::to_string(r.y1)
                                             : inv.tile},
@@ -87,8 +96,9 @@ Conventions::ToByte toByteOf(const std::map<std::string, std::string>& header, c
   const auto it = header.find(kToByteAttribute);
   if (it != header.end() && it->second == "round") return Conventions::ToByte::Round;
   if (it != header.end() && it->second == "truncate") return Conventions::ToByte::Truncate;
+  if (it != header.end() && it->second == "srgb") return Conventions::ToByte::Srgb;
   throw Error(quote(file, kMaxQuotedPath) + " is not a raytrace tile: it has no " + kToByteAttribute +
-              " of round or truncate");
+              " of round, truncate or srgb");
 }
 
 }  // namespace rt

@@ -237,16 +237,18 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
   const Vec3<T> v = -ray.dir;
   const Vec3<T> n = viewerSide(hit, ray);  // shading normal
   std::optional<Vec3<T>> refracted;
-  const Weights w = split(ray, hit, n, record, refracted);
+  Material textured;
+  const Material& m = hit.object->materialAt(hit.point, textured);
+  const Weights w = split(ray, hit, m, n, record, refracted);
   Color ambientLight(0);
   Local local;
   if (w.local > 0) {
-    local = direct(hit, n, v, record, shadows);
-    ambientLight = w.local * ambient(hit, n, path);
+    local = direct(hit, m, n, v, record, shadows);
+    ambientLight = w.local * ambient(hit, m, n, path);
   }
   local.diffuse *= w.local;
   local.specular *= w.local;
-  const Color secondaryLight = secondary(ray, hit, n, w, refracted, path, record);
+  const Color secondaryLight = secondary(ray, hit, m, n, w, refracted, path, record);
   if (record) {
     record->ambient = ambientLight;
     record->diffuse = local.diffuse;
@@ -261,9 +263,8 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
 // Inlined into shade(), its only caller, as secondary() is (docs/performance-notes.md, "Whitted path").
 template <class T>
 [[gnu::always_inline]] inline
-Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Vec3<T>& n, RayRecord* record,
-                         std::optional<Vec3<T>>& refracted) const {
-  const Material& m = hit.object->material();
+Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Material& m, const Vec3<T>& n,
+                         RayRecord* record, std::optional<Vec3<T>>& refracted) const {
   const float fresnel = options_.fresnel ? schlick(float(glm::dot(n, -ray.dir)), m.ior) : 0.0f;
   Weights w = weights(m, fresnel, conventions_.reflectionMixes);
   if (w.transmission > 0) {
@@ -277,8 +278,9 @@ Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Vec3<T>& n,
   return w;
 }
 
-template <class T> Color Tracer<T>::ambient(const Hit<T>& hit, const Vec3<T>& n, const Path& path) {
-  if (!options_.gi.enabled) return hit.object->material().ambient;
+template <class T>
+Color Tracer<T>::ambient(const Hit<T>& hit, const Material& m, const Vec3<T>& n, const Path& path) {
+  if (!options_.gi.enabled) return m.ambient;
   // The gathered light takes the place of ka·C (Ca in .cli) as it is: no ka, kd or pigment factor (§c.14; the
   // reference images show it, docs/gi.md).
   if (cache_ && path.bounce == 0 && options_.gi.bounceCount() > 0) return cached(hit, n, path);
@@ -350,9 +352,9 @@ Color Tracer<T>::gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path
 }
 
 template <class T>
-typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v,
-                                            RayRecord* record, const std::optional<ShadowRay>* shadows) {
-  const Material& m = hit.object->material();
+typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m, const Vec3<T>& n,
+                                            const Vec3<T>& v, RayRecord* record,
+                                            const std::optional<ShadowRay>* shadows) {
   // Summed in locals, not in the returned struct: that one lives in the caller's memory, and each sum would
   // wait for the store before it.
   Color diffuse(0), specular(0);
@@ -381,9 +383,9 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Vec3<T>& n,
 
 template <class T>
 [[gnu::always_inline]] inline
-Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Vec3<T>& n, const Weights& w,
-                           const std::optional<Vec3<T>>& refracted, const Path& path, RayRecord* record) {
-  const Material& m = hit.object->material();
+Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material& m, const Vec3<T>& n,
+                           const Weights& w, const std::optional<Vec3<T>>& refracted, const Path& path,
+                           RayRecord* record) {
   const bool entering = glm::dot(ray.dir, hit.normal) <= T(0);
   Color refraction(0), reflection(0);
   Path child = path;

@@ -41,6 +41,7 @@ std::unique_ptr<Object<T>> makeObject(const ObjectDesc& desc, SphereMethod spher
   const ObjectDesc& o = folded ? *folded : desc;
   const ObjectBuild build{o.material, id, sphere, course};
   auto object = std::visit([&](const auto& k) { return k.template make<T>(build); }, o.shape);
+  object->setTexture(o.texture);
   const Mat4<T> m = course ? composeTransforms<T>(o.transforms) : Mat4<T>(o.worldFromObject());
   // An identity transform (`translate <0,0,0>`) costs nothing: the shape is used as it is.
   if (m == Mat4<T>(T(1))) return object;

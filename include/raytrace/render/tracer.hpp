@@ -107,11 +107,11 @@ template <class T> class Tracer {
               const std::optional<ShadowRay>* shadows);
   // The weights of the local light and the two secondary rays at a hit; `refracted` receives the transmitted
   // direction when there is one (total internal reflection moves the transmitted share to reflection).
-  Weights split(const Ray<T>& ray, const Hit<T>& hit, const Vec3<T>& n, RayRecord* record,
+  Weights split(const Ray<T>& ray, const Hit<T>& hit, const Material& m, const Vec3<T>& n, RayRecord* record,
                 std::optional<Vec3<T>>& refracted) const;
   // The term the course calls ambient: the material's constant, or with -gi the indirect light gathered over
   // the hemisphere of n (docs/gi.md).
-  Color ambient(const Hit<T>& hit, const Vec3<T>& n, const Path& path);
+  Color ambient(const Hit<T>& hit, const Material& m, const Vec3<T>& n, const Path& path);
   // The first bounce's gathered light with --gi-cache: the cache's, or gathered (and recorded, if records are
   // being made) where no record covers the point.
   Color cached(const Hit<T>& hit, const Vec3<T>& n, const Path& path);
@@ -123,11 +123,11 @@ template <class T> class Tracer {
   Color gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path, int count);
   // Diffuse and specular light from every light the point sees (§c.1, §c.7), before weighting. `n` is the
   // shading normal on the viewer's side, `v` the unit vector to the viewer.
-  Local direct(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
+  Local direct(const Hit<T>& hit, const Material& m, const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
                const std::optional<ShadowRay>* shadows);
   // The reflected and refracted light, weighted and tinted (§c.3, §c.4, §c.6), traced refraction first as the
   // course prints them (§a.3).
-  Color secondary(const Ray<T>& ray, const Hit<T>& hit, const Vec3<T>& n, const Weights& w,
+  Color secondary(const Ray<T>& ray, const Hit<T>& hit, const Material& m, const Vec3<T>& n, const Weights& w,
                   const std::optional<Vec3<T>>& refracted, const Path& path, RayRecord* record);
   // The shadow ray toward `light`, or false when the light cannot light the point from the viewer's side `n`:
   // a light behind the surface as the viewer sees it, or on the point itself.

@@ -36,7 +36,8 @@ struct LightDesc {
 // images. They belong to the language, not to the renderer, so each parser fills them in once.
 struct Conventions {
   Color background{0};
-  enum class ToByte { Round, Truncate } toByte = ToByte::Round;  // course: round(c·255); .cli: (int)(c·255)
+  // course: round(c·255); .cli: (int)(c·255); POV-Ray 3.7 with assumed_gamma 1: round(sRGB(c)·255)
+  enum class ToByte { Round, Truncate, Srgb } toByte = ToByte::Round;
   bool clampEachBounce = false;  // .cli clamps every shade() result to [0,1] before it is weighted
   bool reflectionMixes = true;   // course: local·(1−f)(1−k) + k·C·reflected; .cli: local + k·reflected
   bool tintReflection = true;    // course multiplies reflected light by the pigment (§c.3)

@@ -3,13 +3,15 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 
 #include "raytrace/geometry/aabb.hpp"
 #include "raytrace/geometry/hit.hpp"
 #include "raytrace/geometry/interval.hpp"
-#include "raytrace/surface/material.hpp"
 #include "raytrace/geometry/ray.hpp"
+#include "raytrace/surface/material.hpp"
+#include "raytrace/surface/texture.hpp"
 
 namespace rt {
 
@@ -69,13 +71,26 @@ template <class T> class Object {
   virtual const char* name() const = 0;
 
   const Material& material() const { return material_; }
+  // What shading reads at `point` of the surface: the texture there, written into `scratch`, or the constant
+  // material of an object without one. The one test costs an untextured scene nothing measurable
+  // (docs/performance.md, "Textures").
+  const Material& materialAt(const Vec3<T>& point, Material& scratch) const {
+    if (!texture_) return material_;
+    scratch = texture_->at(glm::dvec3(point));
+    return scratch;
+  }
+  void setTexture(std::shared_ptr<const Texture> texture) { texture_ = std::move(texture); }
   // Calls f(material) for every material a hit on this object can report: its own, or a group's parts'.
-  virtual void forEachMaterial(const std::function<void(const Material&)>& f) const { f(material_); }
+  // A textured object reports its texture's bound.
+  virtual void forEachMaterial(const std::function<void(const Material&)>& f) const {
+    f(texture_ ? texture_->bound : material_);
+  }
   int id() const { return id_; }  // 1-based position in the scene file, as printrays shows it
 
  private:
   Material material_;
   int id_;
+  std::shared_ptr<const Texture> texture_;
 };
 
 }  // namespace rt

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string_view>
 #include <utility>
@@ -31,6 +32,8 @@ struct ObjectDesc {
   Finish finish;  // POV: as written, for sceneinfo
   SourceLoc loc;  // where the object starts, for messages
   bool textured = false;  // the file gave it a pigment or finish of its own (a CSG child without takes its group's)
+  // A texture that varies over the surface, in world space; none when `material` is the same everywhere.
+  std::shared_ptr<const Texture> texture;
   // The POV transforms as written (§c.10), in file order; a scene built in code gives its own the same way.
   std::vector<TransformStep> transforms;
 
@@ -48,6 +51,7 @@ inline void passTextureDown(ObjectDesc& group) {
     if (child.textured) continue;
     child.material = group.material;
     child.finish = group.finish;
+    child.texture = group.texture;
     child.textured = true;
     passTextureDown(child);
   }

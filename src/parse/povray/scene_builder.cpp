@@ -6,35 +6,13 @@
 #include <optional>
 
 #include "raytrace/parse/povray/interpreter.hpp"
+#include "raytrace/parse/povray/surface_reader.hpp"
 #include "raytrace/util/format.hpp"
 #include "raytrace/util/limits.hpp"
 
 namespace rt::povray {
 
 namespace {
-
-// A refusal of something POV-Ray has and raytrace cannot draw yet; parsing goes on, so that a real mistake
-// later in the file is still reported as one.
-struct Unsupported {
-  SourceLoc loc;
-  std::string what;
-};
-
-// A finish with POV-Ray 3.7's defaults.
-struct PovFinish {
-  Color ambient{0.1f};
-  double diffuse = 0.6, phong = 0, phongSize = 40, specular = 0, roughness = 0.05, reflection = 0, ior = 1;
-};
-
-struct Surface {
-  std::array<double, 5> colour{};  // POV-Ray's default pigment is black
-  PovFinish finish;
-};
-
-glm::dvec3 vec3(const Value& v) {
-  if (v.type == Value::Type::Float) return glm::dvec3(v.v[0]);
-  return {v.v[0], v.size > 1 ? v.v[1] : 0, v.size > 2 ? v.v[2] : 0};
-}
 
 class Builder {
  public:
@@ -49,11 +27,9 @@ class Builder {
     } else if (k == "global_settings") {
       globalSettings(n);
     } else if (k == "background") {
-      Surface s;
       for (const Item& i : n.items) {
-        if (i.kind == Item::Kind::Value && i.value.numeric()) s.colour = colourOf(i.value);
+        if (i.kind == Item::Kind::Value && i.value.numeric()) scene_.conventions.background = colourOf(i.value).rgb;
       }
-      scene_.conventions.background = Color(s.colour[0], s.colour[1], s.colour[2]);
     } else {
       ObjectDesc o;
       if (object(n, o)) add(std::move(o), n.loc);
@@ -63,12 +39,12 @@ class Builder {
   void defaults(const Node& n) {
     for (const Item& i : n.items) {
       if (i.kind != Item::Kind::Node) continue;
-      surfaceItem(*i.node, default_);
+      readSurfaceItem(*i.node, default_, refusals_);
     }
   }
 
   void finish() {
-    if (unsupported_) throw ParseError(unsupported_->loc, "'" + unsupported_->what + "' is not supported yet");
+    if (refusals_.first) throw ParseError(refusals_.first->loc, "'" + refusals_.first->what + "' is not supported yet");
   }
 
  private:
@@ -87,170 +63,9 @@ class Builder {
     scene_.objects.push_back(std::move(o));
   }
 
-  void refuse(const SourceLoc& loc, std::string_view what) {
-    if (!unsupported_) unsupported_ = Unsupported{loc, std::string(what)};
-  }
-
-  static std::array<double, 5> colourOf(const Value& v) {
-    std::array<double, 5> c{};
-    if (v.type == Value::Type::Float) {
-      c = {v.v[0], v.v[0], v.v[0], 0, 0};
-    } else {
-      for (int i = 0; i < v.size && i < 5; ++i) c[size_t(i)] = v.v[size_t(i)];
-    }
-    return c;
-  }
-
-  // Items after a keyword that take a value: the value, if the next item is one.
-  static const Value* valueAfter(const Node& n, size_t& i) {
-    if (i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value) return &n.items[++i].value;
-    return nullptr;
-  }
-
-  // The transforms of translate/rotate/scale/transform items, as steps; false for any other item.
+  void refuse(const SourceLoc& loc, std::string_view what) { refusals_.refuse(loc, what); }
   bool transformItem(const Node& n, size_t& i, std::vector<TransformStep>& steps) {
-    const Item& it = n.items[i];
-    if (it.kind == Item::Kind::Node && it.node->keyword == "transform") {
-      transformBlock(*it.node, steps);
-      return true;
-    }
-    if (it.kind != Item::Kind::Keyword) return false;
-    const std::string_view w = it.word;
-    if (w == "transform") {
-      if (i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Node) transformBlock(*n.items[++i].node, steps);
-      return true;
-    }
-    if (w != "translate" && w != "rotate" && w != "scale" && w != "matrix") return false;
-    const Value* v = valueAfter(n, i);
-    if (w == "matrix" || !v) {
-      refuse(it.loc, w);
-      return true;
-    }
-    glm::dvec3 a = vec3(*v);
-    if (w == "translate") {
-      steps.push_back({TransformStep::Kind::Translate, a});
-    } else if (w == "scale") {
-      for (int k = 0; k < 3; ++k) {
-        if (a[k] == 0) a[k] = 1;  // as POV-Ray does, with a warning
-      }
-      steps.push_back({TransformStep::Kind::Scale, a});
-    } else {
-      // POV-Ray turns about x, then y, then z.
-      if (a.x != 0) steps.push_back({TransformStep::Kind::Rotate, {a.x, 0, 0}});
-      if (a.y != 0) steps.push_back({TransformStep::Kind::Rotate, {0, a.y, 0}});
-      if (a.z != 0) steps.push_back({TransformStep::Kind::Rotate, {0, 0, a.z}});
-    }
-    return true;
-  }
-
-  void transformBlock(const Node& n, std::vector<TransformStep>& steps) {
-    for (size_t i = 0; i < n.items.size(); ++i) {
-      const Item& it = n.items[i];
-      if (it.kind == Item::Kind::Node && it.node->keyword == "transform") {
-        transformBlock(*it.node, steps);
-      } else if (!transformItem(n, i, steps)) {
-        refuse(it.loc, it.kind == Item::Kind::Keyword ? it.word : std::string_view("transform"));
-      }
-    }
-  }
-
-  void pigment(const Node& n, Surface& s) {
-    for (size_t i = 0; i < n.items.size(); ++i) {
-      const Item& it = n.items[i];
-      std::vector<TransformStep> ignored;  // a solid colour looks the same however it is moved
-      if (it.kind == Item::Kind::Value && it.value.numeric()) {
-        s.colour = colourOf(it.value);
-      } else if (it.kind == Item::Kind::Node && it.node->keyword == "pigment") {
-        pigment(*it.node, s);
-      } else if (transformItem(n, i, ignored)) {
-      } else if (it.kind == Item::Kind::Keyword && (it.word == "quick_color" || it.word == "quick_colour")) {
-        valueAfter(n, i);
-      } else {
-        refuse(it.loc, it.kind == Item::Kind::Node ? it.node->keyword : it.word);
-      }
-    }
-  }
-
-  void finishBlock(const Node& n, PovFinish& f) {
-    for (size_t i = 0; i < n.items.size(); ++i) {
-      const Item& it = n.items[i];
-      if (it.kind == Item::Kind::Node && it.node->keyword == "finish") {
-        finishBlock(*it.node, f);
-        continue;
-      }
-      if (it.kind == Item::Kind::Node && it.node->keyword == "reflection") {
-        for (const Item& r : it.node->items) {
-          if (r.kind == Item::Kind::Value && r.value.numeric()) f.reflection = colourOf(r.value)[0];
-          else refuse(r.loc, r.kind == Item::Kind::Keyword ? r.word : r.node ? r.node->keyword : "reflection");
-        }
-        continue;
-      }
-      if (it.kind != Item::Kind::Keyword) {
-        refuse(it.loc, it.kind == Item::Kind::Node ? it.node->keyword : "finish");
-        continue;
-      }
-      const std::string_view w = it.word;
-      if (w == "conserve_energy") continue;
-      const Value* v = valueAfter(n, i);
-      if (!v || !v->numeric()) {
-        refuse(it.loc, w);
-        continue;
-      }
-      const double x = v->v[0];
-      if (w == "ambient") {
-        const auto c = colourOf(*v);
-        f.ambient = Color(c[0], c[1], c[2]);
-      } else if (w == "diffuse") {
-        f.diffuse = x;
-      } else if (w == "phong") {
-        f.phong = x;
-      } else if (w == "phong_size") {
-        f.phongSize = x;
-      } else if (w == "specular") {
-        f.specular = x;
-      } else if (w == "roughness") {
-        f.roughness = x;
-      } else if (w == "reflection") {
-        f.reflection = x;
-      } else if (w == "brilliance" && x == 1) {
-      } else {
-        refuse(it.loc, w);
-      }
-    }
-  }
-
-  // pigment, finish, texture, material or interior, into a surface; other items are refused.
-  void surfaceItem(const Node& n, Surface& s) {
-    const std::string_view k = n.keyword;
-    if (k == "pigment") {
-      pigment(n, s);
-    } else if (k == "finish") {
-      finishBlock(n, s.finish);
-    } else if (k == "texture" || k == "material") {
-      std::vector<TransformStep> ignored;
-      for (size_t i = 0; i < n.items.size(); ++i) {
-        const Item& it = n.items[i];
-        if (it.kind == Item::Kind::Node) {
-          surfaceItem(*it.node, s);
-        } else if (!transformItem(n, i, ignored)) {
-          refuse(it.loc, it.kind == Item::Kind::Keyword ? it.word : k);
-        }
-      }
-    } else if (k == "interior") {
-      for (size_t i = 0; i < n.items.size(); ++i) {
-        const Item& it = n.items[i];
-        const Value* v = it.kind == Item::Kind::Keyword && it.word == "ior" ? valueAfter(n, i) : nullptr;
-        if (v && v->type == Value::Type::Float) {
-          s.finish.ior = v->v[0];
-        } else if (it.kind == Item::Kind::Node && it.node->keyword == "interior") {
-          surfaceItem(*it.node, s);
-        } else {
-          refuse(it.loc, it.kind == Item::Kind::Keyword ? it.word : it.node ? it.node->keyword : "interior");
-        }
-      }
-    } else {
-      refuse(n.loc, k);
-    }
+    return readTransform(n, i, steps, refusals_);
   }
 
   // A shape's values for its kind's read() (shapes/kind.hpp), taken from the items of its node in order.
@@ -350,7 +165,8 @@ class Builder {
     }
     auto* csg = std::get_if<CsgDesc>(&o.shape);
     const size_t ownTransforms = o.transforms.size();  // after those of an `object { Name` before them
-    bool textured = false;
+    std::optional<size_t> textureFrom;  // the transforms from here on move this level's texture
+    bool textureBlock = false;
     for (; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
       if (transformItem(n, i, o.transforms)) continue;
@@ -364,11 +180,13 @@ class Builder {
       if (it.kind == Item::Kind::Node) {
         const std::string_view m = it.node->keyword;
         if (m == "bounded_by" || m == "photons" || m == "radiosity") continue;
-        if (m == "texture" && textured) refuse(it.loc, "layered texture");
-        textured = textured || m == "texture";
-        if (m == "pigment" || m == "finish" || m == "texture" || m == "material" || m == "interior") {
-          surfaceItem(*it.node, s);
-          o.textured = true;
+        if (m == "pigment" || m == "finish" || m == "texture" || m == "material" || m == "interior" ||
+            m == "layered texture") {
+          // A second texture block is a layer on top of the first.
+          if (m == "texture" && textureBlock) s.layers.emplace_back();
+          textureBlock = textureBlock || m == "texture";
+          readSurfaceItem(*it.node, s, refusals_);
+          if (!textureFrom) textureFrom = o.transforms.size();
         } else {
           refuse(it.loc, m);
         }
@@ -382,35 +200,37 @@ class Builder {
         refuse(it.loc, "a value here");
       }
     }
-    material(o, s);
+    const std::vector<TransformStep> own(o.transforms.begin() + long(ownTransforms), o.transforms.end());
+    moveTextures(o, glm::inverse(composeTransforms<double>(own)));
+    if (textureFrom || k != "object") surface(o, s, std::vector(o.transforms.begin() + long(textureFrom.value_or(o.transforms.size())), o.transforms.end()));
+    if (textureFrom) o.textured = true;
     passTextureDown(o);
-    const glm::dmat4 m = composeTransforms<double>(std::vector(o.transforms.begin() + long(ownTransforms), o.transforms.end()));
+    const glm::dmat4 m = composeTransforms<double>(own);
     for (size_t l = firstLight; l < scene_.lights.size(); ++l) {
       scene_.lights[l].position = glm::dvec3(m * glm::dvec4(scene_.lights[l].position, 1));
     }
     return true;
   }
 
-  void material(ObjectDesc& o, const Surface& s) {
-    const PovFinish& f = s.finish;
-    if (s.colour[4] > 0) refuse(o.loc, "transmit");
-    o.finish.ambient = (f.ambient.r + f.ambient.g + f.ambient.b) / 3;
-    o.finish.diffuse = f.diffuse;
-    o.finish.specular = f.specular > 0 ? f.specular : f.phong;
-    o.finish.roughness = f.roughness;
-    o.finish.reflection = f.reflection;
-    o.finish.ior = f.ior;
-    Material& m = o.material;
-    m.pigment = Color(s.colour[0], s.colour[1], s.colour[2]);
-    m.filter = float(s.colour[3]);
-    m.ambient = f.ambient * m.pigment;
-    m.diffuse = float(f.diffuse) * m.pigment;
-    // POV-Ray's highlights are white; `specular` has exponent 1/roughness, `phong` its phong_size.
-    m.specular = Color(float(o.finish.specular));
-    m.exponent = float(f.specular > 0 ? 1 / f.roughness : f.phongSize);
-    m.roughness = float(f.roughness);
-    m.reflection = float(f.reflection);
-    m.ior = float(f.ior);
+  // The object's material, and its texture when its colour varies over it, moved by the transforms `after`.
+  void surface(ObjectDesc& o, const Surface& s, const std::vector<TransformStep>& after) {
+    if (anyColour(s.layers.front().pigment, [](const Rgbft& c) { return c.transmit > 0; })) refuse(o.loc, "transmit");
+    o.material = constantMaterial(s);
+    o.finish = writtenFinish(s);
+    o.texture = s.patterned() ? std::make_shared<const Texture>(bounded(makeTexture(s, after))) : nullptr;
+  }
+
+  // Textures made at a deeper level (a child's, or a declared object's) moved with this level's transforms:
+  // `undo` takes this level's world back to the one they were made in.
+  static void moveTextures(ObjectDesc& o, const glm::dmat4& undo) {
+    if (o.texture) {
+      auto t = std::make_shared<Texture>(*o.texture);
+      t->fromWorld = t->fromWorld * undo;
+      o.texture = t;
+    }
+    if (auto* csg = std::get_if<CsgDesc>(&o.shape)) {
+      for (ObjectDesc& child : csg->children) moveTextures(child, undo);
+    }
   }
 
   // POV-Ray's camera: defaults, then angle sets the direction's length, look_at turns direction, right and up
@@ -483,8 +303,7 @@ class Builder {
     size_t i = 0;
     if (i < n.items.size() && n.items[i].kind == Item::Kind::Value) l.position = vec3(n.items[i++].value);
     if (i < n.items.size() && n.items[i].kind == Item::Kind::Value) {
-      const auto c = colourOf(n.items[i++].value);
-      l.color = Color(c[0], c[1], c[2]);
+      l.color = colourOf(n.items[i++].value).rgb;
     }
     std::vector<TransformStep> steps;
     for (; i < n.items.size(); ++i) {
@@ -513,9 +332,10 @@ class Builder {
         if (w == "max_trace_level" && v && v->type == Value::Type::Float) {
           scene_.conventions.maxDepth = int(std::max(1.0, v->v[0]));
         } else if (w == "ambient_light" && v && v->numeric()) {
-          const auto c = colourOf(*v);
-          ambientLight_ = Color(c[0], c[1], c[2]);
-        } else if (w == "assumed_gamma" || w == "adc_bailout" || w == "number_of_waves" || w == "noise_generator" ||
+          ambientLight_ = colourOf(*v).rgb;
+        } else if (w == "assumed_gamma" && v && v->type == Value::Type::Float) {
+          assumedGamma_ = v->v[0];
+        } else if (w == "adc_bailout" || w == "number_of_waves" || w == "noise_generator" ||
                    w == "irid_wavelength" || w == "max_intersections" || w == "hf_gray_16") {
         } else {
           refuse(it.loc, w);
@@ -528,16 +348,22 @@ class Builder {
 
  public:
   Color ambientLight_{1};
+  std::optional<double> assumedGamma_;
 
  private:
   SceneDesc& scene_;
   Surface default_;
-  std::optional<Unsupported> unsupported_;
+  Refusals refusals_;
 };
 
 // global_settings' ambient_light scales every ambient term, a CSG group's parts' too.
 void scaleAmbient(ObjectDesc& o, const Color& light) {
   o.material.ambient *= light;
+  if (o.texture) {
+    Texture t = *o.texture;
+    for (TextureLayer& layer : t.layers) layer.finish.ambient *= light;
+    o.texture = std::make_shared<const Texture>(bounded(std::move(t)));
+  }
   if (auto* csg = std::get_if<CsgDesc>(&o.shape)) {
     for (ObjectDesc& child : csg->children) scaleAmbient(child, light);
   }
@@ -568,6 +394,11 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   interpreter.run(path, text, [&](const std::shared_ptr<const Node>& n) { builder.statement(*n); },
                   [&](const std::shared_ptr<const Node>& n) { builder.defaults(*n); });
   builder.finish();
+  // POV-Ray 3.7 works in linear light and writes sRGB when assumed_gamma is 1, which is its default from
+  // #version 3.7 on; an older scene, or another gamma (mostly 2.2), has its colours written as they are
+  // (docs/povray-language.md, "Gamma").
+  const double gamma = builder.assumedGamma_.value_or(interpreter.version() >= 3.7 ? 1.0 : 0.0);
+  if (gamma == 1.0) scene.conventions.toByte = Conventions::ToByte::Srgb;
   for (ObjectDesc& o : scene.objects) scaleAmbient(o, builder.ambientLight_);
   return scene;
 }

@@ -1,0 +1,66 @@
+// The surface blocks of a POV-Ray object (pigment, finish, texture, material, interior) read into a Surface,
+// and the Material or Texture shading reads made of one. Part of the scene builder (scene_builder.cpp).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "raytrace/geometry/transform.hpp"
+#include "raytrace/parse/povray/value.hpp"
+#include "raytrace/surface/texture.hpp"
+
+namespace rt::povray {
+
+// The first thing met that POV-Ray has and raytrace cannot draw yet; reading goes on, so that a real mistake
+// later in the file is still reported as one.
+struct Refusals {
+  struct Unsupported {
+    SourceLoc loc;
+    std::string what;
+  };
+  std::optional<Unsupported> first;
+  void refuse(const SourceLoc& loc, std::string_view what) {
+    if (!first) first = Unsupported{loc, std::string(what)};
+  }
+  void refuse(const Item& it, std::string_view otherwise);  // names the item's keyword, or `otherwise`
+};
+
+glm::dvec3 vec3(const Value& v);
+Rgbft colourOf(const Value& v);
+// The value after n.items[i], if it is one (i moves onto it).
+const Value* valueAfter(const Node& n, size_t& i);
+// translate, rotate, scale and transform items as steps; false for any other item.
+bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, Refusals& refusals);
+
+// A finish with POV-Ray 3.7's defaults.
+struct PovFinish {
+  Color ambient{0.1f};
+  double diffuse = 0.6, phong = 0, phongSize = 40, specular = 0, roughness = 0.05, reflection = 0;
+};
+
+struct SurfaceLayer {
+  Pigment pigment;                       // POV-Ray's default pigment is black
+  std::vector<TransformStep> steps;      // the pigment's and texture's own transforms, in order
+  PovFinish finish;
+};
+
+struct Surface {
+  std::vector<SurfaceLayer> layers{1};  // the bottom layer first
+  double ior = 1;
+  bool patterned() const;  // whether some layer's colour varies, or there are layers: a Texture is needed
+};
+
+// pigment, finish, texture, material or interior into `s`; anything else is refused.
+void readSurfaceItem(const Node& n, Surface& s, Refusals& refusals);
+
+// The constant material of the surface's top layer; its ambient is not yet scaled by ambient_light.
+Material constantMaterial(const Surface& s);
+// The finish as written, for sceneinfo.
+Finish writtenFinish(const Surface& s);
+// The surface as a texture whose texture space is the world space of an object moved by `after`.
+Texture makeTexture(const Surface& s, const std::vector<TransformStep>& after);
+
+}  // namespace rt::povray

@@ -1,0 +1,39 @@
+// A pattern: a number at each point of texture space, which a colour map or a list of pigments turns into a
+// colour (surface/pigment.hpp). One kind a file in src/surface/patterns/, one row in patternKinds().
+#pragma once
+
+#include <memory>
+#include <string_view>
+
+#include "raytrace/geometry/math.hpp"
+
+namespace rt {
+
+class Pattern {
+ public:
+  virtual ~Pattern() = default;
+  // The pattern's value at `p`: in [0, 1] for a continuous pattern, which a wave and a map then read; the
+  // index of the entry for a block pattern (blocks() > 0).
+  virtual double value(const glm::dvec3& p) const = 0;
+  // How many pigments a block pattern chooses among (checker 2, hexagon 3); 0 for a continuous one.
+  virtual int blocks() const { return 0; }
+  // A block pattern's colour for block i when the file gives none (as r, g, b).
+  virtual Color defaultBlock(int) const { return Color(0); }
+};
+
+// What a pattern keyword may be followed by: `gradient <1, 0, 0>`.
+struct PatternArgs {
+  glm::dvec3 vector{0};
+  bool hasVector = false;
+};
+
+struct PatternKind {
+  std::string_view name;
+  bool needsVector;
+  std::unique_ptr<Pattern> (*make)(const PatternArgs&);
+};
+
+// The pattern kinds raytrace draws; nothing for any other name.
+const PatternKind* patternKind(std::string_view name);
+
+}  // namespace rt

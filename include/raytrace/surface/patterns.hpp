@@ -1,0 +1,19 @@
+// The makers of the pattern kinds, one file each in src/surface/patterns/, listed in patternKind().
+#pragma once
+
+#include <memory>
+
+#include "raytrace/surface/pattern.hpp"
+
+namespace rt {
+
+std::unique_ptr<Pattern> makeBoxed(const PatternArgs&);
+std::unique_ptr<Pattern> makeChecker(const PatternArgs&);
+std::unique_ptr<Pattern> makeCylindrical(const PatternArgs&);
+std::unique_ptr<Pattern> makeGradient(const PatternArgs&);
+std::unique_ptr<Pattern> makeOnion(const PatternArgs&);
+std::unique_ptr<Pattern> makePlanar(const PatternArgs&);
+std::unique_ptr<Pattern> makeRadial(const PatternArgs&);
+std::unique_ptr<Pattern> makeSpherical(const PatternArgs&);
+
+}  // namespace rt

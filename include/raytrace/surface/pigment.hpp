@@ -1,0 +1,56 @@
+// A pigment: a solid colour, or a pattern whose value picks and blends colours or other pigments. Colours
+// carry POV-Ray's filter and transmit channels.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "raytrace/geometry/math.hpp"
+#include "raytrace/surface/pattern.hpp"
+
+namespace rt {
+
+struct Rgbft {
+  Color rgb{0};
+  float filter = 0, transmit = 0;
+};
+Rgbft mix(const Rgbft& a, const Rgbft& b, float t);  // a at t = 0, b at t = 1
+
+struct Pigment;
+
+// `[value pigment]` of a color_map or pigment_map, in increasing values.
+struct MapEntry {
+  double value;
+  std::shared_ptr<const Pigment> pigment;
+};
+
+// How a continuous pattern's value is shaped before the map reads it (POV-Ray's wave modifiers).
+enum class Wave { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
+
+struct Pigment {
+  Rgbft solid;                              // the colour when there is no pattern
+  std::shared_ptr<const Pattern> pattern;
+  std::vector<MapEntry> map;                // for a continuous pattern
+  std::vector<std::shared_ptr<const Pigment>> list;  // for a block pattern, one per block
+  // Texture space to the pattern's own (the inverse of the pigment's transforms); a map's or list's pigments
+  // start from the pattern's space, so that the pigment's transforms move them too.
+  glm::dmat4 fromTexture{1};
+  double frequency = 1, phase = 0, exponent = 1;
+  Wave wave = Wave::Ramp;
+
+  Rgbft at(const glm::dvec3& p) const;  // p in texture space
+};
+
+// Whether some colour the pigment can give (its solid colour, or any of its map's or list's) satisfies `pred`.
+template <class F> bool anyColour(const Pigment& p, const F& pred) {
+  if ((!p.pattern || (p.map.empty() && p.list.empty())) && pred(p.solid)) return true;
+  for (const MapEntry& e : p.map) {
+    if (anyColour(*e.pigment, pred)) return true;
+  }
+  for (const auto& q : p.list) {
+    if (anyColour(*q, pred)) return true;
+  }
+  return false;
+}
+
+}  // namespace rt

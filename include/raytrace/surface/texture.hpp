@@ -1,0 +1,42 @@
+// A texture as shading reads it at a hit: layers of pigment and finish, evaluated where the ray hits
+// (docs/povray-language.md, "Textures"). An object without one keeps its constant Material.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "raytrace/surface/material.hpp"
+#include "raytrace/surface/pigment.hpp"
+
+namespace rt {
+
+// A finish's terms that scale the pigment's colour.
+struct FinishTerms {
+  Color ambient{0};  // POV-Ray's ambient times global_settings' ambient_light
+  float diffuse = 0;
+  Color specular{0};
+  float exponent = 0, roughness = 1, reflection = 0, ior = 1;
+};
+
+struct TextureLayer {
+  std::shared_ptr<const Pigment> pigment;
+  FinishTerms finish;
+};
+
+struct Texture {
+  std::vector<TextureLayer> layers;  // the bottom one first, as written; each one above shows through its filter
+  glm::dmat4 fromWorld{1};           // world space to texture space
+  Material bound;                    // each term's largest value anywhere (bounded()), for the tracer's cut-off
+
+  // What shading reads at a world point of the surface.
+  Material at(const glm::dvec3& point) const;
+};
+
+// The texture with `bound` filled in: each term's largest over every colour its pigments can give. A blend
+// or a layer mixes colours with weights summing to at most 1, so the largest of the colours bounds it.
+Texture bounded(Texture t);
+
+// A layer's material at a colour: ka·C, kd·C, and the terms that do not depend on the colour.
+Material layerMaterial(const FinishTerms& f, const Rgbft& c);
+
+}  // namespace rt

@@ -1,0 +1,339 @@
+#include "raytrace/parse/povray/surface_reader.hpp"
+
+#include <algorithm>
+
+namespace rt::povray {
+
+void Refusals::refuse(const Item& it, std::string_view otherwise) {
+  refuse(it.loc, it.kind == Item::Kind::Keyword ? it.word : it.kind == Item::Kind::Node ? it.node->keyword : otherwise);
+}
+
+glm::dvec3 vec3(const Value& v) {
+  if (v.type == Value::Type::Float) return glm::dvec3(v.v[0]);
+  return {v.v[0], v.size > 1 ? v.v[1] : 0, v.size > 2 ? v.v[2] : 0};
+}
+
+Rgbft colourOf(const Value& v) {
+  if (v.type == Value::Type::Float) return {Color(float(v.v[0])), 0, 0};
+  double c[5] = {};
+  for (int i = 0; i < v.size && i < 5; ++i) c[i] = v.v[size_t(i)];
+  return {Color(float(c[0]), float(c[1]), float(c[2])), float(c[3]), float(c[4])};
+}
+
+const Value* valueAfter(const Node& n, size_t& i) {
+  if (i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value) return &n.items[++i].value;
+  return nullptr;
+}
+
+namespace {
+
+void readTransformBlock(const Node& n, std::vector<TransformStep>& steps, Refusals& refusals) {
+  for (size_t i = 0; i < n.items.size(); ++i) {
+    if (!readTransform(n, i, steps, refusals)) refusals.refuse(n.items[i], "transform");
+  }
+}
+
+}  // namespace
+
+bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, Refusals& refusals) {
+  const Item& it = n.items[i];
+  if (it.kind == Item::Kind::Node && it.node->keyword == "transform") {
+    readTransformBlock(*it.node, steps, refusals);
+    return true;
+  }
+  if (it.kind != Item::Kind::Keyword) return false;
+  const std::string_view w = it.word;
+  if (w == "transform") {
+    if (i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Node) readTransformBlock(*n.items[++i].node, steps, refusals);
+    return true;
+  }
+  if (w != "translate" && w != "rotate" && w != "scale" && w != "matrix") return false;
+  const Value* v = valueAfter(n, i);
+  if (w == "matrix" || !v) {
+    refusals.refuse(it.loc, w);
+    return true;
+  }
+  glm::dvec3 a = vec3(*v);
+  if (w == "translate") {
+    steps.push_back({TransformStep::Kind::Translate, a});
+  } else if (w == "scale") {
+    for (int k = 0; k < 3; ++k) {
+      if (a[k] == 0) a[k] = 1;  // as POV-Ray does, with a warning
+    }
+    steps.push_back({TransformStep::Kind::Scale, a});
+  } else {
+    // POV-Ray turns about x, then y, then z.
+    if (a.x != 0) steps.push_back({TransformStep::Kind::Rotate, {a.x, 0, 0}});
+    if (a.y != 0) steps.push_back({TransformStep::Kind::Rotate, {0, a.y, 0}});
+    if (a.z != 0) steps.push_back({TransformStep::Kind::Rotate, {0, 0, a.z}});
+  }
+  return true;
+}
+
+namespace {
+
+std::shared_ptr<const Pigment> solidPigment(const Rgbft& c) {
+  auto p = std::make_shared<Pigment>();
+  p->solid = c;
+  return p;
+}
+
+void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals);
+
+// A pigment of a map or a block pattern's list: its transforms are its own, inside the pattern's space.
+std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals) {
+  auto p = std::make_shared<Pigment>();
+  std::vector<TransformStep> steps;
+  readPigment(n, *p, steps, refusals);
+  p->fromTexture = glm::inverse(composeTransforms<double>(steps));
+  return p;
+}
+
+// color_map or pigment_map entries: `[value colour]`, `[value pigment { … }]`, or the old `[v0 v1 colour0 colour1]`.
+void readMap(const Node& n, std::vector<MapEntry>& map, Refusals& refusals) {
+  for (const Item& it : n.items) {
+    if (it.kind == Item::Kind::Node && (it.node->keyword == "color_map" || it.node->keyword == "colour_map" ||
+                                        it.node->keyword == "pigment_map")) {
+      readMap(*it.node, map, refusals);  // a map identifier
+      continue;
+    }
+    if (it.kind != Item::Kind::Node || it.node->keyword != "[") {
+      refusals.refuse(it, "a map entry");
+      continue;
+    }
+    std::vector<double> values;
+    std::vector<std::shared_ptr<const Pigment>> pigments;
+    for (const Item& e : it.node->items) {
+      if (e.kind == Item::Kind::Value && e.value.type == Value::Type::Float && pigments.empty() && values.size() < 2) {
+        values.push_back(e.value.v[0]);
+      } else if (e.kind == Item::Kind::Value && e.value.numeric()) {
+        pigments.push_back(solidPigment(colourOf(e.value)));
+      } else if (e.kind == Item::Kind::Node && e.node->keyword == "pigment") {
+        pigments.push_back(nestedPigment(*e.node, refusals));
+      } else {
+        refusals.refuse(e, "a map entry");
+      }
+    }
+    // `[0.5 1]` is a value and a grey.
+    if (pigments.empty() && values.size() == 2) pigments.push_back(solidPigment({Color(float(values[1])), 0, 0}));
+    if (values.empty() || pigments.empty()) continue;
+    if (values.size() == 2 && pigments.size() == 2) {
+      map.push_back({values[0], pigments[0]});
+      map.push_back({values[1], pigments[1]});
+    } else {
+      map.push_back({values[0], pigments[0]});
+    }
+  }
+  // POV-Ray reads the entries in order and expects them sorted; a stable sort keeps equal values' order.
+  std::stable_sort(map.begin(), map.end(), [](const MapEntry& a, const MapEntry& b) { return a.value < b.value; });
+}
+
+void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals) {
+  for (size_t i = 0; i < n.items.size(); ++i) {
+    const Item& it = n.items[i];
+    const bool blocks = p.pattern && p.pattern->blocks() > 0;
+    if (it.kind == Item::Kind::Value && it.value.numeric()) {
+      if (blocks && p.list.size() < size_t(p.pattern->blocks())) {
+        p.list.push_back(solidPigment(colourOf(it.value)));
+      } else {
+        p = Pigment{};
+        p.solid = colourOf(it.value);
+      }
+      continue;
+    }
+    if (readTransform(n, i, steps, refusals)) continue;
+    if (it.kind == Item::Kind::Node) {
+      const std::string_view k = it.node->keyword;
+      if (k == "pigment" && blocks && p.list.size() < size_t(p.pattern->blocks())) {
+        p.list.push_back(nestedPigment(*it.node, refusals));
+      } else if (k == "pigment") {
+        readPigment(*it.node, p, steps, refusals);  // an identifier, modified by what follows
+      } else if (k == "color_map" || k == "colour_map" || k == "pigment_map") {
+        p.map.clear();
+        readMap(*it.node, p.map, refusals);
+      } else {
+        refusals.refuse(it, "pigment");
+      }
+      continue;
+    }
+    if (it.kind != Item::Kind::Keyword) {
+      refusals.refuse(it, "a value here");
+      continue;
+    }
+    const std::string_view w = it.word;
+    if (const PatternKind* kind = patternKind(w)) {
+      PatternArgs args;
+      if (kind->needsVector) {
+        const Value* v = valueAfter(n, i);
+        if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(w) + "' needs a vector");
+        args.vector = vec3(*v);
+        args.hasVector = true;
+      }
+      const Rgbft keep = p.solid;
+      p = Pigment{};
+      p.solid = keep;
+      p.pattern = kind->make(args);
+      continue;
+    }
+    const Value* v = nullptr;
+    if (w == "quick_color" || w == "quick_colour") {
+      valueAfter(n, i);
+    } else if (w == "frequency" && (v = valueAfter(n, i))) {
+      p.frequency = v->v[0];
+    } else if (w == "phase" && (v = valueAfter(n, i))) {
+      p.phase = v->v[0];
+    } else if (w == "ramp_wave") {
+      p.wave = Wave::Ramp;
+    } else if (w == "triangle_wave") {
+      p.wave = Wave::Triangle;
+    } else if (w == "sine_wave") {
+      p.wave = Wave::Sine;
+    } else if (w == "scallop_wave") {
+      p.wave = Wave::Scallop;
+    } else if (w == "cubic_wave") {
+      p.wave = Wave::Cubic;
+    } else if (w == "poly_wave") {
+      p.wave = Wave::Poly;
+      if (i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value) p.exponent = valueAfter(n, i)->v[0];
+    } else {
+      refusals.refuse(it.loc, w);
+    }
+  }
+  if (p.pattern && p.pattern->blocks() == 0 && p.map.empty()) refusals.refuse(n.loc, "a pattern's default color_map");
+  while (p.pattern && p.list.size() < size_t(p.pattern->blocks())) {
+    p.list.push_back(solidPigment({p.pattern->defaultBlock(int(p.list.size())), 0, 0}));
+  }
+}
+
+void readFinish(const Node& n, PovFinish& f, Refusals& refusals) {
+  for (size_t i = 0; i < n.items.size(); ++i) {
+    const Item& it = n.items[i];
+    if (it.kind == Item::Kind::Node && it.node->keyword == "finish") {
+      readFinish(*it.node, f, refusals);
+      continue;
+    }
+    if (it.kind == Item::Kind::Node && it.node->keyword == "reflection") {
+      for (const Item& r : it.node->items) {
+        if (r.kind == Item::Kind::Value && r.value.numeric()) f.reflection = colourOf(r.value).rgb.r;
+        else refusals.refuse(r, "reflection");
+      }
+      continue;
+    }
+    if (it.kind != Item::Kind::Keyword) {
+      refusals.refuse(it, "finish");
+      continue;
+    }
+    const std::string_view w = it.word;
+    if (w == "conserve_energy") continue;
+    const Value* v = valueAfter(n, i);
+    if (!v || !v->numeric()) {
+      refusals.refuse(it.loc, w);
+      continue;
+    }
+    const double x = v->v[0];
+    if (w == "ambient") {
+      f.ambient = colourOf(*v).rgb;
+    } else if (w == "diffuse") {
+      f.diffuse = x;
+    } else if (w == "phong") {
+      f.phong = x;
+    } else if (w == "phong_size") {
+      f.phongSize = x;
+    } else if (w == "specular") {
+      f.specular = x;
+    } else if (w == "roughness") {
+      f.roughness = x;
+    } else if (w == "reflection") {
+      f.reflection = x;
+    } else if (w == "brilliance" && x == 1) {
+    } else {
+      refusals.refuse(it.loc, w);
+    }
+  }
+}
+
+FinishTerms finishTerms(const PovFinish& f, double ior) {
+  FinishTerms t;
+  t.ambient = f.ambient;
+  t.diffuse = float(f.diffuse);
+  // POV-Ray's highlights are white; `specular` has exponent 1/roughness, `phong` its phong_size.
+  t.specular = Color(float(f.specular > 0 ? f.specular : f.phong));
+  t.exponent = float(f.specular > 0 ? 1 / f.roughness : f.phongSize);
+  t.roughness = float(f.roughness);
+  t.reflection = float(f.reflection);
+  t.ior = float(ior);
+  return t;
+}
+
+}  // namespace
+
+bool Surface::patterned() const { return layers.size() > 1 || layers[0].pigment.pattern; }
+
+void readSurfaceItem(const Node& n, Surface& s, Refusals& refusals) {
+  const std::string_view k = n.keyword;
+  SurfaceLayer& top = s.layers.back();
+  if (k == "pigment") {
+    readPigment(n, top.pigment, top.steps, refusals);
+  } else if (k == "finish") {
+    readFinish(n, top.finish, refusals);
+  } else if (k == "texture" || k == "material") {
+    for (size_t i = 0; i < n.items.size(); ++i) {
+      const Item& it = n.items[i];
+      if (it.kind == Item::Kind::Node) {
+        readSurfaceItem(*it.node, s, refusals);
+      } else if (!readTransform(n, i, s.layers.back().steps, refusals)) {
+        refusals.refuse(it, k);
+      }
+    }
+  } else if (k == "layered texture") {
+    // Each layer starts as POV-Ray's default texture, on top of the ones before.
+    for (size_t i = 0; i < n.items.size(); ++i) {
+      if (i > 0) s.layers.emplace_back();
+      readSurfaceItem(*n.items[i].node, s, refusals);
+    }
+  } else if (k == "interior") {
+    for (size_t i = 0; i < n.items.size(); ++i) {
+      const Item& it = n.items[i];
+      const Value* v = it.kind == Item::Kind::Keyword && it.word == "ior" ? valueAfter(n, i) : nullptr;
+      if (v && v->type == Value::Type::Float) {
+        s.ior = v->v[0];
+      } else if (it.kind == Item::Kind::Node && it.node->keyword == "interior") {
+        readSurfaceItem(*it.node, s, refusals);
+      } else {
+        refusals.refuse(it, "interior");
+      }
+    }
+  } else {
+    refusals.refuse(n.loc, k);
+  }
+}
+
+Material constantMaterial(const Surface& s) {
+  const SurfaceLayer& top = s.layers.back();
+  return layerMaterial(finishTerms(top.finish, s.ior), top.pigment.solid);
+}
+
+Finish writtenFinish(const Surface& s) {
+  const PovFinish& f = s.layers.back().finish;
+  Finish w;
+  w.ambient = (f.ambient.r + f.ambient.g + f.ambient.b) / 3;
+  w.diffuse = f.diffuse;
+  w.specular = f.specular > 0 ? f.specular : f.phong;
+  w.roughness = f.roughness;
+  w.reflection = f.reflection;
+  w.ior = s.ior;
+  return w;
+}
+
+Texture makeTexture(const Surface& s, const std::vector<TransformStep>& after) {
+  Texture t;
+  for (const SurfaceLayer& layer : s.layers) {
+    auto p = std::make_shared<Pigment>(layer.pigment);
+    p->fromTexture = glm::inverse(composeTransforms<double>(layer.steps));
+    t.layers.push_back({p, finishTerms(layer.finish, s.ior)});
+  }
+  t.fromWorld = glm::inverse(composeTransforms<double>(after));
+  return t;
+}
+
+}  // namespace rt::povray

@@ -1,0 +1,54 @@
+#include "raytrace/surface/pigment.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rt {
+
+Rgbft mix(const Rgbft& a, const Rgbft& b, float t) {
+  return {a.rgb + (b.rgb - a.rgb) * t, a.filter + (b.filter - a.filter) * t, a.transmit + (b.transmit - a.transmit) * t};
+}
+
+namespace {
+
+// The wave shapes of the POV-Ray 3.7 manual ("Waveform"), on a value already wrapped into [0, 1).
+double shaped(double v, Wave wave, double exponent) {
+  constexpr double kPi = 3.14159265358979323846;
+  switch (wave) {
+    case Wave::Ramp: return v;
+    case Wave::Triangle: return v < 0.5 ? 2 * v : 2 - 2 * v;
+    case Wave::Sine: return 0.5 + 0.5 * std::sin(2 * kPi * v);
+    case Wave::Scallop: return std::abs(std::sin(kPi * v));
+    case Wave::Cubic: return v * v * (3 - 2 * v);
+    case Wave::Poly: return std::pow(v, exponent);
+  }
+  return v;
+}
+
+}  // namespace
+
+Rgbft Pigment::at(const glm::dvec3& p) const {
+  if (!pattern) return solid;
+  const glm::dvec3 q = glm::dvec3(fromTexture * glm::dvec4(p, 1));
+  const double raw = pattern->value(q);
+  if (pattern->blocks() > 0) {
+    const size_t i = std::min(size_t(raw), list.size() - 1);
+    return list[i]->at(q);
+  }
+  // frequency and phase, then the value wrapped to [0, 1), keeping 1 itself where the pattern reaches it.
+  double v = raw * frequency + phase;
+  if (v < 0 || v > 1) v -= std::floor(v);
+  v = shaped(v, wave, exponent);
+  if (map.empty()) return solid;
+  if (v <= map.front().value) return map.front().pigment->at(q);
+  if (v >= map.back().value) return map.back().pigment->at(q);
+  const auto upper = std::upper_bound(map.begin(), map.end(), v, [](double x, const MapEntry& e) { return x < e.value; });
+  const MapEntry& lo = *(upper - 1);
+  const MapEntry& hi = *upper;
+  const double span = hi.value - lo.value;
+  const Rgbft a = lo.pigment->at(q);
+  if (span <= 0) return a;
+  return mix(a, hi.pigment->at(q), float((v - lo.value) / span));
+}
+
+}  // namespace rt
