@@ -481,6 +481,8 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   io.imageHeight = options.imageHeight;
   io.debug = options.debugOutput ? &std::cerr : nullptr;
   io.maxTokens = options.maxTokens;
+  io.writeFolder = options.writeFolder;
+  io.writeAnywhere = options.writeAnywhere;
   Interpreter interpreter(io);
   for (const std::string& d : options.declares) {
     const size_t eq = d.find('=');
@@ -491,6 +493,7 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
                   [&](const std::shared_ptr<const Node>& n) { builder.defaults(*n); });
   builder.finish();
   for (ObjectDesc& o : scene.objects) o.material.ambient *= builder.ambientLight_;
+  scene.dataFiles = interpreter.takeDataFiles();
   return scene;
 }
 
