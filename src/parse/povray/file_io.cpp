@@ -37,9 +37,9 @@ constexpr BinaryWord kBinaryWords[] = {{"uint8", 1, false, false},    {"sint8", 
 
 // x rounded to the nearest integer the word holds, in its bytes.
 std::string binaryWord(double x, const BinaryWord& w) {
-  const double bits = 8.0 * w.bytes;
-  const double low = w.sign ? -std::pow(2.0, bits - 1) : 0, high = (w.sign ? std::pow(2.0, bits - 1) : std::pow(2.0, bits)) - 1;
-  const auto n = static_cast<std::uint32_t>(static_cast<std::int64_t>(std::fmin(std::fmax(std::round(x), low), high)));
+  const double range = std::pow(2.0, 8.0 * w.bytes);
+  const double low = w.sign ? -range / 2 : 0, high = (w.sign ? range / 2 : range) - 1;
+  const auto n = std::uint32_t(std::int64_t(std::fmin(std::fmax(std::round(x), low), high)));
   std::string out;
   for (int i = 0; i < w.bytes; ++i) out += char((n >> (8 * (w.big ? w.bytes - 1 - i : i))) & 0xFF);
   return out;
@@ -196,8 +196,8 @@ Value Interpreter::dataValue(OpenFile& file, const SourceLoc& at) {
   const auto token = [&]() -> const Token& { return file.tokens.tokens[file.pos]; };
   const auto expected = [&](const std::string& what) {
     const Token& t = token();
-    failInData(file.tokens.loc(t), "expected " + what + ", found " +
-                                       (t.kind == Token::Kind::End ? std::string("the end of the file") : quote(t.text)), at);
+    const std::string found = t.kind == Token::Kind::End ? "the end of the file" : quote(t.text);
+    failInData(file.tokens.loc(t), "expected " + what + ", found " + found, at);
   };
   const auto signedNumber = [&](const std::string& what) {
     double sign = 1;
@@ -260,8 +260,8 @@ void Interpreter::writeDirective(const SourceLoc& at) {
       }
       if (v.type == Value::Type::Vector && !word) text = "<" + text + "> ";
     } else {
-      fail(itemAt, std::string("#write writes ") + (word ? "floats and vectors as binary words" : "floats, vectors and strings") +
-                       ", found a " + typeName(v));
+      const char* what = word ? "floats and vectors as binary words" : "floats, vectors and strings";
+      fail(itemAt, std::string("#write writes ") + what + ", found a " + typeName(v));
     }
     if (bytesWritten_ + text.size() > kMaxSceneWriteBytes) {
       fail(at, "#write writes more than the " + std::to_string(kMaxSceneWriteBytes >> 20) + " MiB a scene may write");
