@@ -254,8 +254,8 @@ const std::vector<Option> kOptions = {
        w.output = v;
      }},
     {"--allow-write-anywhere", nullptr, nullptr, Form::Switch, Scope::Any, Section::Image,
-     "let a .cli scene's 'write' leave its folder (an absolute path, '..', a link)\n"
-     "(by default it may only write into the current folder and below)",
+     "let a .cli 'write' or a POV-Ray '#fopen' leave the folder of -o (or the\n"
+     "current one): an absolute path, '..', a symbolic link on the way",
      [](Words& w, const std::string&, const std::string&) { w.writeAnywhere = true; }},
     {"--tile", nullptr, "I/N", Form::Either, Scope::Image, Section::Image,
      "render only the I-th of N bands of rows (0 <= I < N), written to\n"

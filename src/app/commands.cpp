@@ -267,6 +267,10 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (command.numbers == 2) startHelpers(inv.options.threads);
   Stopwatch watch;
   LoadOptions load = words.load;
+  // A POV-Ray scene's #write files go beside the image (and only the image commands write them).
+  const size_t slash = inv.output.rfind('/');
+  if (slash != std::string::npos) load.writeFolder = inv.output.substr(0, slash == 0 ? 1 : slash);
+  load.writeAnywhere = words.writeAnywhere;
   if (inv.width > 0 && inv.height > 0) {
     load.width = inv.width;
     load.height = inv.height;

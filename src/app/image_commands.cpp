@@ -1,8 +1,5 @@
 // The commands that write images: raycast (Program 1) and render, whole or one tile of the picture.
-#include <algorithm>
-#include <climits>
 #include <optional>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -17,6 +14,7 @@
 #include "raytrace/image/exr_file.hpp"
 #include "raytrace/image/image.hpp"
 #include "raytrace/image/image_file.hpp"
+#include "raytrace/image/output_file.hpp"
 #include "raytrace/image/png_file.hpp"
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/message.hpp"
@@ -33,31 +31,6 @@ constexpr const char* kDefaultOutput = "output.png";  // the course graders look
 bool isFolder(const std::string& path) {
   struct stat st {};
   return stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
-}
-
-// Whether a path a scene file names stays in the folder it is rendered into: it is relative and never goes
-// up. A scene from someone else must not create or replace files elsewhere unless the user says so.
-bool staysInFolder(const std::string& path) {
-  if (path.empty() || path[0] == '/') return false;
-  for (size_t start = 0; start <= path.size();) {
-    const size_t end = std::min(path.find('/', start), path.size());
-    if (path.compare(start, end - start, "..") == 0) return false;
-    start = end + 1;
-  }
-  return true;
-}
-
-// Whether the folder a relative `path` names inside `folder` is, through a symbolic link on the way, somewhere
-// else. A folder that does not exist is not: writing there fails on its own.
-bool linksOut(const std::string& folder, const std::string& path) {
-  const size_t slash = path.rfind('/');
-  char base[PATH_MAX], parent[PATH_MAX];
-  if (slash == std::string::npos || !realpath(folder.c_str(), base) ||
-      !realpath((folder + "/" + path.substr(0, slash)).c_str(), parent)) {
-    return false;
-  }
-  const std::string inside = std::string(base) == "/" ? "/" : std::string(base) + "/";
-  return std::string(parent) != base && std::string(parent).compare(0, inside.size(), inside) != 0;
 }
 
 // One image a command makes: the file it goes to and the .cli `write` that asks for it (none: the whole scene).
@@ -119,6 +92,37 @@ void checkTarget(const Invocation& inv, const std::string& path) {
   }
 }
 
+// Throws, located at its #fopen, the error a file a POV-Ray scene wrote would meet (a folder missing or not
+// writable), or if it would replace the scene file or the image.
+void checkDataFiles(const Invocation& inv, const std::string& image) {
+  for (const DataFileDesc& d : inv.scene.dataFiles) {
+    const bool scene = sameFile(d.path, inv.scenePath);
+    if (scene || sameFile(d.path, image) || d.path == image) {
+      throw ParseError(d.loc, std::string("#fopen would replace ") + (scene ? "the scene file " : "the image ") +
+                                  quote(d.path, kMaxQuotedPath));
+    }
+    try {
+      checkWritableFolder(d.path);
+    } catch (const Error& e) {
+      throw ParseError(d.loc, e.what());
+    }
+  }
+}
+
+// The files a POV-Ray scene wrote, put on disk once its image is, each whole or not at all (output_file.hpp):
+// a run that fails leaves none. The diagnostic commands never write them.
+void writeDataFiles(const Invocation& inv) {
+  for (const DataFileDesc& d : inv.scene.dataFiles) {
+    try {
+      OutputFile file(d.path);
+      file.write(d.text.data(), d.text.size());
+      file.commit();
+    } catch (const Error& e) {
+      throw ParseError(d.loc, e.what());
+    }
+  }
+}
+
 // With --resume, whether the tile at `path` is already the one this render makes, so that it is kept; either
 // way the user is told, and why a tile is rendered again.
 bool keptTile(const Invocation& inv, const char* command, const std::string& path) {
@@ -147,6 +151,7 @@ void checkOutput(const Invocation& inv) {
 int raycast(const Invocation& inv, std::ostream&) {
   const Target target = targets(inv, false).front();
   checkTarget(inv, target.path);
+  checkDataFiles(inv, target.path);
   if (keptTile(inv, "raycast", target.path)) return 0;
   const Region region = inv.region.value_or(wholeImage(inv.width, inv.height));
   Image image(region.width(), region.height());
@@ -164,6 +169,7 @@ int raycast(const Invocation& inv, std::ostream&) {
     return 0;
   });
   write(inv, "raycast", std::move(image), target.path, inv.scene.conventions.toByte);
+  writeDataFiles(inv);
   return 0;
 }
 
@@ -177,6 +183,7 @@ int renderImage(const Invocation& inv, std::ostream&) {
   const RenderOptions& options = inv.options;
   const std::vector<Target> all = targets(inv, true);
   if (inv.region && all.size() != 1) throw Error("a tile is of one image, but the scene writes several");
+  for (const Target& t : all) checkDataFiles(inv, t.path);
   int status = 0;
   // Runs `step` for target t. The Error of a scene's own write is reported at the write and the others go on.
   const auto attempt = [&](const Target& t, const auto& step) {
@@ -232,6 +239,7 @@ int renderImage(const Invocation& inv, std::ostream&) {
       else renderTo(inv.scene, t->path);
     });
   }
+  writeDataFiles(inv);
   if (inv.stats) {
     RenderStats stats;
     stats.width = inv.width;

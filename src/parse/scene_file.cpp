@@ -96,6 +96,8 @@ SceneDesc loadScene(const std::string& path, int threads, const LoadOptions& opt
     pov.imageWidth = options.width;
     pov.imageHeight = options.height;
     pov.declares = options.declares;
+    pov.writeFolder = options.writeFolder;
+    pov.writeAnywhere = options.writeAnywhere;
     return povray::parsePovRay(text, path, pov);
   }
   return parsePov(text, path, threads);

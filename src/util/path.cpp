@@ -1,6 +1,9 @@
 #include "raytrace/util/path.hpp"
 
+#include <algorithm>
 #include <cctype>
+#include <climits>
+#include <cstdlib>
 
 #include <sys/stat.h>
 
@@ -17,6 +20,27 @@ std::string extension(const std::string& path) {
 bool sameFile(const std::string& a, const std::string& b) {
   struct stat sa {}, sb {};
   return stat(a.c_str(), &sa) == 0 && stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+bool staysInFolder(const std::string& path) {
+  if (path.empty() || path[0] == '/') return false;
+  for (size_t start = 0; start <= path.size();) {
+    const size_t end = std::min(path.find('/', start), path.size());
+    if (path.compare(start, end - start, "..") == 0) return false;
+    start = end + 1;
+  }
+  return true;
+}
+
+bool linksOut(const std::string& folder, const std::string& path) {
+  const size_t slash = path.rfind('/');
+  char base[PATH_MAX], parent[PATH_MAX];
+  if (slash == std::string::npos || !realpath(folder.c_str(), base) ||
+      !realpath((folder + "/" + path.substr(0, slash)).c_str(), parent)) {
+    return false;
+  }
+  const std::string inside = std::string(base) == "/" ? "/" : std::string(base) + "/";
+  return std::string(parent) != base && std::string(parent).compare(0, inside.size(), inside) != 0;
 }
 
 }  // namespace rt

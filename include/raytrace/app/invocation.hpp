@@ -31,7 +31,7 @@ struct Invocation {
   bool display = false;              // --display: show the picture in a window as it renders
   std::string preview;               // --preview: the file the picture so far goes to, every few seconds
   std::ostream* errors = nullptr;    // where a command reports a failure it carries on after (a .cli write)
-  bool writeAnywhere = false;        // --allow-write-anywhere: a .cli write may leave the current folder
+  bool writeAnywhere = false;        // --allow-write-anywhere: a .cli write or #fopen may leave its folder
   bool resume = false;               // --resume: a tile already at -o, of this very render, is kept
   double loadSeconds = 0;         // the reading of the scene file
 };

@@ -44,6 +44,8 @@ struct LoadOptions {
   std::vector<std::string> libraryPaths;  // -L: folders a POV-Ray scene's #include searches
   int width = 320, height = 240;          // POV-Ray's image_width and image_height
   std::vector<std::string> declares;      // -D name=value: identifiers a POV-Ray scene starts with
+  std::string writeFolder;                // the output image's folder, where a POV-Ray scene's #write files go
+  bool writeAnywhere = false;             // --allow-write-anywhere: they may go anywhere
 };
 
 // The POV language a .pov file is read in.

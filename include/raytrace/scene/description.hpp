@@ -60,6 +60,14 @@ struct WriteDesc {
   Color background{0};
 };
 
+// A text file a POV-Ray scene writes (#fopen … write or append, then #write). It is kept in memory while the scene
+// is parsed, and only the image commands put it on disk, once the scene has parsed without error.
+struct DataFileDesc {
+  std::string path;  // where it goes: the scene's name inside the folder of the output image
+  SourceLoc loc;     // the #fopen that first wrote it
+  std::string text;  // the whole file: for append, what was there before and then what the scene wrote
+};
+
 struct SceneDesc {
   std::string file;
   SceneLanguage language = SceneLanguage::Pov;  // only reports that quote the file's own terms look at it
@@ -70,6 +78,7 @@ struct SceneDesc {
   std::vector<std::string> warnings;  // "file:line:col: warning: …", printed before any output
   // The images the file asks for, in order; empty for POV, whose `render` writes output.png.
   std::vector<WriteDesc> writes;
+  std::vector<DataFileDesc> dataFiles;  // in the order they were first opened
 };
 
 // The scene `write` shows (see WriteDesc), without the writes.

@@ -12,6 +12,10 @@ namespace rt {
 // scene.
 constexpr std::uint64_t kMaxSceneFileBytes = std::uint64_t(1) << 30;
 
+// The most text a POV-Ray scene's #write directives may produce, in all its files together: it is held in memory
+// until the scene has parsed, and a runaway #while loop should stop with a message, not fill the memory.
+constexpr std::uint64_t kMaxSceneWriteBytes = std::uint64_t(256) << 20;
+
 // Memory budgeted per scene object: its description, its renderable copy and its share of the acceleration
 // structure, with room to spare (docs/performance-notes.md, "Memory per object").
 constexpr std::uint64_t kBytesPerObject = 1024;

@@ -203,7 +203,7 @@ std::shared_ptr<const Node> Interpreter::block(std::string_view keyword, const S
     }
     if (item.kind == Item::Kind::Node) {
       node->depth = std::max(node->depth, item.node->depth + 1);
-      if (node->depth > kMaxNesting) {
+      if (size_t(node->depth) > kMaxNesting) {
         fail(item.loc, "objects or blocks nested more than " + std::to_string(kMaxNesting) + " deep");
       }
     }

@@ -23,6 +23,14 @@ bool isFile(const std::string& path) {
 
 }  // namespace
 
+bool readBytes(const std::string& path, std::string& bytes) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  bytes = text.str();
+  return bool(in);
+}
+
 void Interpreter::pushFile(const std::string& path, std::string_view text, const SourceLoc* from) {
   size_t files = 0;
   for (const Frame& f : frames_) files += f.kind == Frame::Kind::File;
@@ -62,10 +70,7 @@ void Interpreter::directive(std::string_view name, const SourceLoc& at) {
   } else if (name == "declare" || name == "local") {
     declareDirective(name == "local");
   } else if (name == "undef") {
-    const std::string_view id = expectWord("an identifier after #undef");
-    for (size_t i = scopes_.size(); i-- > 0;) {
-      if (scopes_[i].symbols.erase(id)) break;
-    }
+    undefine(expectWord("an identifier after #undef"));
   } else if (name == "default") {
     expect("{", "after #default");
     defaults_(block("default", at, "}"));
@@ -137,8 +142,14 @@ void Interpreter::directive(std::string_view name, const SourceLoc& at) {
   } else if (name == "error") {
     const Value text = expression();
     fail(at, text.type == Value::Type::String ? text.s : std::string("#error"));
-  } else if (name == "fopen" || name == "fclose" || name == "read" || name == "write") {
-    fail(at, "'#" + std::string(name) + "' is not supported yet");
+  } else if (name == "fopen") {
+    fopenDirective(at);
+  } else if (name == "fclose") {
+    fcloseDirective();
+  } else if (name == "read") {
+    readDirective(at);
+  } else if (name == "write") {
+    writeDirective(at);
   } else {
     fail(at, "unknown directive '#" + std::string(name) + "'");
   }
@@ -192,27 +203,36 @@ void Interpreter::includeDirective(const SourceLoc& at) {
   const Value name = expression();
   holdFile_ = false;
   if (name.type != Value::Type::String) fail(at, "#include needs a file name, found a " + std::string(typeName(name)));
-  std::string path;
-  if (!name.s.empty() && name.s[0] == '/') {
-    if (isFile(name.s)) path = name.s;
+  // A file the scene wrote earlier is what POV-Ray, which writes at once, would find.
+  if (const DataFileDesc* data = written(name.s)) {
+    texts_.push_back(std::make_unique<std::string>(data->text));
   } else {
-    std::vector<std::string> folders{sceneFolder_};
-    for (const std::string& l : options_.libraryPaths) folders.push_back(l + "/");
-    folders.push_back(options_.standardLibrary + "/");
-    for (const std::string& folder : folders) {
-      if (isFile(folder + name.s)) {
-        path = folder + name.s;
-        break;
-      }
-    }
+    const std::string path = findFile(name.s);
+    if (path.empty()) fail(at, "cannot find the include file " + quote(name.s));
+    texts_.push_back(std::make_unique<std::string>());
+    if (!readBytes(path, *texts_.back())) fail(at, "cannot read the include file " + quote(name.s));
   }
-  if (path.empty()) fail(at, "cannot find the include file " + quote(name.s));
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (!in) fail(at, "cannot read the include file " + quote(name.s));
-  texts_.push_back(std::make_unique<std::string>(bytes.str()));
   pushFile(name.s, *texts_.back(), &at);
+}
+
+// Where #include and #read find a file: as named if absolute, else in the scene's folder, the -L folders and
+// the standard include library, in that order; "" if nowhere.
+std::string Interpreter::findFile(const std::string& name) const {
+  if (!name.empty() && name[0] == '/') return isFile(name) ? name : "";
+  std::vector<std::string> folders{sceneFolder_};
+  for (const std::string& l : options_.libraryPaths) folders.push_back(l + "/");
+  folders.push_back(options_.standardLibrary + "/");
+  for (const std::string& folder : folders) {
+    if (isFile(folder + name)) return folder + name;
+  }
+  return "";
+}
+
+// Removes the innermost identifier of that name, if any.
+void Interpreter::undefine(std::string_view id) {
+  for (size_t i = scopes_.size(); i-- > 0;) {
+    if (scopes_[i].symbols.erase(id)) break;
+  }
 }
 
 void Interpreter::macroDefinition(const SourceLoc& at) {

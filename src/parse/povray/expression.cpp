@@ -27,6 +27,7 @@ const char* typeName(const Value& v) {
     case Value::Type::Node: return "scene item";
     case Value::Type::Function: return "function";
     case Value::Type::Macro: return "macro";
+    case Value::Type::File: return "file";
   }
   return "value";
 }

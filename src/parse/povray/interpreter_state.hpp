@@ -5,6 +5,9 @@
 
 namespace rt::povray {
 
+// Reads a whole file into `bytes`; false if it cannot be read.
+bool readBytes(const std::string& path, std::string& bytes);
+
 struct Interpreter::Slot {
   Value value;
 };
@@ -34,6 +37,16 @@ struct Interpreter::MacroDef : Shared {
 struct Interpreter::FunctionDef : Shared {
   std::vector<std::string_view> params;  // x, y, z when none are written
   TokenFile body;                        // the tokens between the braces, then End
+};
+
+// A file #fopen opened: to read, its text, tokens and the next one's place (all freed when it is closed, so a
+// loop that reopens a file takes no more memory); to write, its index in dataFiles_.
+struct Interpreter::OpenFile : Shared {
+  bool reading = false;
+  std::string text;
+  TokenFile tokens;
+  size_t pos = 0;
+  size_t data = 0;
 };
 
 }  // namespace rt::povray

@@ -385,6 +385,8 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   io.imageHeight = options.imageHeight;
   io.debug = options.debugOutput ? &std::cerr : nullptr;
   io.maxTokens = options.maxTokens;
+  io.writeFolder = options.writeFolder;
+  io.writeAnywhere = options.writeAnywhere;
   Interpreter interpreter(io);
   for (const std::string& d : options.declares) {
     const size_t eq = d.find('=');
@@ -400,6 +402,7 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   const double gamma = builder.assumedGamma_.value_or(interpreter.version() >= 3.7 ? 1.0 : 0.0);
   if (gamma == 1.0) scene.conventions.toByte = Conventions::ToByte::Srgb;
   for (ObjectDesc& o : scene.objects) scaleAmbient(o, builder.ambientLight_);
+  scene.dataFiles = interpreter.takeDataFiles();
   return scene;
 }
 

@@ -16,6 +16,7 @@
 
 #include "raytrace/parse/povray/lexer.hpp"
 #include "raytrace/parse/povray/value.hpp"
+#include "raytrace/scene/description.hpp"
 
 namespace rt::povray {
 
@@ -25,6 +26,8 @@ struct InterpreterOptions {
   int imageWidth = 320, imageHeight = 240;  // image_width, image_height
   std::ostream* debug = nullptr;            // #debug and #warning text; none if null
   size_t maxTokens = 0;                     // stop after reading this many tokens (0: no limit), for fuzzing
+  std::string writeFolder;                  // where #write's files go: the image's folder ("": the current one)
+  bool writeAnywhere = false;               // --allow-write-anywhere: #fopen may write outside writeFolder
 };
 
 class Interpreter {
@@ -45,6 +48,9 @@ class Interpreter {
   // The language version #version last set (3.7 unless a scene says otherwise).
   double version() const { return version_; }
 
+  // The files the scene wrote, in memory (DataFileDesc), for the caller to put on disk or not.
+  std::vector<DataFileDesc> takeDataFiles() { return std::move(dataFiles_); }
+
  private:
   struct Slot;
   struct Scope;
@@ -59,6 +65,7 @@ class Interpreter {
   struct Cond;
   struct MacroDef;
   struct FunctionDef;
+  struct OpenFile;
 
   // Tokens.
   const Token& rawPeek() {
@@ -101,6 +108,19 @@ class Interpreter {
   void breakDirective(const SourceLoc& at);
   std::string_view skipTo(bool stopAtElse, bool stopAtCase);
   void pushFile(const std::string& path, std::string_view text, const SourceLoc* from);
+  std::string findFile(const std::string& name) const;
+  void undefine(std::string_view id);
+
+  // File input and output (file_io.cpp).
+  void fopenDirective(const SourceLoc& at);
+  void fcloseDirective();
+  void readDirective(const SourceLoc& at);
+  void writeDirective(const SourceLoc& at);
+  std::shared_ptr<OpenFile> fileHandle(const char* directive, bool reading, std::string_view* id);
+  Value dataValue(OpenFile& file, const SourceLoc& at);
+  [[noreturn]] void failInData(const SourceLoc& loc, const std::string& message, const SourceLoc& at) const;
+  const DataFileDesc* written(const std::string& name) const;
+  std::string writePath(const std::string& name) const;
 
   // Symbols.
   Slot* find(std::string_view name);
@@ -144,6 +164,8 @@ class Interpreter {
   std::vector<Cond> conds_;
   std::vector<Scope> scopes_;
   std::vector<std::uint32_t> randStates_;
+  std::vector<DataFileDesc> dataFiles_;  // what #write wrote, kept until the scene has parsed
+  size_t bytesWritten_ = 0;
   NodeSink defaults_;
   std::string sceneFolder_;
   double version_ = 3.7;

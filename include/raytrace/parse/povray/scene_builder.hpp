@@ -16,6 +16,8 @@ struct PovRayOptions {
   bool debugOutput = true;  // #debug and #warning text to stderr
   std::vector<std::string> declares;  // "name=value", a number or else a string, as POV-Ray's Declare=
   size_t maxTokens = 0;               // InterpreterOptions::maxTokens
+  std::string writeFolder;            // InterpreterOptions::writeFolder
+  bool writeAnywhere = false;         // InterpreterOptions::writeAnywhere
 };
 
 SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovRayOptions& options = {});

@@ -14,13 +14,13 @@ namespace rt::povray {
 struct Token;
 struct TokenFile;
 
-// A value that is shared rather than copied: arrays, syntax trees, functions, macros.
+// A value that is shared rather than copied: arrays, syntax trees, functions, macros, open files.
 struct Shared {
   virtual ~Shared() = default;
 };
 
 struct Value {
-  enum class Type : unsigned char { None, Float, Vector, Colour, String, Array, Node, Function, Macro };
+  enum class Type : unsigned char { None, Float, Vector, Colour, String, Array, Node, Function, Macro, File };
   Type type = Type::None;
   int size = 1;  // components of a vector (2–5); a colour always has 5: red, green, blue, filter, transmit
   std::array<double, 5> v{};
