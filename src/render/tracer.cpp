@@ -66,7 +66,13 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
       gain = std::max(gain, ((1 - m.filter) * m.reflection + m.filter) * std::max(1.0f, brightest(m.pigment)));
     });
   }
-  const float background = brightest(conventions_.background);
+  // What a ray that leaves the scene brings back; a fog can only mix in its own colour.
+  const SceneDesc& desc = scene.desc();
+  float background = std::max(brightest(conventions_.background), desc.sky ? brightest(desc.sky->bound()) : 0.0f);
+  for (const Fog& f : desc.fogs) {
+    background = std::max(background, brightest(f.colour.rgb));
+    localMax = std::max(localMax, brightest(f.colour.rgb));
+  }
   const auto level = [&](float children) {
     const float shaded = localMax + gain * children;
     return std::max(background, conventions_.clampEachBounce ? std::min(shaded, 1.0f) : shaded);
@@ -210,13 +216,25 @@ typename Tracer<T>::Traced Tracer<T>::follow(const Ray<T>& ray, const std::optio
     record->dir = glm::dvec3(ray.dir);
   }
   if (!hit) {
-    if (record) record->color = conventions_.background;
-    return {conventions_.background, std::numeric_limits<T>::infinity()};
+    const SceneDesc& desc = scene_.desc();
+    Color sky = desc.sky ? desc.sky->at(glm::dvec3(ray.dir), conventions_.background) : conventions_.background;
+    sky = fogged(sky, ray, std::numeric_limits<T>::infinity());
+    if (record) record->color = sky;
+    return {sky, std::numeric_limits<T>::infinity()};
   }
-  Color color = shade(ray, *hit, path, record, shadows);
+  Color color = fogged(shade(ray, *hit, path, record, shadows), ray, hit->t);
   if (conventions_.clampEachBounce) color = glm::clamp(color, 0.0f, 1.0f);
   if (record) record->color = color;
   return {color, hit->t};
+}
+
+template <class T> Color Tracer<T>::fogged(Color c, const Ray<T>& ray, T t) const {
+  const std::vector<Fog>& fogs = scene_.desc().fogs;
+  if (fogs.empty()) return c;
+  const glm::dvec3 dir(ray.dir);
+  const double length = glm::length(dir);
+  for (const Fog& f : fogs) c = f.over(c, glm::dvec3(ray.origin), dir / length, double(t) * length);
+  return c;
 }
 
 template <class T>

@@ -105,6 +105,8 @@ template <class T> class Tracer {
   // secondary rays, weighted (§c.5).
   Color shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, RayRecord* record,
               const std::optional<ShadowRay>* shadows);
+  // `c` seen through the scene's fogs along the ray up to t (infinite for a ray that leaves the scene).
+  Color fogged(Color c, const Ray<T>& ray, T t) const;
   // The weights of the local light and the two secondary rays at a hit; `refracted` receives the transmitted
   // direction when there is one (total internal reflection moves the transmitted share to reflection).
   Weights split(const Ray<T>& ray, const Hit<T>& hit, const Material& m, const Vec3<T>& n, RayRecord* record,

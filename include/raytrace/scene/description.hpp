@@ -9,6 +9,7 @@
 
 #include "raytrace/util/error.hpp"
 #include "raytrace/shapes/shape_desc.hpp"
+#include "raytrace/surface/environment.hpp"
 #include "raytrace/surface/material.hpp"
 
 namespace rt {
@@ -75,6 +76,8 @@ struct SceneDesc {
   std::vector<LightDesc> lights;
   std::vector<ObjectDesc> objects;
   Conventions conventions;
+  std::shared_ptr<const SkySphere> sky;  // seen where a ray leaves the scene, over the background
+  std::vector<Fog> fogs;                 // each ray crosses them in order
   std::vector<std::string> warnings;  // "file:line:col: warning: …", printed before any output
   // The images the file asks for, in order; empty for POV, whose `render` writes output.png.
   std::vector<WriteDesc> writes;

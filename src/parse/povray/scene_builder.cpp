@@ -26,6 +26,10 @@ class Builder {
       light(n);
     } else if (k == "global_settings") {
       globalSettings(n);
+    } else if (k == "sky_sphere") {
+      skySphere(n);
+    } else if (k == "fog") {
+      fog(n);
     } else if (k == "background") {
       for (const Item& i : n.items) {
         if (i.kind == Item::Kind::Value && i.value.numeric()) scene_.conventions.background = colourOf(i.value).rgb;
@@ -317,6 +321,64 @@ class Builder {
     }
     l.position = glm::dvec3(composeTransforms<double>(steps) * glm::dvec4(l.position, 1));
     scene_.lights.push_back(l);
+  }
+
+  void skySphere(const Node& n) {
+    auto sky = std::make_shared<SkySphere>(scene_.sky ? *scene_.sky : SkySphere{});
+    std::vector<TransformStep> steps;
+    for (size_t i = 0; i < n.items.size(); ++i) {
+      const Item& it = n.items[i];
+      if (transformItem(n, i, steps)) continue;
+      if (it.kind == Item::Kind::Node && it.node->keyword == "pigment") {
+        sky->layers.push_back(nestedPigment(*it.node, refusals_));
+      } else if (it.kind == Item::Kind::Node && it.node->keyword == "sky_sphere") {
+        skySphere(*it.node);  // an identifier, modified by what follows
+        sky = std::make_shared<SkySphere>(*scene_.sky);
+      } else {
+        refusals_.refuse(it, "sky_sphere");
+      }
+    }
+    sky->fromWorld = sky->fromWorld * glm::inverse(composeTransforms<double>(steps));
+    scene_.sky = sky;
+  }
+
+  void fog(const Node& n) {
+    Fog f;
+    std::vector<TransformStep> steps;
+    readFog(n, f, steps);
+    f.up = glm::normalize(glm::dvec3(composeTransforms<double>(steps) * glm::dvec4(f.up, 0)));
+    scene_.fogs.push_back(f);
+  }
+
+  void readFog(const Node& n, Fog& f, std::vector<TransformStep>& steps) {
+    for (size_t i = 0; i < n.items.size(); ++i) {
+      const Item& it = n.items[i];
+      if (transformItem(n, i, steps)) continue;
+      if (it.kind == Item::Kind::Node && it.node->keyword == "fog") {
+        readFog(*it.node, f, steps);
+        continue;
+      }
+      if (it.kind == Item::Kind::Value && it.value.numeric()) {
+        f.colour = colourOf(it.value);
+        continue;
+      }
+      const Value* v = it.kind == Item::Kind::Keyword ? valueAfter(n, i) : nullptr;
+      if (!v || !v->numeric()) {
+        refusals_.refuse(it, "fog");
+      } else if (it.word == "fog_type" && (v->v[0] == 1 || v->v[0] == 2)) {
+        f.type = Fog::Type(int(v->v[0]));
+      } else if (it.word == "distance") {
+        f.distance = v->v[0];
+      } else if (it.word == "fog_offset") {
+        f.offset = v->v[0];
+      } else if (it.word == "fog_alt") {
+        f.alt = v->v[0];
+      } else if (it.word == "up") {
+        f.up = vec3(*v);
+      } else {
+        refusals_.refuse(it, "fog");
+      }
+    }
   }
 
   void globalSettings(const Node& n) {

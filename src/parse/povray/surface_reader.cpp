@@ -80,14 +80,11 @@ std::shared_ptr<const Pigment> solidPigment(const Rgbft& c) {
 
 void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals);
 
-// A pigment of a map or a block pattern's list: its transforms are its own, inside the pattern's space.
-std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals) {
-  auto p = std::make_shared<Pigment>();
-  std::vector<TransformStep> steps;
-  readPigment(n, *p, steps, refusals);
-  p->fromTexture = glm::inverse(composeTransforms<double>(steps));
-  return p;
-}
+}  // namespace
+
+std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals);
+
+namespace {
 
 // color_map or pigment_map entries: `[value colour]`, `[value pigment { … }]`, or the old `[v0 v1 colour0 colour1]`.
 void readMap(const Node& n, std::vector<MapEntry>& map, Refusals& refusals) {
@@ -266,6 +263,14 @@ FinishTerms finishTerms(const PovFinish& f, double ior) {
 }
 
 }  // namespace
+
+std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals) {
+  auto p = std::make_shared<Pigment>();
+  std::vector<TransformStep> steps;
+  readPigment(n, *p, steps, refusals);
+  p->fromTexture = glm::inverse(composeTransforms<double>(steps));
+  return p;
+}
 
 bool Surface::patterned() const { return layers.size() > 1 || layers[0].pigment.pattern; }
 

@@ -53,6 +53,9 @@ struct Surface {
   bool patterned() const;  // whether some layer's colour varies, or there are layers: a Texture is needed
 };
 
+// A pigment block on its own, its transforms folded into its fromTexture: a map's or a list's entry, a sky's layer.
+std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals);
+
 // pigment, finish, texture, material or interior into `s`; anything else is refused.
 void readSurfaceItem(const Node& n, Surface& s, Refusals& refusals);
 

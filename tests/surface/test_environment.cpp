@@ -1,0 +1,76 @@
+// Fog and sky: fog against the colours real POV-Ray 3.7 gave (linear, read back from its sRGB pictures), ground
+// fog's density integral against a numerical one, and the sky's layers.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "raytrace/surface/environment.hpp"
+
+namespace rt {
+namespace {
+
+TEST_CASE("environment: constant fog mixes as POV-Ray's does, with filter and transmit", "[environment]") {
+  // POV-Ray: a red sphere (ambient 1) 4 units away, fog rgbft <0.3, 0.5, 0.2, f, t> distance 4.5.
+  struct Case {
+    float filter, transmit;
+    Color expected;
+  } cases[] = {{0, 0, {0.584f, 0.296f, 0.120f}}, {1, 0, {0.301f, 0.296f, 0.120f}}, {0.5f, 0, {0.445f, 0.296f, 0.120f}},
+               {0, 1, {1, 0, 0}}};
+  for (const Case& k : cases) {
+    Fog fog;
+    fog.colour = {Color(0.3f, 0.5f, 0.2f), k.filter, k.transmit};
+    fog.distance = 4.5;
+    const Color c = fog.over(Color(1, 0, 0), glm::dvec3(0, 0, -5), glm::dvec3(0, 0, 1), 4);
+    CHECK(c.r == Approx(k.expected.r).margin(0.004));
+    CHECK(c.g == Approx(k.expected.g).margin(0.004));
+    CHECK(c.b == Approx(k.expected.b).margin(0.004));
+  }
+  // A ray that leaves the scene sees the fog's colour, less what it transmits.
+  Fog fog;
+  fog.colour = {Color(0.3f, 0.5f, 0.2f), 0, 0};
+  fog.distance = 4.5;
+  CHECK(fog.over(Color(1), glm::dvec3(0), glm::dvec3(0, 0, 1), std::numeric_limits<double>::infinity()) ==
+        Color(0.3f, 0.5f, 0.2f));
+  fog.distance = 0;  // POV-Ray: no fog
+  CHECK(fog.over(Color(1), glm::dvec3(0), glm::dvec3(0, 0, 1), 10) == Color(1));
+}
+
+TEST_CASE("environment: ground fog thins above its offset as the manual's density integrates", "[environment]") {
+  Fog fog;
+  fog.type = Fog::Type::Ground;
+  fog.colour = {Color(1), 0, 0};
+  fog.distance = 3;
+  fog.offset = 1;
+  fog.alt = 2;
+  const glm::dvec3 origin(0, -2, 0), dir = glm::normalize(glm::dvec3(1, 1, 0));
+  const double depth = 9;
+  // The midpoint rule on the density 1 below the offset, 1/(1 + (h − offset)/alt)² above.
+  double thickness = 0;
+  const int steps = 200000;
+  for (int i = 0; i < steps; ++i) {
+    const double h = (origin + dir * ((i + 0.5) * depth / steps)).y;
+    thickness += (h <= fog.offset ? 1 : 1 / std::pow(1 + (h - fog.offset) / fog.alt, 2)) * depth / steps;
+  }
+  const float kept = float(std::exp(-thickness / fog.distance));
+  CHECK(fog.over(Color(0), origin, dir, depth).r == Approx(1 - kept).epsilon(1e-5));
+  // Upward to infinity the integral is finite.
+  const float up = fog.over(Color(0), glm::dvec3(0, 1, 0), glm::dvec3(0, 1, 0), std::numeric_limits<double>::infinity()).r;
+  CHECK(up == Approx(1 - std::exp(-2.0 / 3)).epsilon(1e-6));
+}
+
+TEST_CASE("environment: the sky's layers cover the ones below where they are opaque", "[environment]") {
+  auto bottom = std::make_shared<Pigment>();
+  bottom->solid = {Color(0, 0, 1), 0, 0};
+  auto top = std::make_shared<Pigment>();
+  top->solid = {Color(1, 1, 1), 0, 0.75f};
+  SkySphere sky;
+  sky.layers = {bottom, top};
+  const Color c = sky.at(glm::dvec3(0, 1, 0), Color(0));
+  CHECK(c.r == Approx(0.25f));
+  CHECK(c.b == Approx(1.0f));
+  CHECK(sky.bound() == Color(1));
+}
+
+}  // namespace
+}  // namespace rt

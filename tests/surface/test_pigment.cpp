@@ -1,0 +1,88 @@
+// Patterns, maps and waves at sample points, against the values the POV-Ray 3.7 manual defines.
+#include <catch2/catch.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "raytrace/surface/pattern.hpp"
+#include "raytrace/surface/pigment.hpp"
+
+namespace rt {
+namespace {
+
+std::shared_ptr<const Pattern> pattern(const char* name, glm::dvec3 v = glm::dvec3(0)) {
+  const PatternKind* kind = patternKind(name);
+  REQUIRE(kind != nullptr);
+  return kind->make(PatternArgs{v, kind->needsVector});
+}
+
+std::shared_ptr<const Pigment> solid(Color c) {
+  auto p = std::make_shared<Pigment>();
+  p->solid.rgb = c;
+  return p;
+}
+
+TEST_CASE("pigment: checker alternates unit cubes along every axis; a face belongs to the cube above it", "[pigment]") {
+  const auto checker = pattern("checker");
+  CHECK(checker->blocks() == 2);
+  CHECK(checker->value({0.5, 0.5, 0.5}) == 0);
+  CHECK(checker->value({1.5, 0.5, 0.5}) == 1);
+  CHECK(checker->value({1.5, 1.5, 0.5}) == 0);
+  CHECK(checker->value({-0.5, 0.5, 0.5}) == 1);
+  CHECK(checker->value({-0.5, -0.5, -0.5}) == 1);
+  // On the plane y = 0, whatever the rounding of the hit point.
+  CHECK(checker->value({0.5, -1e-12, 0.5}) == 0);
+  CHECK(checker->value({0.5, 1e-12, 0.5}) == 0);
+}
+
+TEST_CASE("pigment: the continuous patterns' values", "[pigment]") {
+  CHECK(pattern("gradient", {0, 1, 0})->value({3, 0.25, 7}) == 0.25);
+  CHECK(pattern("gradient", {2, 0, 0})->value({0.25, 0, 0}) == 0.5);
+  const auto radial = pattern("radial");
+  CHECK(radial->value({1, 0, 0}) == Approx(0).margin(1e-12));
+  CHECK(radial->value({0, 0, -1}) == Approx(0.25));
+  CHECK(radial->value({-1, 0, 0}) == Approx(0.5));
+  CHECK(radial->value({0, 0, 1}) == Approx(0.75));
+  CHECK(pattern("onion")->value({0, 2.25, 0}) == Approx(0.25));
+  CHECK(pattern("spherical")->value({0, 0.25, 0}) == Approx(0.75));
+  CHECK(pattern("spherical")->value({3, 0, 0}) == 0);
+  CHECK(pattern("cylindrical")->value({0.6, 5, 0.8}) == Approx(0));
+  CHECK(pattern("boxed")->value({0.5, -0.75, 0.25}) == Approx(0.25));
+  CHECK(pattern("planar")->value({9, -0.25, 9}) == Approx(0.75));
+  CHECK(patternKind("granite") == nullptr);
+}
+
+TEST_CASE("pigment: a colour map interpolates between its entries and holds its ends", "[pigment]") {
+  Pigment p;
+  p.pattern = pattern("gradient", {1, 0, 0});
+  p.map = {{0.25, solid(Color(1, 0, 0))}, {0.75, solid(Color(0, 0, 1))}};
+  CHECK(p.at({0.1, 0, 0}).rgb == Color(1, 0, 0));
+  CHECK(p.at({0.9, 0, 0}).rgb == Color(0, 0, 1));
+  const Color mid = p.at({0.5, 0, 0}).rgb;
+  CHECK(mid.r == Approx(0.5f));
+  CHECK(mid.b == Approx(0.5f));
+  // The pattern repeats every unit, below 0 too.
+  CHECK(p.at({-0.9, 0, 0}).rgb == Color(1, 0, 0));
+  // frequency 2 and phase 0.5: x = 0.1 reads 0.7.
+  p.frequency = 2;
+  p.phase = 0.5;
+  CHECK(p.at({0.1, 0, 0}).rgb.b == Approx(0.9f));
+  // A triangle wave reads 2v below a half and 2 − 2v above.
+  p.frequency = 1;
+  p.phase = 0;
+  p.wave = Wave::Triangle;
+  CHECK(p.at({0.75, 0, 0}).rgb.r == Approx(0.5f));
+}
+
+TEST_CASE("pigment: a block pattern picks its list's pigments, which its transforms move too", "[pigment]") {
+  Pigment p;
+  p.pattern = pattern("checker");
+  p.list = {solid(Color(1)), solid(Color(0))};
+  p.fromTexture = glm::inverse(glm::scale(glm::dmat4(1), glm::dvec3(2)));
+  CHECK(p.at({1.5, 0.5, 0.5}).rgb == Color(1));
+  CHECK(p.at({2.5, 0.5, 0.5}).rgb == Color(0));
+  CHECK(anyColour(p, [](const Rgbft& c) { return c.rgb == Color(0); }));
+  CHECK_FALSE(anyColour(p, [](const Rgbft& c) { return c.transmit > 0; }));
+}
+
+}  // namespace
+}  // namespace rt
