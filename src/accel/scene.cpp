@@ -10,7 +10,11 @@ namespace rt {
 template <class T>
 Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy hierarchy, int threads)
     : desc_(desc), arithmetic_(arithmetic) {
-  for (const LightDesc& l : desc.lights) lights_.push_back(Light<T>{Vec3<T>(l.position), l.color});
+  shapes_.reserve(desc.lights.size());  // no reallocation: lights_ point into it
+  for (const LightDesc& l : desc.lights) {
+    const LightShape* shape = LightShape::needed(l) ? &shapes_.emplace_back(l) : nullptr;
+    lights_.push_back(Light<T>{Vec3<T>(l.position), l.color, shape, l.shadowless});
+  }
   const bool course = arithmetic.tier == Tier::Course;
   const size_t n = desc.objects.size();
   objects_.resize(n);

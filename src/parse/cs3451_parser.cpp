@@ -128,7 +128,9 @@ class CliParser {
       scene_.conventions.background = color(numbers(words, 3), 0);
     } else if (name == "light") {
       const auto v = numbers(words, 6);
-      scene_.lights.push_back(LightDesc{{v[3], v[4], v[5]}, color(v, 0)});  // colour first (§A.2)
+      LightDesc& light = scene_.lights.emplace_back();
+      light.position = {v[3], v[4], v[5]};
+      light.color = color(v, 0);  // colour first (§A.2)
     } else if (name == "surface") {
       surface(words);
     } else if (name == "sphere") {

@@ -178,6 +178,7 @@ template <class T> void Tracer<T>::traceBatch(Batch& batch, int count, RayRecord
         s.emplace();
         if (!hits[i] || !shadowRay(*hits[i], viewerSide(*hits[i], packet[i]), scene_.lights()[l], *s)) s.reset();
       }
+      if (scene_.lights()[l].shadowless) continue;  // each answer stays "not occluded"
       // Gathered in a second pass: copied right after it is written, a ray is read back before its stores
       // have left the store buffer, and each such read stalls.
       for (int i = 0; i < size; ++i) {
@@ -383,18 +384,26 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m
     if (shadows) {
       if (shadows[i]) s = &*shadows[i];
     } else if (shadowRay(hit, n, light, own)) {
-      own.occluded = scene_.occluded(own.ray, own.segment, &lastOccluder_[i]);
-      ++counts_.shadow;
+      if (!light.shadowless) {
+        own.occluded = scene_.occluded(own.ray, own.segment, &lastOccluder_[i]);
+        ++counts_.shadow;
+      }
       s = &own;
     }
     if (!s) continue;
     if (record) record->shadows.push_back({glm::dvec3(s->ray.origin), glm::dvec3(s->ray.dir), s->occluded});
     if (s->occluded) continue;
-    diffuse += light.color * m.diffuse * std::min(s->nl, 1.0f);
+    Color lightColor = light.color;
+    if (light.shape) {
+      const glm::dvec3 toPoint = glm::dvec3(hit.point - light.position);
+      const double distance = glm::length(toPoint);
+      lightColor *= light.shape->at(toPoint / distance, distance);
+    }
+    diffuse += lightColor * m.diffuse * std::min(s->nl, 1.0f);
     if (m.specular == Color(0)) continue;  // a matte surface: no power to take
     const float factor = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, s->l, m.exponent)
                                                            : cookTorranceSpecular(n, v, s->l, m.roughness, m.ior);
-    specular += light.color * m.specular * factor;
+    specular += lightColor * m.specular * factor;
   }
   return {diffuse, specular};
 }

@@ -9,12 +9,17 @@
 #include "raytrace/shapes/object.hpp"
 #include "raytrace/scene/arithmetic.hpp"
 #include "raytrace/scene/description.hpp"
+#include "raytrace/scene/light_shape.hpp"
 
 namespace rt {
 
+// A light as shading reads it. A light whose strength varies over the scene (a spotlight, or one that fades
+// with distance) has `shape`; the others, every course light among them, skip that work.
 template <class T> struct Light {
   Vec3<T> position;
   Color color;
+  const LightShape* shape = nullptr;
+  bool shadowless = false;  // casts no shadows: no shadow ray is traced toward it
 };
 
 template <class T> class Scene {
@@ -55,6 +60,7 @@ template <class T> class Scene {
   const SceneDesc& desc_;
   Arithmetic arithmetic_;
   std::vector<Light<T>> lights_;
+  std::vector<LightShape> shapes_;  // lights_[i].shape points into it
   std::vector<std::unique_ptr<Object<T>>> objects_;
   std::vector<const Object<T>*> scanned_;  // tested one by one in file order: planes, or all without hierarchy
   std::optional<Bvh<T>> hierarchy_;

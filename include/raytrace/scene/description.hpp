@@ -2,6 +2,7 @@
 // Both scene languages (POV subset and .cli) produce this; Scene<T> (scene.hpp) is built from it.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,14 @@ struct CameraDesc {
 struct LightDesc {
   glm::dvec3 position{0};
   Color color{1};
+  // POV-Ray's light modifiers (docs/povray-language.md, "Lights"); a course light has none.
+  struct Spot {
+    glm::dvec3 pointAt{0};
+    double radius = 30, falloff = 45, tightness = 0;  // degrees, degrees, exponent: POV-Ray's defaults
+  };
+  std::optional<Spot> spot;
+  double fadeDistance = 0, fadePower = 0;  // 0: no fading
+  bool shadowless = false;
 };
 
 // How a scene language wants its pictures made: the conventions that reproduce each course's reference

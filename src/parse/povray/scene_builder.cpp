@@ -210,9 +210,7 @@ class Builder {
     if (textureFrom) o.textured = true;
     passTextureDown(o);
     const glm::dmat4 m = composeTransforms<double>(own);
-    for (size_t l = firstLight; l < scene_.lights.size(); ++l) {
-      scene_.lights[l].position = glm::dvec3(m * glm::dvec4(scene_.lights[l].position, 1));
-    }
+    for (size_t l = firstLight; l < scene_.lights.size(); ++l) moveLight(scene_.lights[l], m);
     return true;
   }
 
@@ -251,7 +249,9 @@ class Builder {
     if (lookAt) {
       const double handedness = glm::dot(glm::cross(up, direction), right);
       direction = glm::normalize(*lookAt - location) * glm::length(direction);
-      right = glm::normalize(glm::cross(sky, direction)) * glm::length(right);
+      // Looking along the sky, right keeps its direction, and up follows from it.
+      const glm::dvec3 side = glm::cross(sky, direction);
+      right = glm::normalize(glm::length(side) > 1e-12 * glm::length(direction) ? side : right) * glm::length(right);
       up = glm::normalize(glm::cross(direction, right)) * glm::length(up);
       if (handedness < 0) right = -right;
     }
@@ -304,23 +304,57 @@ class Builder {
 
   void light(const Node& n) {
     LightDesc l;
+    readLight(n, l);
+    scene_.lights.push_back(l);
+  }
+
+  // A light's items into `l`, moved by its transforms: an identifier's first, then the ones that follow it.
+  void readLight(const Node& n, LightDesc& l) {
     size_t i = 0;
-    if (i < n.items.size() && n.items[i].kind == Item::Kind::Value) l.position = vec3(n.items[i++].value);
-    if (i < n.items.size() && n.items[i].kind == Item::Kind::Value) {
-      l.color = colourOf(n.items[i++].value).rgb;
+    if (i < n.items.size() && n.items[i].kind == Item::Kind::Node && n.items[i].node->keyword == "light_source") {
+      readLight(*n.items[i++].node, l);
     }
+    if (i < n.items.size() && n.items[i].kind == Item::Kind::Value) l.position = vec3(n.items[i++].value);
+    if (i < n.items.size() && n.items[i].kind == Item::Kind::Value) l.color = colourOf(n.items[i++].value).rgb;
     std::vector<TransformStep> steps;
+    // The cone's values may come before `spotlight`, and mean nothing to a light that is not one.
+    bool isSpot = l.spot.has_value();
+    LightDesc::Spot spot = l.spot.value_or(LightDesc::Spot{});
     for (; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
       if (transformItem(n, i, steps)) continue;
-      if (it.kind == Item::Kind::Keyword && (it.word == "media_interaction" || it.word == "media_attenuation")) {
-        valueAfter(n, i);
+      if (it.kind != Item::Kind::Keyword) {
+        refusals_.refuse(it, "light_source");
         continue;
       }
-      refuse(it.loc, it.kind == Item::Kind::Node ? it.node->keyword : it.kind == Item::Kind::Keyword ? it.word : "light_source");
+      const std::string_view w = it.word;
+      if (w == "media_interaction" || w == "media_attenuation") {
+        valueAfter(n, i);
+      } else if (w == "shadowless") {
+        l.shadowless = true;
+      } else if (w == "spotlight") {
+        isSpot = true;
+      } else if (w == "point_at" || w == "radius" || w == "falloff" || w == "tightness" || w == "fade_distance" ||
+                 w == "fade_power") {
+        const Value* v = valueAfter(n, i);
+        if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(w) + "' needs a value");
+        if (w == "point_at") spot.pointAt = vec3(*v);
+        else if (w == "radius") spot.radius = v->v[0];
+        else if (w == "falloff") spot.falloff = v->v[0];
+        else if (w == "tightness") spot.tightness = v->v[0];
+        else if (w == "fade_distance") l.fadeDistance = v->v[0];
+        else l.fadePower = v->v[0];
+      } else {
+        refuse(it.loc, w);
+      }
     }
-    l.position = glm::dvec3(composeTransforms<double>(steps) * glm::dvec4(l.position, 1));
-    scene_.lights.push_back(l);
+    if (isSpot) l.spot = spot;
+    moveLight(l, composeTransforms<double>(steps));
+  }
+
+  static void moveLight(LightDesc& l, const glm::dmat4& m) {
+    l.position = glm::dvec3(m * glm::dvec4(l.position, 1));
+    if (l.spot) l.spot->pointAt = glm::dvec3(m * glm::dvec4(l.spot->pointAt, 1));
   }
 
   void skySphere(const Node& n) {

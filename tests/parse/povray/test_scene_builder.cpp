@@ -85,6 +85,43 @@ object { Lamp translate x }
   REQUIRE(s.objects.size() == 1);
 }
 
+TEST_CASE("povray scene: spotlights, fading and shadowless lights; the cone moves with the light", "[povray]") {
+  const SceneDesc s = scene(R"(
+light_source { <0, 10, 0> White point_at <0, 0, 1> radius 10 spotlight translate x }
+light_source { <0, 10, 0> White point_at <0, 0, 1> fade_distance 3 fade_power 1 shadowless }
+#declare Lamp = light_source { 0, Red spotlight falloff 20 tightness 5 }
+light_source { Lamp rotate 90*z }
+)");
+  REQUIRE(s.lights.size() == 3);
+  REQUIRE(s.lights[0].spot);
+  CHECK(s.lights[0].spot->pointAt == glm::dvec3(1, 0, 1));
+  CHECK(s.lights[0].spot->radius == 10);
+  CHECK(s.lights[0].spot->falloff == 45);
+  CHECK_FALSE(s.lights[1].spot);  // point_at alone makes no spotlight
+  CHECK(s.lights[1].shadowless);
+  CHECK(s.lights[1].fadeDistance == 3);
+  CHECK(s.lights[2].spot->tightness == 5);
+  CHECK(s.lights[2].color == Color(1, 0, 0));
+}
+
+TEST_CASE("povray scene: textures take the transforms after them, at every level, and pass to CSG children",
+          "[povray]") {
+  const SceneDesc s = scene(R"(
+#declare Ball = sphere { 0, 1 translate 5*x pigment { gradient x color_map { [0 Black] [1 White] } } translate y }
+object { Ball translate z }
+intersection { sphere { 0, 1 } box { -1, 0.5 } pigment { checker Red Blue } scale 2 }
+)");
+  REQUIRE(s.objects.size() == 2);
+  // The gradient moved by the translations after it (y, then z): x is unmoved, so world x = 0.25 reads 0.25.
+  REQUIRE(s.objects[0].texture);
+  CHECK(s.objects[0].texture->at(glm::dvec3(0.25, 1, 1)).pigment.r == Approx(0.25f));
+  const auto& csg = std::get<CsgDesc>(s.objects[1].shape);
+  REQUIRE(csg.children[1].texture);
+  // The checker scaled by 2 with the group: world (1.5, 0.5, 0.5) lies in the first cube.
+  CHECK(csg.children[1].texture->at(glm::dvec3(1.5, 0.5, 0.5)).pigment == Color(1, 0, 0));
+  CHECK(csg.children[1].texture->at(glm::dvec3(2.5, 0.5, 0.5)).pigment == Color(0, 0, 1));
+}
+
 TEST_CASE("povray scene: a shape or group that cannot be drawn yet is refused where it is written", "[povray]") {
   CHECK(failure("union { sphere { 0, 1 }\n torus { 1, 0.2 } }\n") == "scene.pov:4:2: error: 'torus' is not supported yet");
   CHECK(failure("intersection { sphere { 0, 1 } plane { y, 0 } inverse }\n") ==
