@@ -18,6 +18,7 @@ Camera<T>::Camera(const CameraDesc& desc, int width, int height)
       right_(desc.rightFollowsImage ? desc.right * (double(width) / height) : desc.right),
       up_(desc.up),
       forward_(glm::normalize(Vec3<T>(desc.lookAt - desc.location))),
+      orthographic_(desc.orthographic),
       offset_(desc.pixelOffset),
       width_(width),
       height_(height) {

@@ -139,3 +139,19 @@ TEMPLATE_TEST_CASE("camera: degenerate cameras are a located error", "", float, 
   huge.right = {1e200, 0, 0};
   CHECK(message(huge) == "s.pov:3:1: error: the camera gives no image: its up or right vector is too long");
 }
+
+TEMPLATE_TEST_CASE("camera: an orthographic camera's rays are parallel, from the picture's point on its plane", "",
+                   float, double) {
+  rt::CameraDesc c = camera({0, 0, 14}, {4, 0, 0});
+  c.up = {0, 3, 0};
+  c.orthographic = true;
+  const rt::Camera<TestType> cam(c, 40, 30);
+  // Pixel (0, 0)'s centre is (0.5, 0.5) pixels from the lower-left corner: Us = −½ + 0.5/40.
+  const rt::Ray<TestType> corner = cam.pixelRay(0, 0);
+  CHECK(corner.origin.x == Approx(-2 + 0.05).epsilon(1e-6));
+  CHECK(corner.origin.y == Approx(-1.5 + 0.05).epsilon(1e-6));
+  CHECK(corner.origin.z == Approx(14));
+  const rt::Ray<TestType> other = cam.pixelRay(39, 29);
+  CHECK(other.dir == corner.dir);
+  CHECK(corner.dir.z == Approx(-1));
+}

@@ -18,6 +18,7 @@ template <class T> class Camera {
   Ray<T> ray(T px, T py) const {
     const T us = T(-0.5) + px / T(width_);
     const T vs = T(-0.5) + py / T(height_);
+    if (orthographic_) return Ray<T>{origin_ + us * right_ + vs * up_, forward_};
     return Ray<T>{origin_, glm::normalize(us * right_ + vs * up_ + forward_)};
   }
   // The eye ray of pixel (x, y), through the pixel's own sample point (CameraDesc::pixelOffset).
@@ -37,6 +38,7 @@ template <class T> class Camera {
 
  private:
   Vec3<T> origin_, right_, up_, forward_;
+  bool orthographic_;
   glm::vec<2, T, glm::defaultp> offset_;
   int width_, height_;
 };

@@ -26,6 +26,9 @@ struct CameraDesc {
   // .cli: `right` is written for a square image and is stretched by width/height when the image is made, so
   // pixels stay square at any size and `fov` stays the vertical angle (docs/reference/cs3451.md §A.4 leaves this open).
   bool rightFollowsImage = false;
+  // POV-Ray's orthographic camera: parallel rays along the view, from the picture's point on the plane through
+  // `location`; right and up are then the picture's size.
+  bool orthographic = false;
   SourceLoc loc;  // the `camera` statement (POV) or the `fov` command (.cli) that set it, for messages
 };
 

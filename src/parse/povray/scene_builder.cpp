@@ -235,69 +235,87 @@ class Builder {
     }
   }
 
-  // POV-Ray's camera: defaults, then angle sets the direction's length, look_at turns direction, right and up
-  // about the sky keeping their lengths and the handedness of right, then the transforms.
-  void camera(const Node& n) {
-    glm::dvec3 location(0), direction(0, 0, 1), up(0, 1, 0), right(1.33, 0, 0), sky(0, 1, 0);
+  // A camera statement's items as written (an identifier's first), before POV-Ray's rules combine them.
+  struct PovCamera {
+    glm::dvec3 location{0}, direction{0, 0, 1}, up{0, 1, 0}, right{1.33, 0, 0}, sky{0, 1, 0};
     std::optional<glm::dvec3> lookAt;
     std::optional<double> angle;
+    bool orthographic = false, angleGiven = false, sizeGiven = false;
     std::vector<TransformStep> steps;
-    collectCamera(n, location, direction, up, right, sky, lookAt, angle, steps);
-    if (angle) {
-      direction = glm::normalize(direction) * (0.5 * glm::length(right) / std::tan(glm::radians(*angle) / 2));
+  };
+
+  // POV-Ray's camera: defaults, then angle sets the direction's length, look_at turns direction, right and up
+  // about the sky keeping their lengths and the handedness of right, then the transforms. An orthographic
+  // camera's right and up are the picture's size: as written, or with `angle` or without either of them the
+  // size a perspective camera shows at the look_at point.
+  void camera(const Node& n) {
+    PovCamera k;
+    collectCamera(n, k);
+    glm::dvec3 direction = k.direction, right = k.right, up = k.up;
+    if (k.angle) {
+      direction = glm::normalize(direction) * (0.5 * glm::length(right) / std::tan(glm::radians(*k.angle) / 2));
     }
-    if (lookAt) {
+    if (k.lookAt) {
       const double handedness = glm::dot(glm::cross(up, direction), right);
-      direction = glm::normalize(*lookAt - location) * glm::length(direction);
+      direction = glm::normalize(*k.lookAt - k.location) * glm::length(direction);
       // Looking along the sky, right keeps its direction, and up follows from it.
-      const glm::dvec3 side = glm::cross(sky, direction);
+      const glm::dvec3 side = glm::cross(k.sky, direction);
       right = glm::normalize(glm::length(side) > 1e-12 * glm::length(direction) ? side : right) * glm::length(right);
       up = glm::normalize(glm::cross(direction, right)) * glm::length(up);
       if (handedness < 0) right = -right;
     }
-    const glm::dmat4 m = composeTransforms<double>(steps);
-    location = glm::dvec3(m * glm::dvec4(location, 1));
+    // What right and up are divided by: the direction's length for a perspective camera, which makes them the
+    // picture's size at unit distance; for an orthographic one, 1 or the look_at point's distance in units
+    // of the direction's length.
+    double size = 1;
+    if (k.orthographic && (k.angleGiven || !k.sizeGiven)) {
+      size = glm::length(direction) / (k.lookAt ? glm::length(*k.lookAt - k.location) : glm::length(direction));
+    }
+    const glm::dmat4 m = composeTransforms<double>(k.steps);
+    const glm::dvec3 location = glm::dvec3(m * glm::dvec4(k.location, 1));
     direction = glm::dvec3(m * glm::dvec4(direction, 0));
-    up = glm::dvec3(m * glm::dvec4(up, 0));
-    right = glm::dvec3(m * glm::dvec4(right, 0));
-    const double length = glm::length(direction);
+    if (!k.orthographic) size = glm::length(direction);
     CameraDesc& c = scene_.camera;
     c.location = location;
-    c.lookAt = location + direction / length;
-    c.right = right / length;
-    c.up = up / length;
+    c.lookAt = location + glm::normalize(direction);
+    c.right = glm::dvec3(m * glm::dvec4(right, 0)) / size;
+    c.up = glm::dvec3(m * glm::dvec4(up, 0)) / size;
+    c.orthographic = k.orthographic;
     c.loc = n.loc;
   }
 
-  void collectCamera(const Node& n, glm::dvec3& location, glm::dvec3& direction, glm::dvec3& up, glm::dvec3& right,
-                     glm::dvec3& sky, std::optional<glm::dvec3>& lookAt, std::optional<double>& angle,
-                     std::vector<TransformStep>& steps) {
+  void collectCamera(const Node& n, PovCamera& k) {
     for (size_t i = 0; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
       if (it.kind == Item::Kind::Node && it.node->keyword == "camera") {
-        collectCamera(*it.node, location, direction, up, right, sky, lookAt, angle, steps);
+        collectCamera(*it.node, k);
         continue;
       }
-      if (transformItem(n, i, steps)) continue;
+      if (transformItem(n, i, k.steps)) continue;
       if (it.kind != Item::Kind::Keyword) {
-        refuse(it.loc, it.kind == Item::Kind::Node ? it.node->keyword : "camera");
+        refusals_.refuse(it, "camera");
         continue;
       }
       const std::string_view w = it.word;
-      if (w == "perspective") continue;
+      if (w == "perspective" || w == "orthographic") {
+        k.orthographic = w == "orthographic";
+        continue;
+      }
       const Value* v = valueAfter(n, i);
+      if (w == "angle") k.angleGiven = true;
+      if (!v && w == "angle" && k.orthographic) continue;  // the angle is optional there
       if (!v) {
         refuse(it.loc, w);
         continue;
       }
       if (!v->numeric()) throw ParseError(n.items[i].loc, "expected a vector after '" + std::string(w) + "', found a " + typeName(*v));
-      if (w == "location") location = vec3(*v);
-      else if (w == "direction") direction = vec3(*v);
-      else if (w == "up") up = vec3(*v);
-      else if (w == "right") right = vec3(*v);
-      else if (w == "sky") sky = vec3(*v);
-      else if (w == "look_at") lookAt = vec3(*v);
-      else if (w == "angle") angle = v->v[0];
+      if (w == "location") k.location = vec3(*v);
+      else if (w == "direction") k.direction = vec3(*v);
+      else if (w == "up") k.up = vec3(*v), k.sizeGiven = true;
+      else if (w == "right") k.right = vec3(*v), k.sizeGiven = true;
+      else if (w == "sky") k.sky = vec3(*v);
+      else if (w == "look_at") k.lookAt = vec3(*v);
+      else if (w == "angle") k.angle = v->v[0];
       else refuse(it.loc, w);
     }
   }

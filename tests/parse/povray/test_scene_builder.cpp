@@ -122,6 +122,18 @@ intersection { sphere { 0, 1 } box { -1, 0.5 } pigment { checker Red Blue } scal
   CHECK(csg.children[1].texture->at(glm::dvec3(2.5, 0.5, 0.5)).pigment == Color(0, 0, 1));
 }
 
+TEST_CASE("povray scene: an orthographic camera's size: its right and up, or what a perspective camera shows at "
+          "look_at", "[povray]") {
+  const SceneDesc own = scene("camera { orthographic location <0, 0, -10> look_at 0 right 8*x up 6*y }\n");
+  CHECK(own.camera.orthographic);
+  CHECK(own.camera.right == glm::dvec3(8, 0, 0));
+  CHECK(own.camera.up == glm::dvec3(0, 6, 0));
+  // With angle 90 a perspective camera shows 2·10·tan 45° = 20 units across at the look_at point.
+  const SceneDesc angled = scene("camera { orthographic location <0, 0, -10> look_at 0 right 4/3*x angle 90 }\n");
+  CHECK(angled.camera.right.x == Approx(20));
+  CHECK(angled.camera.up.y == Approx(15));
+}
+
 TEST_CASE("povray scene: a shape or group that cannot be drawn yet is refused where it is written", "[povray]") {
   CHECK(failure("union { sphere { 0, 1 }\n torus { 1, 0.2 } }\n") == "scene.pov:4:2: error: 'torus' is not supported yet");
   CHECK(failure("intersection { sphere { 0, 1 } plane { y, 0 } inverse }\n") ==
