@@ -30,16 +30,28 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
       objects_[i] = std::move(object);
     }
   });
-  std::vector<const Object<T>*> bounded;
-  for (size_t i = 0; i < n; ++i) (finite[i] ? bounded : scanned_).push_back(objects_[i].get());
-  const bool build = hierarchy == Hierarchy::Always ||
-                     (hierarchy == Hierarchy::Auto && bounded.size() >= kHierarchyMinObjects);
-  if (build) {
-    hierarchy_.emplace(bounded, threads);
-  } else {
-    scanned_.clear();
-    for (const auto& o : objects_) scanned_.push_back(o.get());
-  }
+  // The objects in turn or in a hierarchy, as `hierarchy` asks; `take` picks the objects of the set.
+  const auto split = [&](const auto& take, std::vector<const Object<T>*>& scanned, std::optional<Bvh<T>>& bvh) {
+    std::vector<const Object<T>*> bounded;
+    for (size_t i = 0; i < n; ++i) {
+      if (take(i)) (finite[i] ? bounded : scanned).push_back(objects_[i].get());
+    }
+    const bool build = hierarchy == Hierarchy::Always ||
+                       (hierarchy == Hierarchy::Auto && bounded.size() >= kHierarchyMinObjects);
+    if (build) {
+      bvh.emplace(bounded, threads);
+    } else {
+      scanned.clear();
+      for (size_t i = 0; i < n; ++i) {
+        if (take(i)) scanned.push_back(objects_[i].get());
+      }
+    }
+  };
+  split([](size_t) { return true; }, scanned_, hierarchy_);
+  const auto casts = [&](size_t i) { return !desc.objects[i].noShadow; };
+  bool all = true;
+  for (size_t i = 0; i < n && all; ++i) all = casts(i);
+  if (!all) split(casts, casters_.emplace().scanned, casters_->hierarchy);
 }
 
 // One ray: the packet queries' steps below, straight to the hierarchy's one-ray queries, without the arrays
@@ -56,11 +68,13 @@ std::optional<Hit<T>> Scene<T>::closestHit(const Ray<T>& ray, Interval<T> range)
 template <class T>
 bool Scene<T>::occluded(const Ray<T>& ray, Interval<T> range, const Object<T>** lastOccluder) const {
   if (lastOccluder && *lastOccluder && (*lastOccluder)->occludes(&ray, &range, 1)) return true;
+  const auto& scanned = casters_ ? casters_->scanned : scanned_;
+  const auto& hierarchy = casters_ ? casters_->hierarchy : hierarchy_;
   const Object<T>* found = nullptr;
-  for (auto object = scanned_.begin(); !found && object != scanned_.end(); ++object) {
+  for (auto object = scanned.begin(); !found && object != scanned.end(); ++object) {
     if ((*object)->occludes(&ray, &range, 1)) found = *object;
   }
-  if (!found && hierarchy_) found = hierarchy_->occluder(ray, range);
+  if (!found && hierarchy) found = hierarchy->occluder(ray, range);
   if (found && lastOccluder) *lastOccluder = found;
   return found != nullptr;
 }
@@ -87,11 +101,13 @@ void Scene<T>::occluded(const Ray<T>* rays, const Interval<T>* ranges, int n, bo
   // The cached occluder first, then the unbounded objects in file order, then the hierarchy: each ray's
   // occluder is the first that meets it.
   if (*lastOccluder) open &= ~(*lastOccluder)->noteOccluder(rays, ranges, open, occluders);
-  for (const Object<T>* object : scanned_) {
+  const auto& scanned = casters_ ? casters_->scanned : scanned_;
+  const auto& hierarchy = casters_ ? casters_->hierarchy : hierarchy_;
+  for (const Object<T>* object : scanned) {
     if (!open) break;
     open &= ~object->noteOccluder(rays, ranges, open, occluders);
   }
-  if (open && hierarchy_) hierarchy_->occluders(rays, ranges, open, occluders);
+  if (open && hierarchy) hierarchy->occluders(rays, ranges, open, occluders);
   for (int i = 0; i < n; ++i) {
     shadowed[i] = occluders[i] != nullptr;
     if (occluders[i]) *lastOccluder = occluders[i];

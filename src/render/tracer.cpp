@@ -51,6 +51,7 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
       options_(options),
       conventions_(scene.desc().conventions),
       lastOccluder_(scene.lights().size(), nullptr),
+      fogs_(!scene.desc().fogs.empty()),
       batches_(size_t(1 + (options.gi.enabled ? options.gi.bounceCount() : 0))) {
   if (options.depth) conventions_.maxDepth = *options.depth;
   float localMax = 0, gain = 0;
@@ -219,22 +220,21 @@ typename Tracer<T>::Traced Tracer<T>::follow(const Ray<T>& ray, const std::optio
   if (!hit) {
     const SceneDesc& desc = scene_.desc();
     Color sky = desc.sky ? desc.sky->at(glm::dvec3(ray.dir), conventions_.background) : conventions_.background;
-    sky = fogged(sky, ray, std::numeric_limits<T>::infinity());
+    if (fogs_) sky = fogged(sky, ray, std::numeric_limits<T>::infinity());
     if (record) record->color = sky;
     return {sky, std::numeric_limits<T>::infinity()};
   }
-  Color color = fogged(shade(ray, *hit, path, record, shadows), ray, hit->t);
+  Color color = shade(ray, *hit, path, record, shadows);
+  if (fogs_) color = fogged(color, ray, hit->t);
   if (conventions_.clampEachBounce) color = glm::clamp(color, 0.0f, 1.0f);
   if (record) record->color = color;
   return {color, hit->t};
 }
 
 template <class T> Color Tracer<T>::fogged(Color c, const Ray<T>& ray, T t) const {
-  const std::vector<Fog>& fogs = scene_.desc().fogs;
-  if (fogs.empty()) return c;
   const glm::dvec3 dir(ray.dir);
   const double length = glm::length(dir);
-  for (const Fog& f : fogs) c = f.over(c, glm::dvec3(ray.origin), dir / length, double(t) * length);
+  for (const Fog& f : scene_.desc().fogs) c = f.over(c, glm::dvec3(ray.origin), dir / length, double(t) * length);
   return c;
 }
 
@@ -399,7 +399,8 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m
       const double distance = glm::length(toPoint);
       lightColor *= light.shape->at(toPoint / distance, distance);
     }
-    diffuse += lightColor * m.diffuse * std::min(s->nl, 1.0f);
+    const float nl = std::min(s->nl, 1.0f);
+    diffuse += lightColor * m.diffuse * (m.brilliance == 1.0f ? nl : std::pow(nl, m.brilliance));
     if (m.specular == Color(0)) continue;  // a matte surface: no power to take
     const float factor = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, s->l, m.exponent)
                                                            : cookTorranceSpecular(n, v, s->l, m.roughness, m.ior);

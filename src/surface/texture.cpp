@@ -15,6 +15,7 @@ Material layerMaterial(const FinishTerms& f, const Rgbft& c) {
   m.roughness = f.roughness;
   m.reflection = f.reflection;
   m.ior = f.ior;
+  m.brilliance = f.brilliance;
   return m;
 }
 
@@ -40,6 +41,7 @@ Texture bounded(Texture t) {
       b.roughness = m.roughness;
       b.exponent = m.exponent;
       b.ior = m.ior;
+      b.brilliance = m.brilliance;
       return false;
     });
   }
@@ -68,6 +70,7 @@ Material Texture::at(const glm::dvec3& point) const {
     if (cover > 0.5f) {
       m.exponent = top.exponent;
       m.roughness = top.roughness;
+      m.brilliance = top.brilliance;
     }
     m.reflection = top.reflection * cover + m.reflection * (c.filter + c.transmit);
   }

@@ -64,6 +64,12 @@ template <class T> class Scene {
   std::vector<std::unique_ptr<Object<T>>> objects_;
   std::vector<const Object<T>*> scanned_;  // tested one by one in file order: planes, or all without hierarchy
   std::optional<Bvh<T>> hierarchy_;
+  // The objects that cast shadows, when some do not (POV-Ray's no_shadow): shadow rays ask these alone.
+  struct Casters {
+    std::vector<const Object<T>*> scanned;
+    std::optional<Bvh<T>> hierarchy;
+  };
+  std::optional<Casters> casters_;
 };
 
 }  // namespace rt

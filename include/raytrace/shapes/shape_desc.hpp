@@ -32,6 +32,7 @@ struct ObjectDesc {
   Finish finish;  // POV: as written, for sceneinfo
   SourceLoc loc;  // where the object starts, for messages
   bool textured = false;  // the file gave it a pigment or finish of its own (a CSG child without takes its group's)
+  bool noShadow = false;  // POV-Ray's no_shadow: it casts no shadow
   // A texture that varies over the surface, in world space; none when `material` is the same everywhere.
   std::shared_ptr<const Texture> texture;
   // The POV transforms as written (§c.10), in file order; a scene built in code gives its own the same way.

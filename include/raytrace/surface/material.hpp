@@ -27,6 +27,7 @@ struct Material {
   float roughness = 1;   // Cook-Torrance α = roughness² (§c.2)
   float reflection = 0;  // POV `reflection`, .cli Krefl
   float ior = 1;
+  float brilliance = 1;  // POV-Ray's brilliance: the diffuse term takes (n·l) to this power
 };
 
 }  // namespace rt

@@ -15,7 +15,7 @@ struct FinishTerms {
   Color ambient{0};  // POV-Ray's ambient times global_settings' ambient_light
   float diffuse = 0;
   Color specular{0};
-  float exponent = 0, roughness = 1, reflection = 0, ior = 1;
+  float exponent = 0, roughness = 1, reflection = 0, ior = 1, brilliance = 1;
 };
 
 struct TextureLayer {

@@ -58,6 +58,7 @@ class Builder {
     if (auto* csg = std::get_if<CsgDesc>(&o.shape); csg && csg->op == CsgOp::Union) {
       for (ObjectDesc& child : csg->children) {
         child.transforms.insert(child.transforms.end(), o.transforms.begin(), o.transforms.end());
+        child.noShadow = child.noShadow || o.noShadow;
         add(std::move(child), at);
       }
       return;
@@ -197,6 +198,8 @@ class Builder {
       } else if (it.kind == Item::Kind::Keyword) {
         if (it.word == "hollow" || it.word == "sturm") {
           valueAfter(n, i);
+        } else if (it.word == "no_shadow") {
+          o.noShadow = true;
         } else {
           refuse(it.loc, it.word);
         }

@@ -242,7 +242,8 @@ void readFinish(const Node& n, PovFinish& f, Refusals& refusals) {
       f.roughness = x;
     } else if (w == "reflection") {
       f.reflection = x;
-    } else if (w == "brilliance" && x == 1) {
+    } else if (w == "brilliance") {
+      f.brilliance = x;
     } else {
       refusals.refuse(it.loc, w);
     }
@@ -259,6 +260,7 @@ FinishTerms finishTerms(const PovFinish& f, double ior) {
   t.roughness = float(f.roughness);
   t.reflection = float(f.reflection);
   t.ior = float(ior);
+  t.brilliance = float(f.brilliance);
   return t;
 }
 
