@@ -380,3 +380,24 @@ TEST_CASE("splits fall in the gaps between clusters, as a sweep over every bin b
         "    Leaf: {28.9980 -1.0020 -1.0020} - {32.0020 1.0020 1.0020} objects 5 6\n"
         "    Leaf: {31.9980 -1.0020 -1.0020} - {34.0020 1.0020 1.0020} objects 7\n");
 }
+
+TEMPLATE_TEST_CASE("scene: an object with no_shadow is hit but casts no shadow, with or without a hierarchy", "",
+                   float, double) {
+  rt::SceneDesc desc;
+  for (int i = 0; i < 12; ++i) desc.objects.push_back(sphereDesc({3.0 * i, 0, 0}, 1));
+  desc.objects[0].noShadow = true;
+  const rt::Ray<TestType> ray{{0, 0, -5}, {0, 0, 1}};
+  const rt::Interval<TestType> range{TestType(0), TestType(10)};
+  for (const Hierarchy h : {Hierarchy::Never, Hierarchy::Always}) {
+    const rt::Scene<TestType> scene(desc, robustArithmetic<TestType>(), h);
+    CHECK(scene.closestHit(ray, range));
+    CHECK_FALSE(scene.occluded(ray, range));
+    bool shadowed = true;
+    const rt::Object<TestType>* last = nullptr;
+    scene.occluded(&ray, &range, 1, &shadowed, &last);
+    CHECK_FALSE(shadowed);
+    // The sphere at x = 3 still casts one.
+    const rt::Ray<TestType> other{{3, 0, -5}, {0, 0, 1}};
+    CHECK(scene.occluded(other, range));
+  }
+}

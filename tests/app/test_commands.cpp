@@ -344,3 +344,21 @@ TEST_CASE("cli: a .cli write outside the current folder needs --allow-write-anyw
   CHECK(run({"render", scene, "4", "4", "--allow-write-anywhere"}).status == 0);
   CHECK(dir.names() == std::vector<std::string>{"out.png", "s.cli"});
 }
+
+TEST_CASE("cli: a POV-Ray scene's diffuse light takes brilliance as the power of n·l, written as sRGB") {
+  const rt::test::TempDir dir;
+  // The plane y = 0 seen from straight above, lit from 60° off its normal: n·l = ½.
+  const std::string scene = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+                            "camera { location <0, 5, 0> look_at 0 }\n"
+                            "light_source { <1000 * sqrt(3), 1000, 0> rgb 1 }\n"
+                            "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 BRILLIANCE } }\n";
+  const auto colour = [&](const std::string& brilliance) {
+    std::string text = scene;
+    text.replace(text.find("BRILLIANCE"), 10, brilliance);
+    const Run r = run({"pixelcolor", dir.write("b.pov", text), "9", "9", "4", "4"});
+    REQUIRE(r.status == 0);
+    return r.out.substr(r.out.find("Color: "));
+  };
+  CHECK(colour("") == "Color: (188, 188, 188)\n");             // sRGB(0.5)
+  CHECK(colour("brilliance 2") == "Color: (137, 137, 137)\n");  // sRGB(0.25)
+}
