@@ -10,7 +10,9 @@ Material layerMaterial(const FinishTerms& f, const Rgbft& c) {
   m.filter = c.filter;
   m.ambient = f.ambient * c.rgb;
   m.diffuse = f.diffuse * c.rgb;
-  m.specular = f.specular;
+  // POV-Ray's metallic highlight takes the pigment's colour; its empirical change toward white at grazing
+  // angles is not modelled (docs/povray-language.md, "Finish").
+  m.specular = f.specular * (Color(1) + f.metallic * (c.rgb - Color(1)));
   m.exponent = f.exponent;
   m.roughness = f.roughness;
   m.reflection = f.reflection;

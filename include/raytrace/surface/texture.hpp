@@ -15,6 +15,7 @@ struct FinishTerms {
   Color ambient{0};  // POV-Ray's ambient times global_settings' ambient_light
   float diffuse = 0;
   Color specular{0};
+  float metallic = 0;  // the highlight's share that takes the pigment's colour
   float exponent = 0, roughness = 1, reflection = 0, ior = 1, brilliance = 1;
 };
 

@@ -223,6 +223,10 @@ void readFinish(const Node& n, PovFinish& f, Refusals& refusals) {
     const std::string_view w = it.word;
     if (w == "conserve_energy") continue;
     const Value* v = valueAfter(n, i);
+    if (w == "metallic") {
+      f.metallic = v && v->numeric() ? v->v[0] : 1;  // the value is optional
+      continue;
+    }
     if (!v || !v->numeric()) {
       refusals.refuse(it.loc, w);
       continue;
@@ -261,6 +265,7 @@ FinishTerms finishTerms(const PovFinish& f, double ior) {
   t.reflection = float(f.reflection);
   t.ior = float(ior);
   t.brilliance = float(f.brilliance);
+  t.metallic = float(f.metallic);
   return t;
 }
 

@@ -38,7 +38,7 @@ bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, 
 // A finish with POV-Ray 3.7's defaults.
 struct PovFinish {
   Color ambient{0.1f};
-  double diffuse = 0.6, phong = 0, phongSize = 40, specular = 0, roughness = 0.05, reflection = 0, brilliance = 1;
+  double diffuse = 0.6, phong = 0, phongSize = 40, specular = 0, roughness = 0.05, reflection = 0, brilliance = 1, metallic = 0;
 };
 
 struct SurfaceLayer {
