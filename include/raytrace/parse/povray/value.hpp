@@ -56,6 +56,12 @@ struct Value {
   bool numeric() const { return type == Type::Float || type == Type::Vector || type == Type::Colour; }
 };
 
+// A list of more than 5 numbers, `<c1, …, cn>`, which POV-Ray reads only as a polynomial's coefficients (in
+// cubic, quartic and poly): a Vector Value of size n whose ref holds them all.
+struct CoefficientList : Shared {
+  std::vector<double> values;
+};
+
 // The name POV-Ray's messages give a type: "float", "vector", "colour", "string", …
 const char* typeName(const Value& v);
 
