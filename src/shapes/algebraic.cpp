@@ -6,6 +6,8 @@
 #include <limits>
 #include <utility>
 
+#include "raytrace/util/format.hpp"
+
 namespace rt {
 
 std::vector<Monomial> povPolyTerms(int order, const std::vector<double>& coefficients) {
@@ -19,6 +21,19 @@ std::vector<Monomial> povPolyTerms(int order, const std::vector<double>& coeffic
     }
   }
   return terms;
+}
+
+std::string termsText(const std::vector<Monomial>& terms) {
+  std::string text;
+  for (const Monomial& m : terms) {
+    if (!text.empty()) text += ", ";
+    text += fixed4(m.c);
+    for (const auto& [name, power] : {std::pair{" x", m.x}, {" y", m.y}, {" z", m.z}}) {
+      if (power > 0) text += name;
+      if (power > 1) text += "^" + std::to_string(power);
+    }
+  }
+  return text;
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #include <map>
 #include <memory>
 #include <random>
+#include <sstream>
 #include <tuple>
 #include <vector>
 
@@ -179,4 +180,12 @@ TEST_CASE("a spawned ray does not find the surface it leaves", "[poly]") {
     if (again) CHECK(again->t > 1e-6);
   }
   CHECK(hits > 500);
+}
+
+TEST_CASE("sceneinfo lists a poly's nonzero terms", "[poly]") {
+  std::ostringstream out;
+  PolyDesc{4, kManualTorus, true}.describe(out);
+  CHECK(out.str() ==
+        "- Order: 4\n- Terms: 1.0000 x^4, 2.0000 x^2 y^2, 2.0000 x^2 z^2, -104.0000 x^2, 1.0000 y^4, 2.0000 y^2 z^2, "
+        "56.0000 y^2, 1.0000 z^4, -104.0000 z^2, 784.0000\n- Sturm: yes\n");
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "raytrace/geometry/math.hpp"
@@ -21,6 +22,8 @@ struct Monomial {
 // from the highest down, within each those of y, within each those of z (the table of the POV-Ray 3.7 manual,
 // §3.4.5.3.2). Terms of coefficient 0 are left out.
 std::vector<Monomial> povPolyTerms(int order, const std::vector<double>& coefficients);
+// The terms as `sceneinfo` lists them: "1.0000 x^2 y, -1.0000".
+std::string termsText(const std::vector<Monomial>& terms);
 // How many coefficients a poly of that order has: (order+1)(order+2)(order+3)/6.
 inline size_t povPolyTermCount(int order) { return size_t((order + 1) * (order + 2) * (order + 3) / 6); }
 

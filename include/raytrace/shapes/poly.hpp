@@ -52,10 +52,8 @@ struct PolyDesc {
   Ball boundingBall() const { return {glm::dvec3(0), 0}; }  // unbounded: the origin its equation is written about
   FlatFaces flatFaces() const { return {}; }                // computed in double
   void describe(std::ostream& out) const {
-    out << "- Order: " << order << "\n- Coefficients:";
-    for (const double c : coefficients) out << " " << fixed4(c);
-    out << "\n";
-    if (sturm) out << "- Sturm\n";
+    out << "- Order: " << order << "\n- Terms: " << termsText(povPolyTerms(order, coefficients))
+        << "\n- Sturm: " << (sturm ? "yes" : "no") << "\n";
   }
   template <class T> std::unique_ptr<Object<T>> make(const ObjectBuild& b) const {
     return std::make_unique<Algebraic<T>>(AlgebraicSurface(povPolyTerms(order, coefficients),

@@ -31,8 +31,8 @@ struct TorusDesc {
   Ball boundingBall() const { return {glm::dvec3(0), major + minor}; }
   FlatFaces flatFaces() const { return {}; }  // curved, and computed in double
   void describe(std::ostream& out) const {
-    out << "- Major radius: " << fixed4(major) << "\n- Minor radius: " << fixed4(minor) << "\n";
-    if (sturm) out << "- Sturm\n";
+    out << "- Major radius: " << fixed4(major) << "\n- Minor radius: " << fixed4(minor)
+        << "\n- Sturm: " << (sturm ? "yes" : "no") << "\n";
   }
   std::vector<Monomial> terms() const {
     const double sum = major * major + minor * minor, difference = major * major - minor * minor;

@@ -104,9 +104,10 @@ cubic { <1,0,0,0, 0,0,0, 0,0,0, 1,0,0, 0,0,0, 1,0,0, -1> translate <C, 0, 0> }
 #declare Q = quartic { <1, 0, 0, 0, 2, 0, 0, 2, 0, -104, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 2, 0, 56, 0,
                         0, 0, 0, 1, 0, -104, 0, 392 * C> }
 object { Q sturm }
+torus { 1, 0.25 sturm off }
 poly { 3 - 1, <1 0 0 0 1 0 0 1 0, -1> }  // without commas, as POV-Ray allows
 )");
-  REQUIRE(s.objects.size() == 5);
+  REQUIRE(s.objects.size() == 6);
   CHECK(std::get<TorusDesc>(s.objects[0].shape).sturm);
   CHECK(s.objects[0].material.pigment == Color(1, 0, 0));
   CHECK(std::get<QuadricDesc>(s.objects[1].shape).squares == glm::dvec3(1));
@@ -120,7 +121,8 @@ poly { 3 - 1, <1 0 0 0 1 0 0 1 0, -1> }  // without commas, as POV-Ray allows
   CHECK(quartic.coefficients.size() == 35);
   CHECK(quartic.coefficients[34] == 784);
   CHECK(quartic.sturm);
-  const auto& poly = std::get<PolyDesc>(s.objects[4].shape);
+  CHECK_FALSE(std::get<TorusDesc>(s.objects[4].shape).sturm);
+  const auto& poly = std::get<PolyDesc>(s.objects[5].shape);
   CHECK(poly.order == 2);
   CHECK(poly.coefficients == std::vector<double>{1, 0, 0, 0, 1, 0, 0, 1, 0, -1});
 }
