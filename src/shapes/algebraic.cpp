@@ -133,8 +133,9 @@ std::optional<double> AlgebraicSurface::firstHit(const glm::dvec3& o, const glm:
   const Polynomial slope = f.derivative();
   const double gamma = 8 * degree_ * std::numeric_limits<double>::epsilon();
   for (int i = 0; i < n; ++i) {
-    const double s = roots[i];
-    if (s - gamma * m(std::abs(s)) / std::abs(slope(s)) > sLo) return (t0 + s) / len;
+    const double s = roots[i], t = (t0 + s) / len;
+    // t itself checked too: rounding t0 + s could bring it back to lo, and a CSG asking again from lo would loop.
+    if (s - gamma * m(std::abs(s)) / std::abs(slope(s)) > sLo && lo < t && t < hi) return t;
   }
   return std::nullopt;
 }
@@ -151,6 +152,7 @@ std::optional<Hit<T>> Algebraic<T>::intersect(const Ray<T>& ray, Interval<T> ran
   p -= surface_.value(p) / gg * g;  // one Newton step onto the surface (docs/reference/stability.md F4)
   Hit<T> hit;
   hit.t = T(*t);
+  if (!range.surrounds(hit.t)) return std::nullopt;  // rounded to float onto an end of the range
   hit.point = Vec3<T>(p);
   hit.normal = Vec3<T>(g / std::sqrt(gg));
   hit.object = this;

@@ -1,5 +1,6 @@
 #include <cmath>
 #include <memory>
+#include <random>
 
 #include <catch2/catch.hpp>
 
@@ -66,4 +67,23 @@ TEST_CASE("quadric sweeps: crossings against inside() on a hyperboloid and a con
   test::paritySweep<double>(*cone, glm::dvec3(-3), glm::dvec3(3), 1e-6, 22);
   const auto saddle = quadric({0, 0, 0}, {1, 0, 0}, {0, 0, -1}, 0);
   test::paritySweep<double>(*saddle, glm::dvec3(-3), glm::dvec3(3), 1e-6, 23);
+}
+
+// A CSG asks for the next hit from the last one; a hit at or before the interval's start would repeat forever.
+TEST_CASE("each next hit lies strictly beyond the last, whatever the direction's length", "[quadric]") {
+  const auto paraboloid = quadric({1, 0, 1}, {0, 0, 0}, {0, -1, 0}, 0);
+  std::mt19937 rng(24);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  for (int i = 0; i < 20000; ++i) {
+    const glm::dvec3 origin(3 * unit(rng), 3 * unit(rng), 3 * unit(rng));
+    const glm::dvec3 dir = glm::dvec3(unit(rng), unit(rng), unit(rng)) * std::pow(10.0, 2 * unit(rng));
+    double from = 0;
+    for (int k = 0; k < 4; ++k) {
+      const auto hit = paraboloid->intersect(Ray<double>{origin, dir}, {from, 1e300});
+      if (!hit) break;
+      CAPTURE(i, k);
+      REQUIRE(hit->t > from);
+      from = hit->t;
+    }
+  }
 }
