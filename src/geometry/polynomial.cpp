@@ -200,7 +200,8 @@ struct Isolation {
 
 int realRoots(const Polynomial& poly, double lo, double hi, double* roots, int most, RootMethod method) {
   const Polynomial p = poly.trimmed();
-  if (p.degree == 0 || most <= 0) return 0;
+  most = std::min(most, p.degree);
+  if (most <= 0) return 0;
   const double bound = 1.01 * rootBound(p) + std::numeric_limits<double>::min();
   lo = std::max(lo, -bound);
   hi = std::min(hi, bound);

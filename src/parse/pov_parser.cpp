@@ -222,7 +222,8 @@ class PovParser {
       throw ParseError(close.loc, std::string("expected ',' or '>' in ") + what + ", found " + close.quoted());
     }
     if (c.size() != n) {
-      throw ParseError(close.loc, std::string(what) + " need " + std::to_string(n) + " numbers, found " + std::to_string(c.size()));
+      throw ParseError(close.loc,
+                       std::string(what) + " need " + std::to_string(n) + " numbers, found " + std::to_string(c.size()));
     }
     return c;
   }

@@ -52,7 +52,7 @@ std::optional<Hit<double>> shoot(const Object<double>& o, const glm::dvec3& orig
   return o.intersect(Ray<double>{origin, glm::normalize(dir)}, Interval<double>{});
 }
 
-// The manual's "torus the hard way" (POV-Ray 3.7 manual §3.4.5.3.4): major radius √40, minor √12.
+// The manual's "torus the hard way" (POV-Ray 3.7 manual §3.4.5.3.5): major radius √40, minor √12.
 const std::vector<double> kManualTorus = {1,    0, 0, 0, 2, 0, 0,    2, 0,   //
                                           -104, 0, 0, 0, 0, 0, 0,    0, 0,   //
                                           0,    0, 1, 0, 0, 2, 0,    56, 0,  //

@@ -20,7 +20,7 @@ struct Monomial {
 
 // The terms of POV-Ray's `poly` of an order (2 to 7) from its coefficients in POV-Ray's order: the powers of x
 // from the highest down, within each those of y, within each those of z (the table of the POV-Ray 3.7 manual,
-// §3.4.5.3.2). Terms of coefficient 0 are left out.
+// §3.4.5.3.5). Terms of coefficient 0 are left out.
 std::vector<Monomial> povPolyTerms(int order, const std::vector<double>& coefficients);
 // The terms as `sceneinfo` lists them: "1.0000 x^2 y, -1.0000".
 std::string termsText(const std::vector<Monomial>& terms);

@@ -17,7 +17,7 @@ namespace rt {
 // What a file says of a polynomial surface: `cubic { <20 coefficients> }`, `quartic { <35 coefficients> }`
 // or `poly { order, <coefficients> }`, each with an optional `sturm`: the sum of the coefficients times their
 // terms in POV-Ray's order (povPolyTerms) equals 0, solid where it is negative (POV-Ray 3.7 manual
-// §3.4.5.3.2–4). POV-Ray's orders go up to 35; ours up to 7.
+// §3.4.5.3.2–5). POV-Ray's orders go up to 35; ours up to 7.
 struct PolyDesc {
   static constexpr int kMaxOrder = Polynomial::kMaxDegree;
   int order;
@@ -35,7 +35,8 @@ struct PolyDesc {
       const SourceLoc at = r.here();
       const double order = r.number("the poly order");
       if (!(order >= 2 && order < kMaxOrder + 1)) {
-        throw ParseError(at, "the poly order must be from 2 to " + std::to_string(kMaxOrder) + ", found " + shortest(order));
+        throw ParseError(at, "the poly order must be from 2 to " + std::to_string(kMaxOrder) + ", found " +
+                                 shortest(order));
       }
       p.order = int(order);  // as POV-Ray does, the whole part
       r.comma("after the poly order");

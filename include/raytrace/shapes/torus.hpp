@@ -12,8 +12,8 @@ namespace rt {
 
 // What a file says of a torus: `torus { major, minor [sturm] }`, POV-Ray's ring in the x-z plane around the
 // y axis, its tube's centre line `major` from the axis and the tube `minor` thick. The surface is the quartic
-// (|p|² + R² − r²)² − 4R²(x² + z²) = 0 (POV-Ray 3.7 manual §3.4.5.3.2, "a torus the hard way"), solid where it
-// is negative; with major < minor the tube passes through the axis (a spindle torus).
+// (|p|² + R² − r²)² − 4R²(x² + z²) = 0 (POV-Ray 3.7 manual §3.4.5.3.5, "a torus the hard way"), solid
+// where it is negative; with major < minor the tube passes through the axis (a spindle torus).
 struct TorusDesc {
   double major, minor;
   bool sturm = false;  // POV-Ray's `sturm`, a modifier (povray/scene_builder)
@@ -36,9 +36,11 @@ struct TorusDesc {
   }
   std::vector<Monomial> terms() const {
     const double sum = major * major + minor * minor, difference = major * major - minor * minor;
-    return {{1, 4, 0, 0},    {1, 0, 4, 0},    {1, 0, 0, 4},           {2, 2, 2, 0},         {2, 2, 0, 2},
-            {2, 0, 2, 2},    {-2 * sum, 2, 0, 0}, {2 * difference, 0, 2, 0}, {-2 * sum, 0, 0, 2},
-            {difference * difference, 0, 0, 0}};
+    return {{1, 4, 0, 0},        {1, 0, 4, 0},
+            {1, 0, 0, 4},        {2, 2, 2, 0},
+            {2, 2, 0, 2},        {2, 0, 2, 2},
+            {-2 * sum, 2, 0, 0}, {2 * difference, 0, 2, 0},
+            {-2 * sum, 0, 0, 2}, {difference * difference, 0, 0, 0}};
   }
   template <class T> std::unique_ptr<Object<T>> make(const ObjectBuild& b) const {
     const T outer = T(major + minor);

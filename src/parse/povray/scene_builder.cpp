@@ -281,10 +281,14 @@ class Builder {
     }
     std::vector<double> coefficients(size_t n, const char* what) {
       const Item& it = take(what);
-      if (it.value.type != Value::Type::Vector) throw ParseError(it.loc, std::string("expected a list of ") + what + ", found a " + typeName(it.value));
+      if (it.value.type != Value::Type::Vector) {
+        throw ParseError(it.loc, std::string("expected a list of ") + what + ", found a " + typeName(it.value));
+      }
       const auto* list = dynamic_cast<const CoefficientList*>(it.value.ref.get());
-      std::vector<double> c = list ? list->values : std::vector<double>(it.value.v.begin(), it.value.v.begin() + it.value.size);
-      if (c.size() != n) throw ParseError(it.loc, std::string(what) + " need " + std::to_string(n) + " numbers, found " + std::to_string(c.size()));
+      const std::vector<double> c = list ? list->values : std::vector<double>(it.value.v.begin(), it.value.v.begin() + it.value.size);
+      if (c.size() != n) {
+        throw ParseError(it.loc, std::string(what) + " need " + std::to_string(n) + " numbers, found " + std::to_string(c.size()));
+      }
       return c;
     }
     void comma(const char*) {}  // the interpreter has dropped them

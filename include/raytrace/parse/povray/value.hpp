@@ -56,8 +56,8 @@ struct Value {
   bool numeric() const { return type == Type::Float || type == Type::Vector || type == Type::Colour; }
 };
 
-// A list of more than 5 numbers, `<c1, …, cn>`, which POV-Ray reads only as a polynomial's coefficients (in
-// cubic, quartic and poly): a Vector Value of size n whose ref holds them all.
+// A polynomial's coefficients `<c1, …, cn>`, a list of any length that POV-Ray reads only in a cubic, a quartic
+// or a poly: a Vector Value of size n (its first five in v) whose ref holds them all.
 struct CoefficientList : Shared {
   std::vector<double> values;
 };
