@@ -2,6 +2,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <string>
 #include <random>
 #include <sstream>
 #include <tuple>
@@ -10,6 +11,7 @@
 #include <catch2/catch.hpp>
 
 #include "raytrace/shapes/poly.hpp"
+#include "raytrace/parse/pov_parser.hpp"
 #include "raytrace/shapes/torus.hpp"
 #include "shape_oracle.hpp"
 
@@ -188,4 +190,25 @@ TEST_CASE("sceneinfo lists a poly's nonzero terms", "[poly]") {
   CHECK(out.str() ==
         "- Order: 4\n- Terms: 1.0000 x^4, 2.0000 x^2 y^2, 2.0000 x^2 z^2, -104.0000 x^2, 1.0000 y^4, 2.0000 y^2 z^2, "
         "56.0000 y^2, 1.0000 z^4, -104.0000 z^2, 784.0000\n- Sturm: yes\n");
+}
+
+namespace {
+
+std::string messageOf(const std::string& object) {
+  try {
+    parsePov("camera { location <0,0,5> look_at <0,0,0> }\n" + object, "s.pov");
+  } catch (const ParseError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("impossible polys are refused where the mistake is: the order, the count, all zero", "[poly]") {
+  CHECK(messageOf("poly { 8, <1, 2> }") == "s.pov:2:8: error: the poly order must be from 2 to 7, found 8");
+  CHECK(messageOf("poly { 1, <1, 2> }") == "s.pov:2:8: error: the poly order must be from 2 to 7, found 1");
+  CHECK(messageOf("quartic { <1, 2, 3> }") == "s.pov:2:19: error: the quartic coefficients need 35 numbers, found 3");
+  CHECK(messageOf("cubic { <0,0,0,0, 0,0,0, 0,0,0, 0,0,0, 0,0,0, 0,0,0, 5> }") ==
+        "s.pov:2:9: error: the cubic coefficients of x, y and z are all zero");
 }

@@ -1,10 +1,12 @@
 #include <cmath>
 #include <memory>
+#include <string>
 #include <random>
 
 #include <catch2/catch.hpp>
 
 #include "raytrace/shapes/quadric.hpp"
+#include "raytrace/parse/pov_parser.hpp"
 #include "shape_oracle.hpp"
 
 using namespace rt;
@@ -86,4 +88,22 @@ TEST_CASE("each next hit lies strictly beyond the last, whatever the direction's
       from = hit->t;
     }
   }
+}
+
+namespace {
+
+std::string messageOf(const std::string& object) {
+  try {
+    parsePov("camera { location <0,0,5> look_at <0,0,0> }\n" + object, "s.pov");
+  } catch (const ParseError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("a quadric with no x, y or z in it is refused where its coefficients begin", "[quadric]") {
+  CHECK(messageOf("quadric { <0,0,0>, <0,0,0>, <0,0,0>, 1 }") ==
+        "s.pov:2:11: error: the quadric's coefficients of x, y and z are all zero");
 }

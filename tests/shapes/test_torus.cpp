@@ -1,9 +1,11 @@
 #include <cmath>
 #include <memory>
+#include <string>
 
 #include <catch2/catch.hpp>
 
 #include "raytrace/shapes/torus.hpp"
+#include "raytrace/parse/pov_parser.hpp"
 #include "shape_oracle.hpp"
 
 using namespace rt;
@@ -108,4 +110,22 @@ TEST_CASE("a spindle torus (major < minor) has its inside where the quartic is n
   CHECK(t->inside(glm::dvec3(1, 0, 0)));
   CHECK_FALSE(t->inside(glm::dvec3(0, 0, 0)));  // in the lemon the two sides of the tube close off
   test::paritySweep<double>(*t, glm::dvec3(-1.5, -1, -1.5), glm::dvec3(1.5, 1, 1.5), 1e-6, 10);
+}
+
+namespace {
+
+std::string messageOf(const std::string& object) {
+  try {
+    parsePov("camera { location <0,0,5> look_at <0,0,0> }\n" + object, "s.pov");
+  } catch (const ParseError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("a torus without a tube is refused where its minor radius is written", "[torus]") {
+  CHECK(messageOf("torus { 1, 0 }") == "s.pov:2:12: error: the torus minor radius must be greater than 0, found 0");
+  CHECK(messageOf("torus { -1, 0.5 }") == "s.pov:2:9: error: the torus major radius must not be negative, found -1");
 }
