@@ -50,15 +50,17 @@ Polynomial times(const Polynomial& a, const Polynomial& b) {
   return p;
 }
 
-// (a + b·s)^k for k = 0 … n.
+// (a + b·s)^k for k = 0 … n, each from the one before: c_i ← a·c_i + b·c_{i−1}.
 Powers linearPowers(double a, double b, int n) {
   Powers p;
   p[0].c[0] = 1;
-  Polynomial line;
-  line.degree = 1;
-  line.c[0] = a;
-  line.c[1] = b;
-  for (int k = 1; k <= n; ++k) p[size_t(k)] = times(p[size_t(k - 1)], line);
+  for (int k = 1; k <= n; ++k) {
+    const Polynomial& q = p[size_t(k - 1)];
+    Polynomial& r = p[size_t(k)];
+    r.degree = k;
+    r.c[0] = a * q.c[0];
+    for (int i = 1; i <= k; ++i) r.c[size_t(i)] = a * q.c[size_t(i)] + b * q.c[size_t(i - 1)];
+  }
   return p;
 }
 
@@ -82,6 +84,12 @@ double AlgebraicSurface::value(const glm::dvec3& p) const {
   return v;
 }
 
+double AlgebraicSurface::magnitude(const glm::dvec3& q) const {
+  double v = 0;
+  for (const Monomial& m : terms_) v += std::abs(m.c) * power(q.x, m.x) * power(q.y, m.y) * power(q.z, m.z);
+  return v;
+}
+
 glm::dvec3 AlgebraicSurface::gradient(const glm::dvec3& p) const {
   glm::dvec3 g(0);
   for (const Monomial& m : terms_) {
@@ -94,9 +102,9 @@ glm::dvec3 AlgebraicSurface::gradient(const glm::dvec3& p) const {
 }
 
 // The ray is written as c + s·u with u the unit direction and c its point nearest the origin, so that the
-// coefficients are made from numbers no larger than the surface's own, and t = (t0 + s) / |d|. Beside f along
-// the ray it builds the same sum of the terms' magnitudes, m(s), which bounds the rounding of f's coefficients:
-// a root s of f is uncertain by about γ·m(|s|)/|f′(s)|.
+// coefficients are made from numbers no larger than the surface's own, and t = (t0 + s) / |d|. The terms'
+// magnitudes at |c| + |s|·|u| bound the rounding of f's coefficients there, so a root s of f is uncertain by
+// about γ·magnitude/|f′(s)|.
 std::optional<double> AlgebraicSurface::firstHit(const glm::dvec3& o, const glm::dvec3& d, double lo, double hi,
                                                  double reach) const {
   const double len = glm::length(d);
@@ -115,18 +123,13 @@ std::optional<double> AlgebraicSurface::firstHit(const glm::dvec3& o, const glm:
   }
   const Powers x = linearPowers(c.x, u.x, degree_), y = linearPowers(c.y, u.y, degree_),
                z = linearPowers(c.z, u.z, degree_);
-  const Powers xm = linearPowers(std::abs(c.x), std::abs(u.x), degree_),
-               ym = linearPowers(std::abs(c.y), std::abs(u.y), degree_),
-               zm = linearPowers(std::abs(c.z), std::abs(u.z), degree_);
-  Polynomial f, m;
-  f.degree = m.degree = degree_;
+  Polynomial f;
+  f.degree = degree_;
   for (const Monomial& t : terms_) {
-    const Polynomial term = times(times(x[size_t(t.x)], y[size_t(t.y)]), z[size_t(t.z)]);
-    const Polynomial size = times(times(xm[size_t(t.x)], ym[size_t(t.y)]), zm[size_t(t.z)]);
-    for (int i = 0; i <= term.degree; ++i) {
-      f.c[size_t(i)] += t.c * term.c[size_t(i)];
-      m.c[size_t(i)] += std::abs(t.c) * size.c[size_t(i)];
-    }
+    Polynomial term = x[size_t(t.x)];
+    if (t.y > 0) term = times(term, y[size_t(t.y)]);
+    if (t.z > 0) term = times(term, z[size_t(t.z)]);
+    for (int i = 0; i <= term.degree; ++i) f.c[size_t(i)] += t.c * term.c[size_t(i)];
   }
   double roots[kMax];
   const int n = realRoots(f, a, b, roots, degree_, method_);
@@ -134,8 +137,9 @@ std::optional<double> AlgebraicSurface::firstHit(const glm::dvec3& o, const glm:
   const double gamma = 8 * degree_ * std::numeric_limits<double>::epsilon();
   for (int i = 0; i < n; ++i) {
     const double s = roots[i], t = (t0 + s) / len;
+    const double size = magnitude(glm::abs(c) + std::abs(s) * glm::abs(u));
     // t itself checked too: rounding t0 + s could bring it back to lo, and a CSG asking again from lo would loop.
-    if (s - gamma * m(std::abs(s)) / std::abs(slope(s)) > sLo && lo < t && t < hi) return t;
+    if (s - gamma * size / std::abs(slope(s)) > sLo && lo < t && t < hi) return t;
   }
   return std::nullopt;
 }

@@ -40,6 +40,9 @@ class AlgebraicSurface {
   std::optional<double> firstHit(const glm::dvec3& o, const glm::dvec3& d, double lo, double hi, double reach) const;
 
  private:
+  // Σ|c|·q.x^x·q.y^y·q.z^z: the sum of the terms' magnitudes at a point of non-negative coordinates.
+  double magnitude(const glm::dvec3& q) const;
+
   std::vector<Monomial> terms_;
   int degree_;
   RootMethod method_;
