@@ -2,16 +2,16 @@
 #include <cmath>
 #include <map>
 #include <memory>
-#include <string>
 #include <random>
 #include <sstream>
+#include <string>
 #include <tuple>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
-#include "raytrace/shapes/poly.hpp"
 #include "raytrace/parse/pov_parser.hpp"
+#include "raytrace/shapes/poly.hpp"
 #include "raytrace/shapes/torus.hpp"
 #include "shape_oracle.hpp"
 

@@ -1,12 +1,12 @@
 #include <cmath>
 #include <memory>
-#include <string>
 #include <random>
+#include <string>
 
 #include <catch2/catch.hpp>
 
-#include "raytrace/shapes/quadric.hpp"
 #include "raytrace/parse/pov_parser.hpp"
+#include "raytrace/shapes/quadric.hpp"
 #include "shape_oracle.hpp"
 
 using namespace rt;

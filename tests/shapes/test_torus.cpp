@@ -4,8 +4,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "raytrace/shapes/torus.hpp"
 #include "raytrace/parse/pov_parser.hpp"
+#include "raytrace/shapes/torus.hpp"
 #include "shape_oracle.hpp"
 
 using namespace rt;
