@@ -84,6 +84,22 @@ TEST_CASE("POV-Ray's term order: x's powers from the highest, then y's, then z's
   REQUIRE(cubic.size() == 6);
   CHECK((cubic[4].x == 1 && cubic[4].y == 2 && cubic[4].z == 0));
   CHECK((cubic[5].x == 1 && cubic[5].y == 1 && cubic[5].z == 1));
+  // Entries of the manual's table for orders 5 to 7: A41, A42, A81, A85 and A120.
+  const auto powersAt = [](int order, size_t index) {
+    std::vector<double> c(povPolyTermCount(order), 0);
+    c[index - 1] = 1;
+    const Monomial m = povPolyTerms(order, c).at(0);
+    return std::tuple{m.x, m.y, m.z};
+  };
+  CHECK(powersAt(5, 41) == std::tuple{0, 3, 0});
+  CHECK(powersAt(6, 41) == std::tuple{1, 3, 0});
+  CHECK(powersAt(7, 41) == std::tuple{2, 3, 0});
+  CHECK(powersAt(5, 42) == std::tuple{0, 2, 3});
+  CHECK(powersAt(7, 42) == std::tuple{2, 2, 3});
+  CHECK(powersAt(6, 81) == std::tuple{0, 0, 3});
+  CHECK(powersAt(7, 81) == std::tuple{1, 0, 3});
+  CHECK(powersAt(7, 85) == std::tuple{0, 7, 0});
+  CHECK(powersAt(7, 120) == std::tuple{0, 0, 0});
 }
 
 TEST_CASE("the manual's quartic torus is hit where the torus is, by both root finders", "[poly]") {
