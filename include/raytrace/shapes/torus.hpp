@@ -11,7 +11,7 @@
 namespace rt {
 
 // What a file says of a torus: `torus { major, minor [sturm] }`, POV-Ray's ring in the x-z plane around the
-// y axis, its tube's centre line `major` from the axis and the tube `minor` thick. The surface is the quartic
+// y axis, its tube's centre line `major` from the axis and the tube's radius `minor`. The surface is the quartic
 // (|p|² + R² − r²)² − 4R²(x² + z²) = 0 (POV-Ray 3.7 manual §3.4.5.3.5, "a torus the hard way"), solid
 // where it is negative; with major < minor the tube passes through the axis (a spindle torus).
 struct TorusDesc {
