@@ -209,6 +209,24 @@ class PovParser {
     return {v[0], v[1], v[2]};
   }
   double number(const char* what) { return numberFor(what); }
+  std::vector<double> coefficients(size_t n, const char* what) {
+    expect('<', std::string("to start ") + what);
+    std::vector<double> c;
+    for (;;) {
+      c.push_back(numberFor(what));
+      if (!isPunct(peek(), ',')) break;
+      next();
+    }
+    const Token& close = next();
+    if (!isPunct(close, '>')) {
+      throw ParseError(close.loc, std::string("expected ',' or '>' in ") + what + ", found " + close.quoted());
+    }
+    if (c.size() != n) {
+      throw ParseError(close.loc,
+                       std::string(what) + " need " + std::to_string(n) + " numbers, found " + std::to_string(c.size()));
+    }
+    return c;
+  }
   void comma(const char* after) { expect(',', after); }
   SourceLoc here() const { return peek().loc; }
   bool objectNext() const { return peek().kind == Token::Kind::Word && isShapeKeyword(peek().text); }

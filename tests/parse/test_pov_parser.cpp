@@ -321,6 +321,27 @@ TEST_CASE("pov: impossible shapes") {
   CHECK(errorOf("cone { <0,0,0>, 0, <0,1,0>, 0 }") == "s.pov:2:8: error: both cone radii are zero");
   CHECK(errorOf("cone { <0,0,0>, 1, <0,0,0>, 0 }") ==
         "s.pov:2:8: error: the cone's base and cap centres are the same point");
+  CHECK(errorOf("torus { 1, 0 }") == "s.pov:2:12: error: the torus minor radius must be greater than 0, found 0");
+  CHECK(errorOf("poly { 8, <1, 2> }") == "s.pov:2:8: error: the poly order must be from 2 to 7, found 8");
+  CHECK(errorOf("quadric { <0,0,0>, <0,0,0>, <0,0,0>, 1 }") ==
+        "s.pov:2:11: error: the quadric's coefficients of x, y and z are all zero");
+  CHECK(errorOf("cubic { <0,0,0,0, 0,0,0, 0,0,0, 0,0,0, 0,0,0, 0,0,0, 5> }") ==
+        "s.pov:2:9: error: the cubic coefficients of x, y and z are all zero");
+  CHECK(errorOf("cubic { <1, 2, 3> }") == "s.pov:2:17: error: the cubic coefficients need 20 numbers, found 3");
+}
+
+TEST_CASE("pov: the polynomial shapes, coefficients in POV-Ray's order") {
+  const SceneDesc s = parse("torus { 2, 0.5 }\nquadric { <1,1,1>, <0,0,0>, <0,0,0>, -1 }\n"
+                            "poly { 2, <1,0,0,0, 1,0,0, 1,0, -1> }\n"
+                            "quartic { <1,0,0,0,2,0,0,2,0, -104,0,0,0,0,0,0,0,0, 0,0,1,0,0,2,0,56,0, 0,0,0,1,0,-104,0,784> }");
+  REQUIRE(s.objects.size() == 4);
+  CHECK(std::get<rt::TorusDesc>(s.objects[0].shape).major == 2);
+  CHECK(std::get<rt::QuadricDesc>(s.objects[1].shape).constant == -1);
+  CHECK(std::get<rt::PolyDesc>(s.objects[2].shape).order == 2);
+  const auto& quartic = std::get<rt::PolyDesc>(s.objects[3].shape);
+  CHECK(quartic.order == 4);
+  REQUIRE(quartic.coefficients.size() == 35);
+  CHECK(quartic.coefficients[34] == 784);
 }
 
 TEST_CASE("pov: impossible cameras, located at the camera keyword") {

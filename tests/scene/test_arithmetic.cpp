@@ -81,6 +81,21 @@ TEST_CASE("precision: every shape's extent and smallest feature") {
   CHECK(budget(rt::ConeDesc{{0, 0, 0}, 0.25, {0, 1, 0}, 0}) == Approx(2 * root3 * 0.75 / 0.25));
 }
 
+// A torus's lengths are its tube and its outer radius; the polynomial shapes are computed in double whatever
+// their scale (their kinds' float error is not bounded).
+TEST_CASE("precision: the polynomial shapes") {
+  rt::SceneDesc s = withCamera({0, 0, 0});
+  add(s, rt::TorusDesc{2, 0.5});
+  CHECK(rt::precisionBudget(s) == Approx(2 * std::sqrt(3.0) * 2.5 / 0.5));
+  CHECK(rt::chooseArithmetic(s).tier == Tier::Double);
+  rt::SceneDesc q = withCamera({0, 0, 5});
+  add(q, rt::QuadricDesc{{1, 1, 1}, {0, 0, 0}, {0, 0, 0}, -1});
+  CHECK(rt::chooseArithmetic(q).tier == Tier::Double);
+  rt::SceneDesc p = withCamera({0, 0, 5});
+  add(p, rt::PolyDesc{2, {1, 0, 0, 0, 1, 0, 0, 1, 0, -1}});
+  CHECK(rt::chooseArithmetic(p).tier == Tier::Double);
+}
+
 TEST_CASE("precision: transforms scale both the extent and the features") {
   rt::SceneDesc s = withCamera({0, 0, 1});
   add(s, rt::SphereDesc{{0, 0, 0}, 1}, {{rt::TransformStep::Kind::Scale, {0.1, 1, 1}}});

@@ -78,4 +78,39 @@ void sweep(const Object<T>& object, const Depth<T>& depth, const Vec3<T>& lo, co
   }
 }
 
+// A seeded sweep of rays through a box around the shape, each from a random point up to twice as far out: the
+// hits found one after another (each next one asked for beyond the last) are the surface's crossings, so
+// inside() must keep its answer between two of them and change it across each. Samples within `margin` of a
+// crossing are left out.
+template <class T>
+void paritySweep(const Object<T>& object, const Vec3<T>& lo, const Vec3<T>& hi, T margin, unsigned seed,
+                 int rays = 2000) {
+  CAPTURE(seed);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<T> unit(T(0), T(1));
+  const Vec3<T> size = hi - lo;
+  const auto randomIn = [&](const Vec3<T>& a, const Vec3<T>& b) {
+    return a + Vec3<T>(unit(rng), unit(rng), unit(rng)) * (b - a);
+  };
+  for (int r = 0; r < rays; ++r) {
+    const Vec3<T> origin = randomIn(lo - size, hi + size), target = randomIn(lo, hi);
+    const Ray<T> ray{origin, glm::normalize(target - origin)};
+    const T end = T(2) * glm::length(target - origin);
+    CAPTURE(origin.x, origin.y, origin.z, target.x, target.y, target.z);
+    bool in = object.inside(origin);
+    T from = 0;
+    for (int crossing = 0; crossing < 16 && from < end; ++crossing) {
+      const auto hit = object.intersect(ray, Interval<T>{from, end});
+      const T to = hit ? hit->t : end;
+      for (int k = 1; k < 8; ++k) {
+        const T t = from + (to - from) * T(k) / T(8);
+        if (t - from > margin && to - t > margin) CHECK(object.inside(ray.at(t)) == in);
+      }
+      if (!hit) break;
+      from = to;
+      in = !in;
+    }
+  }
+}
+
 }  // namespace rt::test

@@ -54,6 +54,7 @@ struct ObjectBuild {
 //   double positive(const char* what);      double nonNegative(const char* what);
 //   void comma(const char* after);          SourceLoc here() const;
 //   bool objectNext() const;                ObjectDesc object();   (a whole object, for CSG)
+//   std::vector<double> coefficients(size_t n, const char* what);   `<c1, …, cn>`, exactly n numbers (a poly's)
 // A template parameter rather than a base class: the parser's calls stay inline in its per-object loop.
 
 }  // namespace rt

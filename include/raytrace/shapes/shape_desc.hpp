@@ -17,14 +17,18 @@
 #include "raytrace/shapes/csg.hpp"
 #include "raytrace/shapes/cylinder.hpp"
 #include "raytrace/shapes/plane.hpp"
+#include "raytrace/shapes/poly.hpp"
+#include "raytrace/shapes/quadric.hpp"
 #include "raytrace/shapes/sphere.hpp"
+#include "raytrace/shapes/torus.hpp"
 #include "raytrace/shapes/triangle.hpp"
 #include "raytrace/surface/material.hpp"
 #include "raytrace/util/error.hpp"
 
 namespace rt {
 
-using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc, CsgDesc>;
+using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc, CsgDesc, TorusDesc,
+                               QuadricDesc, PolyDesc>;
 
 struct ObjectDesc {
   ShapeDesc shape;

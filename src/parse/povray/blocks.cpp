@@ -13,6 +13,11 @@ namespace {
 // The most elements an array may have: a typo in a size should be a message, not an exhausted memory.
 constexpr double kMaxArrayElements = 1e8;
 
+// Where POV-Ray reads a polynomial's coefficients: first in a cubic or a quartic, after the order in a poly.
+bool coefficientsHere(std::string_view keyword, size_t itemsBefore) {
+  return ((keyword == "cubic" || keyword == "quartic") && itemsBefore == 0) || (keyword == "poly" && itemsBefore == 1);
+}
+
 }  // namespace
 
 // Whether `t` begins a value rather than being a keyword of the block it is in.
@@ -181,6 +186,9 @@ std::shared_ptr<const Node> Interpreter::block(std::string_view keyword, const S
       next();
       item.kind = Item::Kind::Value;
       item.value = functionValue(item.loc);
+    } else if (t.is("<") && coefficientsHere(keyword, node->items.size())) {
+      item.kind = Item::Kind::Value;
+      item.value = coefficientList(item.loc);
     } else if (startsExpression(t)) {
       item.kind = Item::Kind::Value;
       item.value = expression();

@@ -257,6 +257,27 @@ Value Interpreter::vectorLiteral(const SourceLoc& at) {
   return Value::vector(c, n);
 }
 
+// `<c1, c2, …>` of any length, a CoefficientList: a polynomial's coefficients, where a block reads them.
+Value Interpreter::coefficientList(const SourceLoc& at) {
+  const Nested nested(*this, at);
+  next();
+  auto list = std::make_shared<CoefficientList>();
+  for (;;) {
+    const SourceLoc cAt = here();
+    const Value v = expression();
+    if (v.type != Value::Type::Float) fail(cAt, std::string("a coefficient must be a float, found a ") + typeName(v));
+    list->values.push_back(v.v[0]);
+    if (peekOperator(",")) next();
+    if (peekOperator(">")) break;
+  }
+  expect(">", "to close the coefficients");
+  std::array<double, 5> first{};
+  std::copy_n(list->values.begin(), std::min<size_t>(5, list->values.size()), first.begin());
+  Value r = Value::vector(first, int(list->values.size()));
+  r.ref = std::move(list);
+  return r;
+}
+
 // `color`/`colour`, then any of rgb/rgbf/rgbt/rgbft (and srgb…), red/green/blue/filter/transmit, or a
 // colour or vector expression, in sequence.
 Value Interpreter::colour(const SourceLoc& at) {

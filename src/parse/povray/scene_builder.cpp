@@ -99,6 +99,18 @@ class Builder {
       if (v < 0) throw ParseError(at, std::string(what) + " must not be negative, found " + shortest(v));
       return v;
     }
+    std::vector<double> coefficients(size_t n, const char* what) {
+      const Item& it = take(what);
+      if (it.value.type != Value::Type::Vector) {
+        throw ParseError(it.loc, std::string("expected a list of ") + what + ", found a " + typeName(it.value));
+      }
+      const auto* list = dynamic_cast<const CoefficientList*>(it.value.ref.get());
+      const std::vector<double> c = list ? list->values : std::vector<double>(it.value.v.begin(), it.value.v.begin() + it.value.size);
+      if (c.size() != n) {
+        throw ParseError(it.loc, std::string(what) + " need " + std::to_string(n) + " numbers, found " + std::to_string(c.size()));
+      }
+      return c;
+    }
     void comma(const char*) {}  // the interpreter has dropped them
     SourceLoc here() const { return i_ < n_.items.size() ? n_.items[i_].loc : n_.loc; }
     bool objectNext() {
@@ -126,9 +138,9 @@ class Builder {
   // Whether an item is an object: a shape of ours, or one of POV-Ray's that is refused when read.
   static bool isObject(const Item& it) {
     static constexpr std::string_view kPovObjects[] = {
-        "bicubic_patch", "blob", "cubic", "disc", "height_field", "isosurface", "julia_fractal", "lathe", "mesh",
-        "mesh2", "object", "ovus", "parametric", "poly", "polygon", "polynomial", "prism", "quadric", "quartic",
-        "smooth_triangle", "sor", "sphere_sweep", "superellipsoid", "text", "torus"};
+        "bicubic_patch", "blob", "disc", "height_field", "isosurface", "julia_fractal", "lathe", "mesh", "mesh2",
+        "object", "ovus", "parametric", "polygon", "polynomial", "prism", "smooth_triangle", "sor", "sphere_sweep",
+        "superellipsoid", "text"};
     if (it.kind != Item::Kind::Node) return false;
     const std::string_view k = it.node->keyword;
     return isShapeKeyword(k) || std::find(std::begin(kPovObjects), std::end(kPovObjects), k) != std::end(kPovObjects);
@@ -196,10 +208,13 @@ class Builder {
           refuse(it.loc, m);
         }
       } else if (it.kind == Item::Kind::Keyword) {
-        if (it.word == "hollow" || it.word == "sturm") {
+        if (it.word == "hollow") {
           valueAfter(n, i);
         } else if (it.word == "no_shadow") {
           o.noShadow = true;
+        } else if (it.word == "sturm") {
+          const Value* v = valueAfter(n, i);
+          sturm(o.shape, !v || v->v[0] != 0);
         } else {
           refuse(it.loc, it.word);
         }
@@ -215,6 +230,13 @@ class Builder {
     const glm::dmat4 m = composeTransforms<double>(own);
     for (size_t l = firstLight; l < scene_.lights.size(); ++l) moveLight(scene_.lights[l], m);
     return true;
+  }
+
+  // POV-Ray's `sturm [on]`: the Sturm-sequence root finder for a torus or a polynomial shape; other shapes
+  // take it and have no use for it.
+  static void sturm(ShapeDesc& shape, bool on) {
+    if (auto* torus = std::get_if<TorusDesc>(&shape)) torus->sturm = on;
+    if (auto* poly = std::get_if<PolyDesc>(&shape)) poly->sturm = on;
   }
 
   // The object's material, and its texture when its colour varies over it, moved by the transforms `after`.

@@ -247,7 +247,7 @@ TEST_CASE("povray: what cannot be drawn yet is refused as not supported, after t
   CHECK(failure("#version 3.7;\nsphere { 0, 1 pigment { granite } }\n") ==
         "scene.pov:2:25: error: 'granite' is not supported yet");
   // A typo later in the file is still a typo.
-  CHECK(failure("#version 3.7;\ntorus { 1, 0.5 }\nsphere { 0, 1 pigment { Rde } }\n") ==
+  CHECK(failure("#version 3.7;\nsuperellipsoid { <1, 0.5> }\nsphere { 0, 1 pigment { Rde } }\n") ==
         "scene.pov:3:25: error: undeclared identifier 'Rde'");
 }
 

@@ -135,12 +135,57 @@ TEST_CASE("povray scene: an orthographic camera's size: its right and up, or wha
 }
 
 TEST_CASE("povray scene: a shape or group that cannot be drawn yet is refused where it is written", "[povray]") {
-  CHECK(failure("union { sphere { 0, 1 }\n torus { 1, 0.2 } }\n") == "scene.pov:4:2: error: 'torus' is not supported yet");
+  CHECK(failure("union { sphere { 0, 1 }\n superellipsoid { <1, 1> } }\n") ==
+        "scene.pov:4:2: error: 'superellipsoid' is not supported yet");
   CHECK(failure("intersection { sphere { 0, 1 } plane { y, 0 } inverse }\n") ==
         "scene.pov:3:47: error: 'inverse' is not supported yet");
   CHECK(failure("sphere { 0 }\n") == "scene.pov:3:1: error: 'sphere' needs the sphere radius");
   CHECK(failure("sphere { 0, -1 }\n") == "scene.pov:3:13: error: the sphere radius must be greater than 0, found -1");
   CHECK(failure("difference { pigment { Red } }\n") == "scene.pov:3:14: error: expected an object inside 'difference'");
+}
+
+TEST_CASE("povray scene: torus, quadric, cubic, quartic and poly, their coefficient lists and sturm", "[povray]") {
+  const SceneDesc s = scene(R"(
+#declare C = 2;
+torus { 2, 0.5 pigment { Red } sturm }
+quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }
+cubic { <1,0,0,0, 0,0,0, 0,0,0, 1,0,0, 0,0,0, 1,0,0, -1> translate <C, 0, 0> }
+#declare Q = quartic { <1, 0, 0, 0, 2, 0, 0, 2, 0, -104, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 2, 0, 56, 0,
+                        0, 0, 0, 1, 0, -104, 0, 392 * C> }
+object { Q sturm }
+torus { 1, 0.25 sturm off }
+poly { 3 - 1, <1 0 0 0 1 0 0 1 0, -1> }  // without commas, as POV-Ray allows
+)");
+  REQUIRE(s.objects.size() == 6);
+  CHECK(std::get<TorusDesc>(s.objects[0].shape).sturm);
+  CHECK(s.objects[0].material.pigment == Color(1, 0, 0));
+  CHECK(std::get<QuadricDesc>(s.objects[1].shape).squares == glm::dvec3(1));
+  const auto& cubic = std::get<PolyDesc>(s.objects[2].shape);
+  CHECK(cubic.order == 3);
+  CHECK(cubic.coefficients.size() == 20);
+  CHECK(cubic.coefficients[19] == -1);
+  CHECK_FALSE(cubic.sturm);
+  CHECK(s.objects[2].transforms.size() == 1);
+  const auto& quartic = std::get<PolyDesc>(s.objects[3].shape);
+  CHECK(quartic.coefficients.size() == 35);
+  CHECK(quartic.coefficients[34] == 784);
+  CHECK(quartic.sturm);
+  CHECK_FALSE(std::get<TorusDesc>(s.objects[4].shape).sturm);
+  const auto& poly = std::get<PolyDesc>(s.objects[5].shape);
+  CHECK(poly.order == 2);
+  CHECK(poly.coefficients == std::vector<double>{1, 0, 0, 0, 1, 0, 0, 1, 0, -1});
+}
+
+TEST_CASE("povray scene: impossible polynomial shapes, each refused where it is written", "[povray]") {
+  CHECK(failure("torus { 1, 0 }\n") == "scene.pov:3:12: error: the torus minor radius must be greater than 0, found 0");
+  CHECK(failure("poly { 1, <1, 2, 3, 4> }\n") == "scene.pov:3:8: error: the poly order must be from 2 to 7, found 1");
+  CHECK(failure("poly { 8, <1, 2, 3, 4> }\n") == "scene.pov:3:8: error: the poly order must be from 2 to 7, found 8");
+  CHECK(failure("cubic { <1, 2, 3, 4, 5, 6> }\n") == "scene.pov:3:9: error: the cubic coefficients need 20 numbers, found 6");
+  CHECK(failure("quartic { <1, 2> }\n") == "scene.pov:3:11: error: the quartic coefficients need 35 numbers, found 2");
+  CHECK(failure("poly { 2, <0, 0, 0, 0, 0, 0, 0, 0, 0, 1> }\n") ==
+        "scene.pov:3:11: error: the poly coefficients of x, y and z are all zero");
+  CHECK(failure("quadric { 0, 0, 0, 1 }\n") == "scene.pov:3:11: error: the quadric's coefficients of x, y and z are all zero");
+  CHECK(failure("cubic { <1, 2, x> }\n") == "scene.pov:3:16: error: a coefficient must be a float, found a vector");
 }
 
 }  // namespace

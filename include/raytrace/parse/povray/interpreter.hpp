@@ -137,6 +137,7 @@ class Interpreter {
   Value postfix();
   Value primary();
   Value vectorLiteral(const SourceLoc& at);
+  Value coefficientList(const SourceLoc& at);
   Value colour(const SourceLoc& at);
   Value identifierValue(const Token& t, const SourceLoc& at);
   double number(const char* what);

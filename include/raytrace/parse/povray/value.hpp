@@ -56,6 +56,12 @@ struct Value {
   bool numeric() const { return type == Type::Float || type == Type::Vector || type == Type::Colour; }
 };
 
+// A polynomial's coefficients `<c1, …, cn>`, a list of any length that POV-Ray reads only in a cubic, a quartic
+// or a poly: a Vector Value of size n (its first five in v) whose ref holds them all.
+struct CoefficientList : Shared {
+  std::vector<double> values;
+};
+
 // The name POV-Ray's messages give a type: "float", "vector", "colour", "string", …
 const char* typeName(const Value& v);
 

@@ -1,3 +1,3 @@
 #version 3.7;
 camera { location <0, 1, -4> look_at 0 }
-  torus { 1, 0.25 pigment { rgb 1 } }
+  superellipsoid { <1, 0.25> pigment { rgb 1 } }
