@@ -37,6 +37,14 @@ float blinnPhongSpecular(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, f
 }
 
 template <class T>
+float phongSpecular(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, float exponent) {
+  const Vec3<T> r = T(2) * glm::dot(n, v) * n - v;
+  const float rl = saturate(float(glm::dot(r, l)));
+  if ((1.0f - rl) * exponent > kUnderflowExponent) return 0.0f;  // as in blinnPhongSpecular
+  return std::pow(rl, std::max(exponent, 0.0f));
+}
+
+template <class T>
 float cookTorranceSpecular(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, float roughness, float ior) {
   const float nl = float(glm::dot(n, l));
   const float nv = float(glm::dot(n, v));
@@ -101,6 +109,8 @@ Weights weights(const Material& m, float fresnel, bool reflectionMixes) {
 
 template float blinnPhongSpecular(const Vec3<float>&, const Vec3<float>&, const Vec3<float>&, float);
 template float blinnPhongSpecular(const Vec3<double>&, const Vec3<double>&, const Vec3<double>&, float);
+template float phongSpecular(const Vec3<float>&, const Vec3<float>&, const Vec3<float>&, float);
+template float phongSpecular(const Vec3<double>&, const Vec3<double>&, const Vec3<double>&, float);
 template float cookTorranceSpecular(const Vec3<float>&, const Vec3<float>&, const Vec3<float>&, float, float);
 template float cookTorranceSpecular(const Vec3<double>&, const Vec3<double>&, const Vec3<double>&, float, float);
 template Vec3<float> reflectDirection(const Vec3<float>&, const Vec3<float>&);

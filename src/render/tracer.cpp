@@ -402,7 +402,9 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m
     const float nl = std::min(s->nl, 1.0f);
     diffuse += lightColor * m.diffuse * (m.brilliance == 1.0f ? nl : std::pow(nl, m.brilliance));
     if (m.specular == Color(0)) continue;  // a matte surface: no power to take
-    const float factor = options_.brdf == Brdf::BlinnPhong ? blinnPhongSpecular(n, v, s->l, m.exponent)
+    const float factor = options_.brdf == Brdf::BlinnPhong ? m.lobe == Material::Lobe::Mirror
+                                                                 ? phongSpecular(n, v, s->l, m.exponent)
+                                                                 : blinnPhongSpecular(n, v, s->l, m.exponent)
                                                            : cookTorranceSpecular(n, v, s->l, m.roughness, m.ior);
     specular += lightColor * m.specular * factor;
   }

@@ -18,6 +18,7 @@ Material layerMaterial(const FinishTerms& f, const Rgbft& c) {
   m.reflection = f.reflection;
   m.ior = f.ior;
   m.brilliance = f.brilliance;
+  m.lobe = f.lobe;
   return m;
 }
 
@@ -73,6 +74,7 @@ Material Texture::at(const glm::dvec3& point) const {
       m.exponent = top.exponent;
       m.roughness = top.roughness;
       m.brilliance = top.brilliance;
+      m.lobe = top.lobe;
     }
     m.reflection = top.reflection * cover + m.reflection * (c.filter + c.transmit);
   }

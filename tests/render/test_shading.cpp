@@ -174,3 +174,15 @@ TEST_CASE("Shading terms stay finite for random unit vectors", "[shading]") {
     if (t) CHECK(std::isfinite(t->x + t->y + t->z));
   }
 }
+
+TEST_CASE("Phong specular is the clamped cosine between the light and the view's mirror direction", "[shading]") {
+  // Viewer 45° off the normal on one side: its mirror is 45° off on the other side.
+  const Vec3<double> v = unit(0, 1, 1);
+  CHECK_THAT(phongSpecular(up, v, unit(0, -1, 1), 10.0f), WithinAbs(1.0, 1e-6));
+  // The light straight above is 45° from the mirror direction.
+  CHECK_THAT(phongSpecular(up, v, up, 4.0f), WithinAbs(std::pow(std::cos(M_PI / 4), 4.0), 1e-6));
+  // Beyond 90° from the mirror direction, nothing.
+  CHECK(phongSpecular(up, v, unit(0, 1, 0.2), 4.0f) == 0.0f);
+  // The same light for Blinn-Phong has its half vector 22.5° off the normal: the lobes differ.
+  CHECK(blinnPhongSpecular(up, v, up, 4.0f) > phongSpecular(up, v, up, 4.0f));
+}

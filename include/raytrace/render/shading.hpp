@@ -18,6 +18,10 @@ enum class Brdf { BlinnPhong, CookTorrance };
 // p = 2/roughness² − 2 negative, and 0^p infinite; such exponents are treated as 0.
 template <class T> float blinnPhongSpecular(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, float exponent);
 
+// Phong's own specular factor clamp(r·l, 0, 1)^p with r the mirror of v about n (Phong 1975), as POV-Ray's
+// `phong` highlight; its `specular` is the half-vector form above.
+template <class T> float phongSpecular(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, float exponent);
+
 // Cook-Torrance with the GGX distribution, Smith-GGX shadowing and Schlick's Fresnel (§c.2), as the factor
 // D·G·F / (4·max(1/16, n·v)) that multiplies Lc·ks·C (the n·l of the sum cancels the one in the BRDF).
 template <class T>

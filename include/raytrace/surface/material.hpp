@@ -28,6 +28,9 @@ struct Material {
   float reflection = 0;  // POV `reflection`, .cli Krefl
   float ior = 1;
   float brilliance = 1;  // POV-Ray's brilliance: the diffuse term takes (n·l) to this power
+  // The highlight's lobe: about the half vector (course, .cli, POV-Ray's `specular`) or about the mirror
+  // direction (POV-Ray's `phong`).
+  enum class Lobe : unsigned char { HalfVector, Mirror } lobe = Lobe::HalfVector;
 };
 
 }  // namespace rt

@@ -16,6 +16,7 @@ struct FinishTerms {
   float diffuse = 0;
   Color specular{0};
   float metallic = 0;  // the highlight's share that takes the pigment's colour
+  Material::Lobe lobe = Material::Lobe::HalfVector;
   float exponent = 0, roughness = 1, reflection = 0, ior = 1, brilliance = 1;
 };
 

@@ -266,6 +266,7 @@ FinishTerms finishTerms(const PovFinish& f, double ior) {
   t.ior = float(ior);
   t.brilliance = float(f.brilliance);
   t.metallic = float(f.metallic);
+  t.lobe = f.specular > 0 ? Material::Lobe::HalfVector : Material::Lobe::Mirror;
   return t;
 }
 
