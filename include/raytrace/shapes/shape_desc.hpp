@@ -18,13 +18,15 @@
 #include "raytrace/shapes/cylinder.hpp"
 #include "raytrace/shapes/plane.hpp"
 #include "raytrace/shapes/sphere.hpp"
+#include "raytrace/shapes/text.hpp"
 #include "raytrace/shapes/triangle.hpp"
 #include "raytrace/surface/material.hpp"
 #include "raytrace/util/error.hpp"
 
 namespace rt {
 
-using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc, CsgDesc>;
+using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc, CsgDesc,
+                               TextDesc>;
 
 struct ObjectDesc {
   ShapeDesc shape;
