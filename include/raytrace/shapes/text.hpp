@@ -106,7 +106,10 @@ template <class T> class Text final : public Object<T> {
     double lo, size;
     std::vector<std::vector<uint32_t>> items;
     Slices(double from, double to, size_t count);
-    size_t at(double v) const { return size_t(std::clamp((v - lo) / size, 0.0, double(items.size() - 1))); }
+    size_t at(double v) const {  // the first slice for anything before the span, or NaN
+      const double k = (v - lo) / size;
+      return k > 0 ? size_t(std::min(k, double(items.size() - 1))) : 0;
+    }
     void add(uint32_t item, double from, double to);
   };
   // Whether the glyph fills the point of its plane, by the non-zero rule.
