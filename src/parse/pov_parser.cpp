@@ -231,6 +231,11 @@ class PovParser {
   SourceLoc here() const { return peek().loc; }
   bool objectNext() const { return peek().kind == Token::Kind::Word && isShapeKeyword(peek().text); }
   ObjectDesc object() { return readObject(next()); }
+  // The course language has no strings, and so no text: the first of these a text's read() calls stops it.
+  bool keyword(std::string_view) const { throw noStrings(); }
+  std::string string(const char*) const { throw noStrings(); }
+  std::string findFont(const std::string&) const { throw noStrings(); }
+  ParseError noStrings() const { return ParseError(here(), "'text' is read only in POV-Ray 3.7 scenes"); }
   double positive(const char* what) {
     const SourceLoc at = peek().loc;
     const double v = numberFor(what);

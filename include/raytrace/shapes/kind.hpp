@@ -55,6 +55,9 @@ struct ObjectBuild {
 //   void comma(const char* after);          SourceLoc here() const;
 //   bool objectNext() const;                ObjectDesc object();   (a whole object, for CSG)
 //   std::vector<double> coefficients(size_t n, const char* what);   `<c1, …, cn>`, exactly n numbers (a poly's)
+//   bool keyword(std::string_view word);    takes the keyword `word` if it comes next
+//   std::string string(const char* what);   std::string findFont(const std::string& name);  ("" if nowhere)
+// The course language has no strings: its parser refuses the last three.
 // A template parameter rather than a base class: the parser's calls stay inline in its per-object loop.
 
 }  // namespace rt

@@ -21,6 +21,7 @@
 #include "raytrace/shapes/quadric.hpp"
 #include "raytrace/shapes/sphere.hpp"
 #include "raytrace/shapes/torus.hpp"
+#include "raytrace/shapes/text.hpp"
 #include "raytrace/shapes/triangle.hpp"
 #include "raytrace/surface/material.hpp"
 #include "raytrace/util/error.hpp"
@@ -28,7 +29,7 @@
 namespace rt {
 
 using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc, CsgDesc, TorusDesc,
-                               QuadricDesc, PolyDesc>;
+                               QuadricDesc, PolyDesc, TextDesc>;
 
 struct ObjectDesc {
   ShapeDesc shape;

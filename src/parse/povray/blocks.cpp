@@ -186,6 +186,10 @@ std::shared_ptr<const Node> Interpreter::block(std::string_view keyword, const S
       next();
       item.kind = Item::Kind::Value;
       item.value = functionValue(item.loc);
+    } else if (keyword == "text" && t.isWord("internal")) {
+      // A text's font selector (`internal 1`), not the built-in function of that name.
+      item.word = next().text;
+      item.kind = Item::Kind::Keyword;
     } else if (t.is("<") && coefficientsHere(keyword, node->items.size())) {
       item.kind = Item::Kind::Value;
       item.value = coefficientList(item.loc);

@@ -228,6 +228,15 @@ std::string Interpreter::findFile(const std::string& name) const {
   return "";
 }
 
+std::string Interpreter::findFont(const std::string& name) const {
+  for (const std::string& file : {name, name + ".ttf"}) {
+    const std::string path = findFile(file), debian = "/usr/share/fonts/truetype/povray/" + file;
+    if (!path.empty()) return path;
+    if (file[0] != '/' && isFile(debian)) return debian;
+  }
+  return "";
+}
+
 // Removes the innermost identifier of that name, if any.
 void Interpreter::undefine(std::string_view id) {
   for (size_t i = scopes_.size(); i-- > 0;) {

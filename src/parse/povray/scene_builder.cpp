@@ -16,7 +16,7 @@ namespace {
 
 class Builder {
  public:
-  explicit Builder(SceneDesc& scene) : scene_(scene) {}
+  Builder(SceneDesc& scene, const Interpreter& interpreter) : scene_(scene), interpreter_(interpreter) {}
 
   void statement(const Node& n) {
     const std::string_view k = n.keyword;
@@ -112,6 +112,20 @@ class Builder {
       return c;
     }
     void comma(const char*) {}  // the interpreter has dropped them
+    bool keyword(std::string_view word) {
+      if (i_ >= n_.items.size() || n_.items[i_].kind != Item::Kind::Keyword || n_.items[i_].word != word) return false;
+      ++i_;
+      return true;
+    }
+    std::string string(const char* what) {
+      const Item& it = take(what);
+      if (it.value.type != Value::Type::String) throw ParseError(it.loc, std::string("expected a string for ") + what + ", found a " + typeName(it.value));
+      // POV-Ray's default charset, ascii, turns every byte past 127 into a blank; utf8 and sys keep them.
+      std::string s = it.value.s;
+      if (b_.asciiStrings_) std::replace_if(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) > 127; }, ' ');
+      return s;
+    }
+    std::string findFont(const std::string& name) const { return b_.interpreter_.findFont(name); }
     SourceLoc here() const { return i_ < n_.items.size() ? n_.items[i_].loc : n_.loc; }
     bool objectNext() {
       while (i_ < n_.items.size() && b_.lightHere(n_.items[i_])) ++i_;
@@ -140,7 +154,7 @@ class Builder {
     static constexpr std::string_view kPovObjects[] = {
         "bicubic_patch", "blob", "disc", "height_field", "isosurface", "julia_fractal", "lathe", "mesh", "mesh2",
         "object", "ovus", "parametric", "polygon", "polynomial", "prism", "smooth_triangle", "sor", "sphere_sweep",
-        "superellipsoid", "text"};
+        "superellipsoid"};
     if (it.kind != Item::Kind::Node) return false;
     const std::string_view k = it.node->keyword;
     return isShapeKeyword(k) || std::find(std::begin(kPovObjects), std::end(kPovObjects), k) != std::end(kPovObjects);
@@ -464,6 +478,7 @@ class Builder {
       if (it.kind == Item::Kind::Keyword) {
         const std::string_view w = it.word;
         if (w == "charset") {
+          asciiStrings_ = i + 1 < n.items.size() && n.items[i + 1].word == "ascii";
           ++i;
           continue;
         }
@@ -491,6 +506,8 @@ class Builder {
 
  private:
   SceneDesc& scene_;
+  const Interpreter& interpreter_;
+  bool asciiStrings_ = true;  // global_settings' charset
   Surface default_;
   Refusals refusals_;
 };
@@ -531,7 +548,7 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
     const size_t eq = d.find('=');
     interpreter.declare(d.substr(0, eq), eq == std::string::npos ? "1" : d.substr(eq + 1));
   }
-  Builder builder(scene);
+  Builder builder(scene, interpreter);
   interpreter.run(path, text, [&](const std::shared_ptr<const Node>& n) { builder.statement(*n); },
                   [&](const std::shared_ptr<const Node>& n) { builder.defaults(*n); });
   builder.finish();

@@ -51,6 +51,10 @@ class Interpreter {
   // The files the scene wrote, in memory (DataFileDesc), for the caller to put on disk or not.
   std::vector<DataFileDesc> takeDataFiles() { return std::move(dataFiles_); }
 
+  // Where a text object's font file is: where an include file would be, else in the folder Debian's
+  // fonts-povray installs; as named, else with .ttf added (as POV-Ray does); "" if nowhere.
+  std::string findFont(const std::string& name) const;
+
  private:
   struct Slot;
   struct Scope;
