@@ -333,7 +333,9 @@ Value Interpreter::identifierValue(const Token& t, const SourceLoc& at) {
   if (!slot) fail(at, "undeclared identifier '" + std::string(t.text) + "'");
   const std::string_view name = t.text;
   next();
-  const Value* v = &slot->value;
+  // A copy: reading what follows may end the identifier's scope (a macro's #end after its returned value).
+  const Value held = slot->value;
+  const Value* v = &held;
   while (v->type == Value::Type::Array && peekOperator("[")) {
     const auto& a = static_cast<const ArrayValue&>(*v->ref);
     size_t flat = 0;

@@ -165,6 +165,29 @@ inner else
 )");
 }
 
+TEST_CASE("povray: a macro returns a local array, which outlives the macro's scope", "[povray]") {
+  // POV-Ray prints 4.0 twice.
+  CHECK(run(R"(#version 3.7;
+#macro M(N)
+  #local A = array[N + 1][2]
+  #local I = 0;
+  #while (I <= N)
+    #local A[I][0] = I;
+    #local A[I][1] = 2 * I;
+    #local I = I + 1;
+  #end
+  A
+#end
+#macro Use()
+  #declare V = M(3)
+  #debug concat(str(V[2][1], 0, 1), "\n")
+#end
+Use()
+#declare W = M(2)
+#debug concat(str(W[2][1], 0, 1), "\n")
+)") == "4.0\n4.0\n");
+}
+
 TEST_CASE("povray: rand gives POV-Ray's sequence for each seed", "[povray]") {
   CHECK(run(R"(#declare R = seed(0); #declare S = seed(12345);
 #debug concat(str(R,0,0), " ", str(S,0,0), "\n")
