@@ -1,6 +1,7 @@
 #include "raytrace/surface/texture.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rt {
 
@@ -22,43 +23,78 @@ Material layerMaterial(const FinishTerms& f, const Rgbft& c) {
   return m;
 }
 
-namespace {
-
-Color largest(const Color& a, const Color& b) { return glm::max(a, b); }
-
-}  // namespace
-
 Texture bounded(Texture t) {
   Material& b = t.bound;
   b = Material{};
   b.exponent = 0;
+  const auto take = [&b](const Material& m) {
+    b.pigment = glm::max(b.pigment, m.pigment);
+    b.filter = std::max(b.filter, m.filter);
+    b.ambient = glm::max(b.ambient, m.ambient);
+    b.diffuse = glm::max(b.diffuse, m.diffuse);
+    b.specular = glm::max(b.specular, m.specular);
+    b.reflection = std::max(b.reflection, m.reflection);
+    b.roughness = m.roughness;
+    b.exponent = m.exponent;
+    b.ior = m.ior;
+    b.brilliance = m.brilliance;
+  };
   for (const TextureLayer& layer : t.layers) {
+    if (layer.pattern) {
+      for (const auto& sub : layer.pattern->textures) take(sub->bound);
+      continue;
+    }
     anyColour(*layer.pigment, [&](const Rgbft& c) {
-      const Material m = layerMaterial(layer.finish, c);
-      b.pigment = largest(b.pigment, m.pigment);
-      b.filter = std::max(b.filter, m.filter);
-      b.ambient = largest(b.ambient, m.ambient);
-      b.diffuse = largest(b.diffuse, m.diffuse);
-      b.specular = largest(b.specular, m.specular);
-      b.reflection = std::max(b.reflection, m.reflection);
-      b.roughness = m.roughness;
-      b.exponent = m.exponent;
-      b.ior = m.ior;
-      b.brilliance = m.brilliance;
+      take(layerMaterial(layer.finish, c));
       return false;
     });
   }
   return t;
 }
 
+namespace {
+
+// a at t = 0, b at t = 1: the colour terms blended, the others taken from the nearer.
+Material blend(const Material& a, const Material& b, float t) {
+  Material m = t < 0.5f ? a : b;
+  const auto lerp = [t](const Color& x, const Color& y) { return x + (y - x) * t; };
+  m.pigment = lerp(a.pigment, b.pigment);
+  m.ambient = lerp(a.ambient, b.ambient);
+  m.diffuse = lerp(a.diffuse, b.diffuse);
+  m.specular = lerp(a.specular, b.specular);
+  m.filter = a.filter + (b.filter - a.filter) * t;
+  m.reflection = a.reflection + (b.reflection - a.reflection) * t;
+  return m;
+}
+
+// The texture a texture pattern gives at p.
+Material patterned(const TexturePattern& tp, const glm::dvec3& p) {
+  const glm::dvec3 q = glm::dvec3(tp.fromTexture * glm::dvec4(p, 1));
+  const double v = tp.selector.at(q).rgb.r;
+  const size_t last = tp.textures.size() - 1;
+  const size_t lo = std::min(size_t(std::max(0.0, std::floor(v))), last);
+  const float t = float(v - double(lo));
+  const Material a = tp.textures[lo]->at(q);
+  return t > 0 && lo < last ? blend(a, tp.textures[lo + 1]->at(q), t) : a;
+}
+
+}  // namespace
+
 // Each layer covers the ones below it except where its filter and transmit let them through: filtered light
 // takes the layer's colour, transmitted light does not (POV-Ray 3.7 manual, "Layered Textures").
-Material Texture::at(const glm::dvec3& point) const {
-  const glm::dvec3 p = glm::dvec3(fromWorld * glm::dvec4(point, 1));
+Material Texture::inSpace(const glm::dvec3& p) const {
   Material m;
   for (size_t i = 0; i < layers.size(); ++i) {
-    const Rgbft c = layers[i].pigment->at(p);
-    const Material top = layerMaterial(layers[i].finish, c);
+    const TextureLayer& layer = layers[i];
+    Rgbft c;
+    Material top;
+    if (layer.pattern) {
+      top = patterned(*layer.pattern, p);
+      c = {top.pigment, top.filter, 0};
+    } else {
+      c = layer.pigment->at(p);
+      top = layerMaterial(layer.finish, c);
+    }
     if (i == 0) {
       m = top;
       continue;

@@ -20,9 +20,21 @@ struct FinishTerms {
   float exponent = 0, roughness = 1, reflection = 0, ior = 1, brilliance = 1;
 };
 
+struct Texture;
+
+// A pattern that picks whole textures (`checker texture { … } texture { … }`) or blends them (`texture_map`):
+// the selector is a pigment whose red channel is the index of the texture at a point, fractional between two
+// entries of a map.
+struct TexturePattern {
+  Pigment selector;
+  std::vector<std::shared_ptr<const Texture>> textures;
+  glm::dmat4 fromTexture{1};  // the pattern's transforms, which move its textures too
+};
+
 struct TextureLayer {
   std::shared_ptr<const Pigment> pigment;
   FinishTerms finish;
+  std::shared_ptr<const TexturePattern> pattern;  // when set, it gives the layer instead of pigment and finish
 };
 
 struct Texture {
@@ -31,7 +43,9 @@ struct Texture {
   Material bound;                    // each term's largest value anywhere (bounded()), for the tracer's cut-off
 
   // What shading reads at a world point of the surface.
-  Material at(const glm::dvec3& point) const;
+  Material at(const glm::dvec3& point) const { return inSpace(glm::dvec3(fromWorld * glm::dvec4(point, 1))); }
+  // The same at a point of texture space.
+  Material inSpace(const glm::dvec3& p) const;
 };
 
 // The texture with `bound` filled in: each term's largest over every colour its pigments can give. A blend

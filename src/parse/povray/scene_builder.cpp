@@ -43,7 +43,7 @@ class Builder {
   void defaults(const Node& n) {
     for (const Item& i : n.items) {
       if (i.kind != Item::Kind::Node) continue;
-      readSurfaceItem(*i.node, default_, refusals_);
+      readSurfaceItem(*i.node, default_, default_, refusals_);
     }
   }
 
@@ -216,7 +216,7 @@ class Builder {
           // A second texture block is a layer on top of the first.
           if (m == "texture" && textureBlock) s.layers.emplace_back();
           textureBlock = textureBlock || m == "texture";
-          readSurfaceItem(*it.node, s, refusals_);
+          readSurfaceItem(*it.node, s, default_, refusals_);
           if (!textureFrom) textureFrom = o.transforms.size();
         } else {
           refuse(it.loc, m);
@@ -512,14 +512,22 @@ class Builder {
   Refusals refusals_;
 };
 
+// The texture with every layer's ambient term scaled, in the textures of its patterns too.
+Texture ambientScaled(Texture t, const Color& light) {
+  for (TextureLayer& layer : t.layers) {
+    layer.finish.ambient *= light;
+    if (!layer.pattern) continue;
+    auto pattern = std::make_shared<TexturePattern>(*layer.pattern);
+    for (auto& sub : pattern->textures) sub = std::make_shared<const Texture>(ambientScaled(*sub, light));
+    layer.pattern = pattern;
+  }
+  return bounded(std::move(t));
+}
+
 // global_settings' ambient_light scales every ambient term, a CSG group's parts' too.
 void scaleAmbient(ObjectDesc& o, const Color& light) {
   o.material.ambient *= light;
-  if (o.texture) {
-    Texture t = *o.texture;
-    for (TextureLayer& layer : t.layers) layer.finish.ambient *= light;
-    o.texture = std::make_shared<const Texture>(bounded(std::move(t)));
-  }
+  if (o.texture) o.texture = std::make_shared<const Texture>(ambientScaled(*o.texture, light));
   if (auto* csg = std::get_if<CsgDesc>(&o.shape)) {
     for (ObjectDesc& child : csg->children) scaleAmbient(child, light);
   }

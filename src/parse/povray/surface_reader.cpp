@@ -80,6 +80,29 @@ std::shared_ptr<const Pigment> solidPigment(const Rgbft& c) {
 
 void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals);
 
+// frequency, phase and the wave types; false for any other item.
+bool readWave(const Node& n, size_t& i, Pigment& p) {
+  const Item& it = n.items[i];
+  if (it.kind != Item::Kind::Keyword) return false;
+  const std::string_view w = it.word;
+  constexpr std::pair<std::string_view, Wave> kWaves[] = {{"ramp_wave", Wave::Ramp},       {"triangle_wave", Wave::Triangle},
+                                                          {"sine_wave", Wave::Sine},       {"scallop_wave", Wave::Scallop},
+                                                          {"cubic_wave", Wave::Cubic},     {"poly_wave", Wave::Poly}};
+  for (const auto& [name, wave] : kWaves) {
+    if (w != name) continue;
+    p.wave = wave;
+    if (wave == Wave::Poly && i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value) {
+      p.exponent = valueAfter(n, i)->v[0];
+    }
+    return true;
+  }
+  if (w != "frequency" && w != "phase") return false;
+  const Value* v = valueAfter(n, i);
+  if (!v || v->type != Value::Type::Float) throw ParseError(it.loc, "'" + std::string(w) + "' needs a float");
+  (w == "frequency" ? p.frequency : p.phase) = v->v[0];
+  return true;
+}
+
 }  // namespace
 
 std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals);
@@ -172,27 +195,9 @@ void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, R
       p.pattern = kind->make(args);
       continue;
     }
-    const Value* v = nullptr;
     if (w == "quick_color" || w == "quick_colour") {
       valueAfter(n, i);
-    } else if (w == "frequency" && (v = valueAfter(n, i))) {
-      p.frequency = v->v[0];
-    } else if (w == "phase" && (v = valueAfter(n, i))) {
-      p.phase = v->v[0];
-    } else if (w == "ramp_wave") {
-      p.wave = Wave::Ramp;
-    } else if (w == "triangle_wave") {
-      p.wave = Wave::Triangle;
-    } else if (w == "sine_wave") {
-      p.wave = Wave::Sine;
-    } else if (w == "scallop_wave") {
-      p.wave = Wave::Scallop;
-    } else if (w == "cubic_wave") {
-      p.wave = Wave::Cubic;
-    } else if (w == "poly_wave") {
-      p.wave = Wave::Poly;
-      if (i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value) p.exponent = valueAfter(n, i)->v[0];
-    } else {
+    } else if (!readWave(n, i, p)) {
       refusals.refuse(it.loc, w);
     }
   }
@@ -280,20 +285,88 @@ std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals) 
   return p;
 }
 
-bool Surface::patterned() const { return layers.size() > 1 || layers[0].pigment.pattern; }
+bool Surface::patterned() const { return layers.size() > 1 || layers[0].pigment.pattern || layers[0].pattern; }
 
-void readSurfaceItem(const Node& n, Surface& s, Refusals& refusals) {
+namespace {
+
+// Whether a texture block is a pattern of textures: a pattern keyword or a texture_map in it.
+bool texturePatternIn(const Node& n) {
+  return std::any_of(n.items.begin(), n.items.end(), [](const Item& it) {
+    return (it.kind == Item::Kind::Keyword && patternKind(it.word)) ||
+           (it.kind == Item::Kind::Node && it.node->keyword == "texture_map");
+  });
+}
+
+std::shared_ptr<const Texture> subTexture(const Node& n, const Surface& defaults, Refusals& refusals) {
+  Surface sub = defaults;
+  readSurfaceItem(n, sub, defaults, refusals);
+  return std::make_shared<const Texture>(bounded(makeTexture(sub, {})));
+}
+
+// `texture { checker texture { … } texture { … } }` or `texture { gradient x texture_map { [v texture { … }] … } }`.
+std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Surface& defaults, Refusals& refusals) {
+  auto tp = std::make_shared<TexturePattern>();
+  Pigment& selector = tp->selector;
+  std::vector<TransformStep> steps;
+  for (size_t i = 0; i < n.items.size(); ++i) {
+    const Item& it = n.items[i];
+    if (readTransform(n, i, steps, refusals)) continue;
+    if (it.kind == Item::Kind::Node && it.node->keyword == "texture") {
+      tp->textures.push_back(subTexture(*it.node, defaults, refusals));
+    } else if (it.kind == Item::Kind::Node && it.node->keyword == "texture_map") {
+      for (const Item& e : it.node->items) {
+        const bool entry = e.kind == Item::Kind::Node && e.node->keyword == "[" && e.node->items.size() == 2 &&
+                           e.node->items[0].kind == Item::Kind::Value && e.node->items[1].kind == Item::Kind::Node;
+        if (!entry) {
+          refusals.refuse(e, "a texture_map entry");
+          continue;
+        }
+        selector.map.push_back({e.node->items[0].value.v[0], solidPigment({Color(float(tp->textures.size())), 0, 0})});
+        tp->textures.push_back(subTexture(*e.node->items[1].node, defaults, refusals));
+      }
+    } else if (it.kind == Item::Kind::Keyword && patternKind(it.word)) {
+      const PatternKind* kind = patternKind(it.word);
+      PatternArgs args;
+      if (kind->needsVector) {
+        const Value* v = valueAfter(n, i);
+        if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a vector");
+        args.vector = vec3(*v);
+        args.hasVector = true;
+      }
+      selector.pattern = kind->make(args);
+    } else if (!readWave(n, i, selector)) {
+      refusals.refuse(it, "texture");
+    }
+  }
+  const int blocks = selector.pattern ? selector.pattern->blocks() : 0;
+  for (int b = 0; b < blocks; ++b) selector.list.push_back(solidPigment({Color(float(b)), 0, 0}));
+  if (!selector.pattern) {
+    refusals.refuse(n.loc, "texture");  // its pattern was refused above
+    tp->textures.assign(1, std::make_shared<const Texture>());
+  } else if (tp->textures.size() < size_t(std::max(blocks, 1)) || (blocks == 0 && selector.map.empty())) {
+    throw ParseError(n.loc, "this texture pattern needs " + std::to_string(std::max(blocks, 1)) +
+                                (blocks ? " textures" : " texture_map"));
+  }
+  tp->fromTexture = glm::inverse(composeTransforms<double>(steps));
+  return tp;
+}
+
+}  // namespace
+
+void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusals& refusals) {
   const std::string_view k = n.keyword;
   SurfaceLayer& top = s.layers.back();
   if (k == "pigment") {
     readPigment(n, top.pigment, top.steps, refusals);
   } else if (k == "finish") {
     readFinish(n, top.finish, refusals);
+  } else if (k == "texture" && texturePatternIn(n)) {
+    top.pattern = readTexturePattern(n, defaults, refusals);
   } else if (k == "texture" || k == "material") {
     for (size_t i = 0; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
       if (it.kind == Item::Kind::Node) {
-        readSurfaceItem(*it.node, s, refusals);
+        readSurfaceItem(*it.node, s, defaults, refusals);
       } else if (!readTransform(n, i, s.layers.back().steps, refusals)) {
         refusals.refuse(it, k);
       }
@@ -302,7 +375,7 @@ void readSurfaceItem(const Node& n, Surface& s, Refusals& refusals) {
     // Each layer starts as POV-Ray's default texture, on top of the ones before.
     for (size_t i = 0; i < n.items.size(); ++i) {
       if (i > 0) s.layers.emplace_back();
-      readSurfaceItem(*n.items[i].node, s, refusals);
+      readSurfaceItem(*n.items[i].node, s, defaults, refusals);
     }
   } else if (k == "interior") {
     for (size_t i = 0; i < n.items.size(); ++i) {
@@ -311,7 +384,7 @@ void readSurfaceItem(const Node& n, Surface& s, Refusals& refusals) {
       if (v && v->type == Value::Type::Float) {
         s.ior = v->v[0];
       } else if (it.kind == Item::Kind::Node && it.node->keyword == "interior") {
-        readSurfaceItem(*it.node, s, refusals);
+        readSurfaceItem(*it.node, s, defaults, refusals);
       } else {
         refusals.refuse(it, "interior");
       }
@@ -343,7 +416,7 @@ Texture makeTexture(const Surface& s, const std::vector<TransformStep>& after) {
   for (const SurfaceLayer& layer : s.layers) {
     auto p = std::make_shared<Pigment>(layer.pigment);
     p->fromTexture = glm::inverse(composeTransforms<double>(layer.steps));
-    t.layers.push_back({p, finishTerms(layer.finish, s.ior)});
+    t.layers.push_back({p, finishTerms(layer.finish, s.ior), layer.pattern});
   }
   t.fromWorld = glm::inverse(composeTransforms<double>(after));
   return t;

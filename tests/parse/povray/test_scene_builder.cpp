@@ -134,6 +134,23 @@ TEST_CASE("povray scene: an orthographic camera's size: its right and up, or wha
   CHECK(angled.camera.up.y == Approx(15));
 }
 
+TEST_CASE("povray scene: a pattern of whole textures picks or blends them, each with its finish", "[povray]") {
+  const SceneDesc s = scene(R"(
+#default { finish { ambient 0.2 } }
+plane { y, 0 texture { checker texture { pigment { Red } finish { diffuse 0.5 } } texture { pigment { Blue } } scale 2 } }
+plane { y, 0 texture { gradient x texture_map { [0 texture { pigment { Black } }] [1 texture { pigment { White } finish { phong 1 } }] } } }
+)");
+  REQUIRE(s.objects.size() == 2);
+  const Texture& checker = *s.objects[0].texture;
+  const Material red = checker.at(glm::dvec3(1, 0, 1)), blue = checker.at(glm::dvec3(3, 0, 1));
+  CHECK(red.diffuse == Color(0.5f, 0, 0));
+  CHECK(red.ambient == Color(0.2f, 0, 0));  // the texture starts as #default's
+  CHECK(blue.diffuse == Color(0, 0, 0.6f));
+  CHECK(checker.bound.diffuse == Color(0.5f, 0, 0.6f));
+  const Material mid = s.objects[1].texture->at(glm::dvec3(0.25, 0, 0));
+  CHECK(mid.pigment.r == Approx(0.25f));
+}
+
 TEST_CASE("povray scene: a shape or group that cannot be drawn yet is refused where it is written", "[povray]") {
   CHECK(failure("union { sphere { 0, 1 }\n superellipsoid { <1, 1> } }\n") ==
         "scene.pov:4:2: error: 'superellipsoid' is not supported yet");

@@ -45,6 +45,7 @@ struct SurfaceLayer {
   Pigment pigment;                       // POV-Ray's default pigment is black
   std::vector<TransformStep> steps;      // the pigment's and texture's own transforms, in order
   PovFinish finish;
+  std::shared_ptr<const TexturePattern> pattern;  // a pattern of whole textures instead
 };
 
 struct Surface {
@@ -56,8 +57,9 @@ struct Surface {
 // A pigment block on its own, its transforms folded into its fromTexture: a map's or a list's entry, a sky's layer.
 std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals);
 
-// pigment, finish, texture, material or interior into `s`; anything else is refused.
-void readSurfaceItem(const Node& n, Surface& s, Refusals& refusals);
+// pigment, finish, texture, material or interior into `s`; anything else is refused. A texture inside a
+// texture pattern starts as `defaults` (#default).
+void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusals& refusals);
 
 // The constant material of the surface's top layer; its ambient is not yet scaled by ambient_light.
 Material constantMaterial(const Surface& s);
