@@ -315,14 +315,19 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
       tp->textures.push_back(subTexture(*it.node, defaults, refusals));
     } else if (it.kind == Item::Kind::Node && it.node->keyword == "texture_map") {
       for (const Item& e : it.node->items) {
-        const bool entry = e.kind == Item::Kind::Node && e.node->keyword == "[" && e.node->items.size() == 2 &&
-                           e.node->items[0].kind == Item::Kind::Value && e.node->items[1].kind == Item::Kind::Node;
+        // `[value texture { … }]`, or `[value pigment { … } finish { … } …]`: a texture's items written bare.
+        const bool entry = e.kind == Item::Kind::Node && e.node->keyword == "[" && e.node->items.size() >= 2 &&
+                           e.node->items[0].kind == Item::Kind::Value && e.node->items[0].value.type == Value::Type::Float;
         if (!entry) {
           refusals.refuse(e, "a texture_map entry");
           continue;
         }
+        Node body;
+        body.keyword = "texture";
+        body.loc = e.loc;
+        body.items.assign(e.node->items.begin() + 1, e.node->items.end());
         selector.map.push_back({e.node->items[0].value.v[0], solidPigment({Color(float(tp->textures.size())), 0, 0})});
-        tp->textures.push_back(subTexture(*e.node->items[1].node, defaults, refusals));
+        tp->textures.push_back(subTexture(body, defaults, refusals));
       }
     } else if (it.kind == Item::Kind::Keyword && patternKind(it.word)) {
       const PatternKind* kind = patternKind(it.word);
