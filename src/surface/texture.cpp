@@ -7,8 +7,10 @@ namespace rt {
 
 Material layerMaterial(const FinishTerms& f, const Rgbft& c) {
   Material m;
-  m.pigment = c.rgb;
-  m.filter = c.filter;
+  // The light let through is filter·C + transmit: the tracer's transmitted share is f + t, tinted by `pigment`.
+  const float through = c.filter + c.transmit;
+  m.pigment = through > 0 ? (c.filter * c.rgb + Color(c.transmit)) / through : c.rgb;
+  m.filter = through;
   m.ambient = f.ambient * c.rgb;
   m.diffuse = f.diffuse * c.rgb;
   // POV-Ray's metallic highlight takes the pigment's colour; its empirical change toward white at grazing
@@ -104,8 +106,10 @@ Material Texture::inSpace(const glm::dvec3& p) const {
     m.ambient = top.ambient * cover + m.ambient * through;
     m.diffuse = top.diffuse * cover + m.diffuse * through;
     m.specular = top.specular * cover + m.specular * through;
-    m.pigment = top.pigment * cover + m.pigment * through;
-    m.filter *= c.filter + c.transmit;
+    // Light through the whole stack is let through by each layer: `pigment` is the tint of that light.
+    const float open = c.filter + c.transmit;
+    if (open > 0) m.pigment *= through / open;
+    m.filter *= open;
     if (cover > 0.5f) {
       m.exponent = top.exponent;
       m.roughness = top.roughness;

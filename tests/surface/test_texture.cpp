@@ -44,9 +44,20 @@ TEST_CASE("texture: an upper layer covers the lower where opaque, and lets it th
   CHECK(m.diffuse.r == Approx(0.6f * 0.25f));
   CHECK(m.diffuse.b == Approx(0.6f * 0.25f));
   CHECK(m.diffuse.g == Approx(0));
+  // The blue below lets no light through, so neither does the stack.
+  CHECK(m.filter == 0);
   const Texture b = bounded(t);
   CHECK(b.bound.diffuse == Color(0.6f, 0, 0.6f));
-  CHECK(b.bound.filter == 0.5f);
+  CHECK(b.bound.filter == 0.75f);  // filter and transmit together
+}
+
+TEST_CASE("texture: transmit lets light through untinted, filter tinted by the colour", "[texture]") {
+  // rgbft <1, 0, 0, 0.25, 0.5>: 0.75 of the light goes through, 0.25·red + 0.5·white of it.
+  const Material m = layerMaterial(matte(), {Color(1, 0, 0), 0.25f, 0.5f});
+  CHECK(m.filter == 0.75f);
+  CHECK(m.pigment.r == Approx(1.0f));
+  CHECK(m.pigment.g == Approx(0.5f / 0.75f));
+  CHECK(m.diffuse == Color(0.6f, 0, 0));  // the surface's own colour, which the tracer weights by 1 − 0.75
 }
 
 TEST_CASE("texture: the texture is read at the world point taken into its own space", "[texture]") {

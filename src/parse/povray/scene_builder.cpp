@@ -255,7 +255,6 @@ class Builder {
 
   // The object's material, and its texture when its colour varies over it, moved by the transforms `after`.
   void surface(ObjectDesc& o, const Surface& s, const std::vector<TransformStep>& after) {
-    if (anyColour(s.layers.front().pigment, [](const Rgbft& c) { return c.transmit > 0; })) refuse(o.loc, "transmit");
     o.material = constantMaterial(s);
     o.finish = writtenFinish(s);
     o.texture = s.patterned() ? std::make_shared<const Texture>(bounded(makeTexture(s, after))) : nullptr;
