@@ -65,6 +65,7 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
       }
       localMax = std::max(localMax, options.normals ? 1.0f : local);
       gain = std::max(gain, ((1 - m.filter) * m.reflection + m.filter) * std::max(1.0f, brightest(m.pigment)));
+      filteredShadows_ = filteredShadows_ || (conventions_.filteredShadows && m.filter > 0);
     });
   }
   // What a ray that leaves the scene brings back; a fog can only mix in its own colour.
@@ -169,8 +170,9 @@ template <class T> void Tracer<T>::traceBatch(Batch& batch, int count, RayRecord
     const Ray<T>* packet = &batch.rays[size_t(first)];
     std::optional<Hit<T>> hits[kPacket];
     scene_.closestHits(packet, size, {}, hits);
-    // The shadow rays of the packet's hits toward each light, asked together: shadows[i · lights + l].
-    for (size_t l = 0; l < lights; ++l) {
+    // The shadow rays of the packet's hits toward each light, asked together: shadows[i · lights + l]. Shadows
+    // through transparent surfaces are followed one ray at a time instead (direct()).
+    for (size_t l = 0; l < lights && !filteredShadows_; ++l) {
       Ray<T> query[kPacket];
       Interval<T> segments[kPacket];
       int index[kPacket], m = 0;
@@ -194,7 +196,8 @@ template <class T> void Tracer<T>::traceBatch(Batch& batch, int count, RayRecord
       const size_t r = size_t(first + i);
       raysLeft_ = treeRays_ - 1;
       if (batch.paths[r].bounce == 0) sampleRaysLeft_ = kSampleRays - 1;  // an eye ray, not a gathered one
-      const Traced t = follow(packet[i], hits[i], kind, batch.paths[r], nullptr, shadows.data() + size_t(i) * lights);
+      const std::optional<ShadowRay>* known = filteredShadows_ ? nullptr : shadows.data() + size_t(i) * lights;
+      const Traced t = follow(packet[i], hits[i], kind, batch.paths[r], nullptr, known);
       batch.colors[r] = t.color;
       batch.distances[r] = t.distance;
     }
@@ -379,12 +382,16 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m
   Color diffuse(0), specular(0);
   for (size_t i = 0; i < scene_.lights().size(); ++i) {
     const Light<T>& light = scene_.lights()[i];
+    Color lightColor = light.color;
     ShadowRay own;
     const ShadowRay* s = nullptr;
     if (shadows) {
       if (shadows[i]) s = &*shadows[i];
     } else if (shadowRay(hit, n, light, own)) {
-      if (!light.shadowless) {
+      if (filteredShadows_ && !light.shadowless) {
+        lightColor = light.color * transmittance(own.ray, own.segment);
+        own.occluded = lightColor == Color(0);
+      } else if (!light.shadowless) {
         own.occluded = scene_.occluded(own.ray, own.segment, &lastOccluder_[i]);
         ++counts_.shadow;
       }
@@ -393,7 +400,6 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m
     if (!s) continue;
     if (record) record->shadows.push_back({glm::dvec3(s->ray.origin), glm::dvec3(s->ray.dir), s->occluded});
     if (s->occluded) continue;
-    Color lightColor = light.color;
     if (light.shape) {
       const glm::dvec3 toPoint = glm::dvec3(hit.point - light.position);
       const double distance = glm::length(toPoint);
@@ -409,6 +415,24 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m
     specular += lightColor * m.specular * factor;
   }
   return {diffuse, specular};
+}
+
+// POV-Ray's shadows through transparent surfaces: each surface on the way lets through its filter·colour +
+// transmit (Material: filter·pigment). At most kMaxShadowCrossings surfaces are followed; past them, none.
+template <class T> Color Tracer<T>::transmittance(const Ray<T>& ray, Interval<T> segment) {
+  constexpr int kMaxShadowCrossings = 64;
+  Color through(1);
+  for (int k = 0; k < kMaxShadowCrossings; ++k) {
+    ++counts_.shadow;
+    const std::optional<Hit<T>> hit = scene_.closestHit(ray, segment);
+    if (!hit) return through;
+    Material textured;
+    const Material& m = hit->object->materialAt(hit->point, textured);
+    through *= m.filter * m.pigment;
+    if (through == Color(0)) return through;
+    segment.min = hit->t;
+  }
+  return Color(0);
 }
 
 template <class T>

@@ -362,3 +362,23 @@ TEST_CASE("cli: a POV-Ray scene's diffuse light takes brilliance as the power of
   CHECK(colour("") == "Color: (188, 188, 188)\n");             // sRGB(0.5)
   CHECK(colour("brilliance 2") == "Color: (137, 137, 137)\n");  // sRGB(0.25)
 }
+
+TEST_CASE("cli: a POV-Ray scene's shadows pass transparent surfaces, each tinting the light as POV-Ray does") {
+  const rt::test::TempDir dir;
+  // A thin box between the light and the point seen; the eye ray passes beside it. POV-Ray gave the colours.
+  const std::string scene = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+                            "camera { location <0, 5, -5> look_at 0 }\nlight_source { <0, 100, 0> rgb 1 }\n"
+                            "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n"
+                            "box { <-1, 0.99, -0.5>, <1, 1.01, 0.5> pigment { PIGMENT } finish { ambient 0 diffuse 0 } }\n";
+  const auto colour = [&](const std::string& pigment) {
+    std::string text = scene;
+    text.replace(text.find("PIGMENT"), 7, pigment);
+    const Run r = run({"pixelcolor", dir.write("s.pov", text), "9", "9", "4", "4"});
+    REQUIRE(r.status == 0);
+    return r.out.substr(r.out.find("Color: "));
+  };
+  CHECK(colour("rgbf <1, 0, 0, 1>") == "Color: (255, 0, 0)\n");
+  CHECK(colour("rgbt <1, 0, 0, 0.5>") == "Color: (137, 137, 137)\n");
+  CHECK(colour("rgbft <1, 0, 0, 0.5, 0.25>") == "Color: (198, 71, 71)\n");
+  CHECK(colour("rgb <1, 0, 0>") == "Color: (0, 0, 0)\n");
+}

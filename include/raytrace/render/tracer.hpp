@@ -105,6 +105,8 @@ template <class T> class Tracer {
   // secondary rays, weighted (§c.5).
   Color shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, RayRecord* record,
               const std::optional<ShadowRay>* shadows);
+  // The share of a light's colour that reaches the end of a shadow ray through transparent surfaces.
+  Color transmittance(const Ray<T>& ray, Interval<T> segment);
   // `c` seen through the scene's fogs (fogs_) along the ray up to t (infinite for a ray that leaves the scene).
   Color fogged(Color c, const Ray<T>& ray, T t) const;
   // The weights of the local light and the two secondary rays at a hit; `refracted` receives the transmitted
@@ -150,6 +152,7 @@ template <class T> class Tracer {
   uint64_t sampleRaysLeft_ = 0;  // the rays the current eye sample may still cost, gathered trees included
   std::vector<const Object<T>*> lastOccluder_;  // per light: what occluded its latest shadow ray (Scene::occluded)
   bool fogs_;                                   // whether the scene has any fog
+  bool filteredShadows_ = false;  // shadow rays pass transparent surfaces (POV-Ray, and some surface lets light through)
   std::vector<Batch> batches_;                 // [0] tile()'s eye rays, [1 + b] the gather rays at bounce b
   RayCounts counts_;
   std::vector<GatherSummary>* gathers_ = nullptr;  // pixel()'s per-bounce summary while it is asked for

@@ -56,6 +56,7 @@ struct Conventions {
   bool tintReflection = true;    // course multiplies reflected light by the pigment (§c.3)
   int maxDepth = 5;              // deepest secondary ray (primary = 0) that is traced (§c.9)
   bool shadeDeepest = true;      // .cli: a ray at maxDepth that hits returns black (cs3451 §A.4)
+  bool filteredShadows = false;  // POV-Ray: light reaches a point through transparent surfaces, tinted by each
 };
 
 // Pov is the course's subset of POV-Ray; PovRay the POV-Ray 3.7 language (docs/povray-language.md), whose

@@ -542,6 +542,7 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   scene.camera.lookAt = {0, 0, 1};
   scene.conventions.reflectionMixes = false;  // POV-Ray adds reflected light to the surface's own
   scene.conventions.tintReflection = false;
+  scene.conventions.filteredShadows = true;
   InterpreterOptions io;
   io.libraryPaths = options.libraryPaths;
   io.imageWidth = options.imageWidth;
