@@ -121,18 +121,30 @@ void readMap(const Node& n, std::vector<MapEntry>& map, Refusals& refusals) {
       refusals.refuse(it, "a map entry");
       continue;
     }
+    const std::vector<Item>& items = it.node->items;
     std::vector<double> values;
+    size_t k = 0;
+    for (; k < items.size() && values.size() < 2; ++k) {
+      const Item& e = items[k];
+      if (e.kind != Item::Kind::Value || e.value.type != Value::Type::Float) break;
+      values.push_back(e.value.v[0]);
+    }
+    // Colours, pigments, or one pigment's items written bare (`[0.5 P_Cloud scale 2]`).
     std::vector<std::shared_ptr<const Pigment>> pigments;
-    for (const Item& e : it.node->items) {
-      if (e.kind == Item::Kind::Value && e.value.type == Value::Type::Float && pigments.empty() && values.size() < 2) {
-        values.push_back(e.value.v[0]);
-      } else if (e.kind == Item::Kind::Value && e.value.numeric()) {
-        pigments.push_back(solidPigment(colourOf(e.value)));
-      } else if (e.kind == Item::Kind::Node && e.node->keyword == "pigment") {
-        pigments.push_back(nestedPigment(*e.node, refusals));
-      } else {
-        refusals.refuse(e, "a map entry");
+    const bool listed = std::all_of(items.begin() + long(k), items.end(), [](const Item& e) {
+      return (e.kind == Item::Kind::Value && e.value.numeric()) || (e.kind == Item::Kind::Node && e.node->keyword == "pigment");
+    });
+    if (listed) {
+      for (size_t j = k; j < items.size(); ++j) {
+        const Item& e = items[j];
+        pigments.push_back(e.kind == Item::Kind::Value ? solidPigment(colourOf(e.value)) : nestedPigment(*e.node, refusals));
       }
+    } else {
+      Node body;
+      body.keyword = "pigment";
+      body.loc = items[k].loc;
+      body.items.assign(items.begin() + long(k), items.end());
+      pigments.push_back(nestedPigment(body, refusals));
     }
     // `[0.5 1]` is a value and a grey.
     if (pigments.empty() && values.size() == 2) pigments.push_back(solidPigment({Color(float(values[1])), 0, 0}));
@@ -177,7 +189,7 @@ void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, R
       continue;
     }
     if (it.kind != Item::Kind::Keyword) {
-      refusals.refuse(it, "a value here");
+      refusals.refuse(it, it.value.type == Value::Type::Function ? "function" : "a value here");
       continue;
     }
     const std::string_view w = it.word;
