@@ -7,6 +7,15 @@
 
 namespace rt {
 
+Polynomial Polynomial::operator*(const Polynomial& b) const {
+  Polynomial p;
+  p.degree = degree + b.degree;
+  for (int i = 0; i <= degree; ++i) {
+    for (int j = 0; j <= b.degree; ++j) p.c[size_t(i + j)] += c[size_t(i)] * b.c[size_t(j)];
+  }
+  return p;
+}
+
 Polynomial Polynomial::derivative() const {
   Polynomial d;
   d.degree = std::max(degree - 1, 0);

@@ -33,6 +33,15 @@ const char* const kScene =
     "sphere { <0,0,0>, 2 pigment { color rgb <1,0,1> } finish { ambient 0.2 diffuse 0.4 metallic 1 } }\n"
     "plane { <0,1,0>, -4 pigment { color rgb <0.2,0.2,0.8> } finish { ambient 0.4 diffuse 0.8 } }\n";
 
+// What pixelcolor prints of the centre of a 9×9 picture of `scene` with `hole` replaced by `fill`.
+std::string centreColour(const rt::test::TempDir& dir, std::string scene, const std::string& hole,
+                         const std::string& fill) {
+  scene.replace(scene.find(hole), hole.size(), fill);
+  const Run r = run({"pixelcolor", dir.write("centre.pov", scene), "9", "9", "4", "4"});
+  REQUIRE(r.status == 0);
+  return r.out.substr(r.out.find("Color: "));
+}
+
 }  // namespace
 
 TEST_CASE("cli: usage lists every Program 1 command") {
@@ -352,13 +361,7 @@ TEST_CASE("cli: a POV-Ray scene's diffuse light takes brilliance as the power of
                             "camera { location <0, 5, 0> look_at 0 }\n"
                             "light_source { <1000 * sqrt(3), 1000, 0> rgb 1 }\n"
                             "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 BRILLIANCE } }\n";
-  const auto colour = [&](const std::string& brilliance) {
-    std::string text = scene;
-    text.replace(text.find("BRILLIANCE"), 10, brilliance);
-    const Run r = run({"pixelcolor", dir.write("b.pov", text), "9", "9", "4", "4"});
-    REQUIRE(r.status == 0);
-    return r.out.substr(r.out.find("Color: "));
-  };
+  const auto colour = [&](const std::string& brilliance) { return centreColour(dir, scene, "BRILLIANCE", brilliance); };
   CHECK(colour("") == "Color: (188, 188, 188)\n");             // sRGB(0.5)
   CHECK(colour("brilliance 2") == "Color: (137, 137, 137)\n");  // sRGB(0.25)
 }
@@ -370,13 +373,7 @@ TEST_CASE("cli: a POV-Ray scene's shadows pass transparent surfaces, each tintin
                             "camera { location <0, 5, -5> look_at 0 }\nlight_source { <0, 100, 0> rgb 1 }\n"
                             "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n"
                             "box { <-1, 0.99, -0.5>, <1, 1.01, 0.5> pigment { PIGMENT } finish { ambient 0 diffuse 0 } }\n";
-  const auto colour = [&](const std::string& pigment) {
-    std::string text = scene;
-    text.replace(text.find("PIGMENT"), 7, pigment);
-    const Run r = run({"pixelcolor", dir.write("s.pov", text), "9", "9", "4", "4"});
-    REQUIRE(r.status == 0);
-    return r.out.substr(r.out.find("Color: "));
-  };
+  const auto colour = [&](const std::string& pigment) { return centreColour(dir, scene, "PIGMENT", pigment); };
   CHECK(colour("rgbf <1, 0, 0, 1>") == "Color: (255, 0, 0)\n");
   CHECK(colour("rgbt <1, 0, 0, 0.5>") == "Color: (137, 137, 137)\n");
   CHECK(colour("rgbft <1, 0, 0, 0.5, 0.25>") == "Color: (198, 71, 71)\n");

@@ -13,6 +13,7 @@
 #include "raytrace/parse/pov_parser.hpp"
 #include "raytrace/shapes/poly.hpp"
 #include "raytrace/shapes/torus.hpp"
+#include "parse_message.hpp"
 #include "shape_oracle.hpp"
 
 using namespace rt;
@@ -208,18 +209,7 @@ TEST_CASE("sceneinfo lists a poly's nonzero terms", "[poly]") {
         "56.0000 y^2, 1.0000 z^4, -104.0000 z^2, 784.0000\n- Sturm: yes\n");
 }
 
-namespace {
-
-std::string messageOf(const std::string& object) {
-  try {
-    parsePov("camera { location <0,0,5> look_at <0,0,0> }\n" + object, "s.pov");
-  } catch (const ParseError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-}  // namespace
+using rt::test::messageOf;
 
 TEST_CASE("impossible polys are refused where the mistake is: the order, the count, all zero", "[poly]") {
   CHECK(messageOf("poly { 8, <1, 2> }") == "s.pov:2:8: error: the poly order must be from 2 to 7, found 8");

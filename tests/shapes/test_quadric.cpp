@@ -7,6 +7,7 @@
 
 #include "raytrace/parse/pov_parser.hpp"
 #include "raytrace/shapes/quadric.hpp"
+#include "parse_message.hpp"
 #include "shape_oracle.hpp"
 
 using namespace rt;
@@ -90,18 +91,7 @@ TEST_CASE("each next hit lies strictly beyond the last, whatever the direction's
   }
 }
 
-namespace {
-
-std::string messageOf(const std::string& object) {
-  try {
-    parsePov("camera { location <0,0,5> look_at <0,0,0> }\n" + object, "s.pov");
-  } catch (const ParseError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-}  // namespace
+using rt::test::messageOf;
 
 TEST_CASE("a quadric with no x, y or z in it is refused where its coefficients begin", "[quadric]") {
   CHECK(messageOf("quadric { <0,0,0>, <0,0,0>, <0,0,0>, 1 }") ==

@@ -6,6 +6,7 @@
 
 #include "raytrace/parse/pov_parser.hpp"
 #include "raytrace/shapes/torus.hpp"
+#include "parse_message.hpp"
 #include "shape_oracle.hpp"
 
 using namespace rt;
@@ -112,18 +113,7 @@ TEST_CASE("a spindle torus (major < minor) has its inside where the quartic is n
   test::paritySweep<double>(*t, glm::dvec3(-1.5, -1, -1.5), glm::dvec3(1.5, 1, 1.5), 1e-6, 10);
 }
 
-namespace {
-
-std::string messageOf(const std::string& object) {
-  try {
-    parsePov("camera { location <0,0,5> look_at <0,0,0> }\n" + object, "s.pov");
-  } catch (const ParseError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-}  // namespace
+using rt::test::messageOf;
 
 TEST_CASE("a torus without a tube is refused where its minor radius is written", "[torus]") {
   CHECK(messageOf("torus { 1, 0 }") == "s.pov:2:12: error: the torus minor radius must be greater than 0, found 0");

@@ -18,6 +18,8 @@ struct Polynomial {
     return v;
   }
   Polynomial derivative() const;
+  // The product, whose degree is the sum of the two (at most kMaxDegree: the caller's to keep).
+  Polynomial operator*(const Polynomial& b) const;
   // The degree lowered past leading coefficients that are zero.
   Polynomial trimmed() const;
 };
