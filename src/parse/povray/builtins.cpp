@@ -74,6 +74,17 @@ Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
   if (name == "version") return Value::number(version_);
   if (name == "input_file_name") return Value::string(files_.front()->name.str());
   if (name == "now") return Value::number((double(std::time(nullptr)) - 946684800.0) / 86400.0);
+  if ((name == "min_extent" || name == "max_extent") && options_.extent) {
+    expect("(", "after the function's name");
+    const SourceLoc oAt = here();
+    const Value o = expression();
+    expect(")", "after the object");
+    if (o.type != Value::Type::Node) fail(oAt, "expected an object, found a " + std::string(typeName(o)));
+    const auto box = options_.extent(static_cast<const Node&>(*o.ref));
+    if (!box) fail(oAt, "'" + std::string(name) + "' of an object without bounds, such as a plane");
+    const size_t k = name == "min_extent" ? 0 : 3;
+    return Value::vector({(*box)[k], (*box)[k + 1], (*box)[k + 2], 0, 0}, 3);
+  }
   if (name == "inside" || name == "trace" || name == "vturbulence" || name == "min_extent" || name == "max_extent" ||
       name == "sum" || name == "prod" || name == "internal" || name == "datetime") {
     fail(at, "'" + std::string(name) + "' is not supported yet");

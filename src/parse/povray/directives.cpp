@@ -295,10 +295,18 @@ void Interpreter::invokeMacro(const std::shared_ptr<MacroDef>& macro) {
       scope.symbols[macro->params[n]] = slot;
     }
     ++n;
-    SourceLoc sepAt;
-    const Token sep = next(&sepAt);
-    if (sep.is(")")) break;
-    if (!sep.is(",")) fail(sepAt, "expected ',' or ')' in the arguments of macro '" + std::string(macro->name) + "'");
+    // As POV-Ray, a comma left out before an argument that starts a value is not missed.
+    const SourceLoc sepAt = here();
+    const Token& sep = peek();
+    if (sep.is(")")) {
+      next();
+      break;
+    }
+    if (sep.is(",")) {
+      next();
+    } else if (!startsExpression(sep)) {
+      fail(sepAt, "expected ',' or ')' in the arguments of macro '" + std::string(macro->name) + "'");
+    }
   }
   if (!more) next();
   if (n != macro->params.size()) {

@@ -7,6 +7,7 @@
 
 #include "raytrace/parse/povray/interpreter.hpp"
 #include "raytrace/parse/povray/surface_reader.hpp"
+#include "raytrace/shapes/make_object.hpp"
 #include "raytrace/util/format.hpp"
 #include "raytrace/util/limits.hpp"
 
@@ -38,6 +39,19 @@ class Builder {
       ObjectDesc o;
       if (object(n, o)) add(std::move(o), n.loc);
     }
+  }
+
+  // The world bounding box of an object, as min_extent and max_extent give it. Its light sources are not part
+  // of the scene, and a refused part is reported once the file is read.
+  std::optional<std::array<double, 6>> extent(const Node& n) {
+    const size_t lights = scene_.lights.size();
+    ObjectDesc o;
+    const bool drawn = object(n, o);
+    scene_.lights.resize(lights);
+    if (!drawn) return std::array<double, 6>{};
+    const std::optional<Aabb<double>> box = makeObject<double>(o, SphereMethod::Robust, 0, false)->bounds();
+    if (!box) return std::nullopt;
+    return std::array<double, 6>{box->min.x, box->min.y, box->min.z, box->max.x, box->max.y, box->max.z};
   }
 
   void defaults(const Node& n) {
@@ -551,12 +565,15 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   io.maxTokens = options.maxTokens;
   io.writeFolder = options.writeFolder;
   io.writeAnywhere = options.writeAnywhere;
+  Builder* builderOf = nullptr;  // made once the interpreter is, and asked only while it runs
+  io.extent = [&builderOf](const Node& n) { return builderOf->extent(n); };
   Interpreter interpreter(io);
   for (const std::string& d : options.declares) {
     const size_t eq = d.find('=');
     interpreter.declare(d.substr(0, eq), eq == std::string::npos ? "1" : d.substr(eq + 1));
   }
   Builder builder(scene, interpreter);
+  builderOf = &builder;
   interpreter.run(path, text, [&](const std::shared_ptr<const Node>& n) { builder.statement(*n); },
                   [&](const std::shared_ptr<const Node>& n) { builder.defaults(*n); });
   builder.finish();

@@ -1,6 +1,8 @@
 // The POV-Ray scene builder: what each statement of a scene becomes in the scene description.
 #include <catch2/catch.hpp>
 
+#include <iostream>
+#include <sstream>
 #include <string>
 
 #include "raytrace/parse/povray/scene_builder.hpp"
@@ -149,6 +151,25 @@ plane { y, 0 texture { gradient x texture_map { [0 texture { pigment { Black } }
   CHECK(checker.bound.diffuse == Color(0.5f, 0, 0.6f));
   const Material mid = s.objects[1].texture->at(glm::dvec3(0.25, 0, 0));
   CHECK(mid.pigment.r == Approx(0.25f));
+}
+
+TEST_CASE("povray scene: min_extent and max_extent give an object's box; a macro's arguments may omit commas",
+          "[povray]") {
+  // What POV-Ray printed for the same lines.
+  std::ostringstream printed;
+  std::streambuf* const old = std::cerr.rdbuf(printed.rdbuf());
+  parsePovRay(R"(#version 3.7;
+#declare S = sphere { <1, 2, 3>, 1 }
+#declare U = union { object { S } box { -1, <0.5, 0.5, 0.5> translate -x } }
+#debug concat(vstr(3, min_extent(S), ",", 0, 3), " ", vstr(3, max_extent(S), ",", 0, 3), "\n")
+#debug concat(vstr(3, min_extent(U), ",", 0, 3), " ", vstr(3, max_extent(U), ",", 0, 3), "\n")
+#macro Add(A, B) (A + B) #end
+#debug concat(str(Add(1 2), 0, 1), "\n")
+)", "scene.pov", PovRayOptions{{}, 320, 240, true});
+  std::cerr.rdbuf(old);
+  CHECK(printed.str() == "0.000,1.000,2.000 2.000,3.000,4.000\n-2.000,-1.000,-1.000 2.000,3.000,4.000\n3.0\n");
+  CHECK(failure("#declare P = plane { y, 0 }\n#declare V = min_extent(P);\n") ==
+        "scene.pov:4:25: error: 'min_extent' of an object without bounds, such as a plane");
 }
 
 TEST_CASE("povray scene: a shape or group that cannot be drawn yet is refused where it is written", "[povray]") {

@@ -4,6 +4,8 @@
 // left after the directives, the scene statements, is handed on one by one as syntax trees (value.hpp).
 #pragma once
 
+#include <optional>
+
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -28,6 +30,9 @@ struct InterpreterOptions {
   size_t maxTokens = 0;                     // stop after reading this many tokens (0: no limit), for fuzzing
   std::string writeFolder;                  // where #write's files go: the image's folder ("": the current one)
   bool writeAnywhere = false;               // --allow-write-anywhere: #fopen may write outside writeFolder
+  // An object's bounding box as min x, y, z then max x, y, z (nothing if unbounded), for min_extent and
+  // max_extent; the scene builder knows it.
+  std::function<std::optional<std::array<double, 6>>(const Node&)> extent;
 };
 
 class Interpreter {
