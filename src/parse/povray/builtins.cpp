@@ -80,10 +80,43 @@ Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
     const Value o = expression();
     expect(")", "after the object");
     if (o.type != Value::Type::Node) fail(oAt, "expected an object, found a " + std::string(typeName(o)));
-    const auto box = options_.extent(static_cast<const Node&>(*o.ref));
+    const auto box = options_.extent(std::static_pointer_cast<const Node>(o.ref));
     if (!box) fail(oAt, "'" + std::string(name) + "' of an object without bounds, such as a plane");
     const size_t k = name == "min_extent" ? 0 : 3;
     return Value::vector({(*box)[k], (*box)[k + 1], (*box)[k + 2], 0, 0}, 3);
+  }
+  // trace(Object, Start, Direction [, Normal]): the first point on the object, or <0,0,0>; Normal receives
+  // the normal there, or <0,0,0>.
+  if (name == "trace" && options_.trace) {
+    expect("(", "after trace");
+    const SourceLoc oAt = here();
+    const Value o = expression();
+    if (o.type != Value::Type::Node) fail(oAt, "expected an object, found a " + std::string(typeName(o)));
+    const auto vec = [this](const char* what) {
+      expect(",", what);
+      const SourceLoc vAt = here();
+      const Value v = expression();
+      if (!v.numeric()) fail(vAt, "expected a vector, found a " + std::string(typeName(v)));
+      return v.type == Value::Type::Float ? InterpreterOptions::Vec{v.v[0], v.v[0], v.v[0]}
+                                          : InterpreterOptions::Vec{v.v[0], v.v[1], v.v[2]};
+    };
+    const InterpreterOptions::Vec start = vec("before trace's start"), dir = vec("before trace's direction");
+    const auto hit = options_.trace(std::static_pointer_cast<const Node>(o.ref), start, dir);
+    const auto vector = [](const InterpreterOptions::Vec& v) { return Value::vector({v[0], v[1], v[2], 0, 0}, 3); };
+    if (peekOperator(",")) {
+      next();
+      SourceLoc nAt;
+      const std::string_view normal = expectWord("an identifier for the normal", &nAt);
+      if (isKeyword(normal)) fail(nAt, "'" + std::string(normal) + "' is a keyword and cannot be declared");
+      Value n = hit ? vector((*hit)[1]) : vector({0, 0, 0});
+      if (Slot* slot = find(normal)) {
+        slot->value = std::move(n);
+      } else {
+        assign(normal, std::move(n), scopes_.size() - 1);
+      }
+    }
+    expect(")", "after trace's arguments");
+    return hit ? vector((*hit)[0]) : vector({0, 0, 0});
   }
   if (name == "inside" || name == "trace" || name == "vturbulence" || name == "min_extent" || name == "max_extent" ||
       name == "sum" || name == "prod" || name == "internal" || name == "datetime") {

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <optional>
+#include <unordered_map>
 
 #include "raytrace/parse/povray/interpreter.hpp"
 #include "raytrace/parse/povray/surface_reader.hpp"
@@ -41,17 +43,40 @@ class Builder {
     }
   }
 
-  // The world bounding box of an object, as min_extent and max_extent give it. Its light sources are not part
-  // of the scene, and a refused part is reported once the file is read.
-  std::optional<std::array<double, 6>> extent(const Node& n) {
-    const size_t lights = scene_.lights.size();
-    ObjectDesc o;
-    const bool drawn = object(n, o);
-    scene_.lights.resize(lights);
-    if (!drawn) return std::array<double, 6>{};
-    const std::optional<Aabb<double>> box = makeObject<double>(o, SphereMethod::Robust, 0, false)->bounds();
+  // The world bounding box of an object, as min_extent and max_extent give it.
+  std::optional<std::array<double, 6>> extent(const std::shared_ptr<const Node>& n) {
+    const std::optional<Aabb<double>> box = runtimeObject(n).bounds();
     if (!box) return std::nullopt;
     return std::array<double, 6>{box->min.x, box->min.y, box->min.z, box->max.x, box->max.y, box->max.z};
+  }
+
+  // trace(): the first point where a ray meets an object, and the outward normal there.
+  std::optional<std::array<InterpreterOptions::Vec, 2>> trace(const std::shared_ptr<const Node>& n,
+                                                             const InterpreterOptions::Vec& start,
+                                                             const InterpreterOptions::Vec& dir) {
+    const Ray<double> ray{{start[0], start[1], start[2]}, {dir[0], dir[1], dir[2]}};
+    if (ray.dir == glm::dvec3(0)) return std::nullopt;
+    const std::optional<Hit<double>> hit =
+        runtimeObject(n).intersect(ray, {0, std::numeric_limits<double>::infinity()});
+    if (!hit) return std::nullopt;
+    const glm::dvec3 p = hit->point, normal = hit->normal;
+    return std::array<InterpreterOptions::Vec, 2>{{{p.x, p.y, p.z}, {normal.x, normal.y, normal.z}}};
+  }
+
+  // The runtime object of a declared object, made once: scenes call trace() in loops. Its light sources are
+  // not part of the scene, and a refused part is reported once the file is read.
+  const Object<double>& runtimeObject(const std::shared_ptr<const Node>& n) {
+    auto& made = asked_[n.get()];
+    if (!made.object) {
+      made.node = n;
+      const size_t lights = scene_.lights.size();
+      ObjectDesc o;
+      // What follows would build on a wrong answer: a refusal is reported now.
+      if (!object(*n, o) || refusals_.first) finish();
+      scene_.lights.resize(lights);
+      made.object = makeObject<double>(o, SphereMethod::Robust, 0, false);
+    }
+    return *made.object;
   }
 
   void defaults(const Node& n) {
@@ -166,8 +191,8 @@ class Builder {
   // Whether an item is an object: a shape of ours, or one of POV-Ray's that is refused when read.
   static bool isObject(const Item& it) {
     static constexpr std::string_view kPovObjects[] = {
-        "bicubic_patch", "blob", "disc", "height_field", "isosurface", "julia_fractal", "lathe", "mesh", "mesh2",
-        "object", "ovus", "parametric", "polygon", "polynomial", "prism", "smooth_triangle", "sor", "sphere_sweep",
+        "bicubic_patch", "blob", "disc", "height_field", "isosurface", "julia_fractal", "lathe", "light_group",
+        "mesh", "mesh2", "object", "ovus", "parametric", "polygon", "polynomial", "prism", "smooth_triangle", "sor", "sphere_sweep",
         "superellipsoid"};
     if (it.kind != Item::Kind::Node) return false;
     const std::string_view k = it.node->keyword;
@@ -523,6 +548,11 @@ class Builder {
   bool asciiStrings_ = true;  // global_settings' charset
   Surface default_;
   Refusals refusals_;
+  struct Asked {
+    std::shared_ptr<const Node> node;  // held, so that its address names no other node
+    std::unique_ptr<Object<double>> object;
+  };
+  std::unordered_map<const Node*, Asked> asked_;
 };
 
 // The texture with every layer's ambient term scaled, in the textures of its patterns too.
@@ -566,7 +596,9 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   io.writeFolder = options.writeFolder;
   io.writeAnywhere = options.writeAnywhere;
   Builder* builderOf = nullptr;  // made once the interpreter is, and asked only while it runs
-  io.extent = [&builderOf](const Node& n) { return builderOf->extent(n); };
+  io.extent = [&builderOf](const std::shared_ptr<const Node>& n) { return builderOf->extent(n); };
+  io.trace = [&builderOf](const std::shared_ptr<const Node>& n, const InterpreterOptions::Vec& start,
+                          const InterpreterOptions::Vec& dir) { return builderOf->trace(n, start, dir); };
   Interpreter interpreter(io);
   for (const std::string& d : options.declares) {
     const size_t eq = d.find('=');

@@ -153,7 +153,7 @@ plane { y, 0 texture { gradient x texture_map { [0 texture { pigment { Black } }
   CHECK(mid.pigment.r == Approx(0.25f));
 }
 
-TEST_CASE("povray scene: min_extent and max_extent give an object's box; a macro's arguments may omit commas",
+TEST_CASE("povray scene: min_extent, max_extent and trace ask the object; a macro's arguments may omit commas",
           "[povray]") {
   // What POV-Ray printed for the same lines.
   std::ostringstream printed;
@@ -165,9 +165,22 @@ TEST_CASE("povray scene: min_extent and max_extent give an object's box; a macro
 #debug concat(vstr(3, min_extent(U), ",", 0, 3), " ", vstr(3, max_extent(U), ",", 0, 3), "\n")
 #macro Add(A, B) (A + B) #end
 #debug concat(str(Add(1 2), 0, 1), "\n")
+#declare E = sphere { <0, 0, 0>, 2 scale <1, 0.5, 1> translate x }
+#declare N = <9, 9, 9>;
+#declare P = trace(E, <1, 5, 0>, -y, N);
+#debug concat(vstr(3, P, ",", 0, 4), " ", vstr(3, N, ",", 0, 4), "\n")
+#declare Q = trace(E, <10, 5, 0>, -y, N);
+#debug concat(vstr(3, Q, ",", 0, 4), " ", vstr(3, N, ",", 0, 4), "\n")
+#declare R = trace(U, <-1.5, 0, -5>, z);
+#debug concat(vstr(3, R, ",", 0, 4), "\n")
 )", "scene.pov", PovRayOptions{{}, 320, 240, true});
   std::cerr.rdbuf(old);
-  CHECK(printed.str() == "0.000,1.000,2.000 2.000,3.000,4.000\n-2.000,-1.000,-1.000 2.000,3.000,4.000\n3.0\n");
+  CHECK(printed.str() ==
+        "0.000,1.000,2.000 2.000,3.000,4.000\n-2.000,-1.000,-1.000 2.000,3.000,4.000\n3.0\n"
+        "1.0000,1.0000,0.0000 0.0000,1.0000,0.0000\n0.0000,0.0000,0.0000 0.0000,0.0000,0.0000\n"
+        "-1.5000,0.0000,-1.0000\n");
+  CHECK(failure("#declare L = lathe { linear_spline 2, <1, 0>, <1, 1> }\n#declare V = trace(L, 5*x, -x);\n") ==
+        "scene.pov:3:14: error: 'lathe' is not supported yet");
   CHECK(failure("#declare P = plane { y, 0 }\n#declare V = min_extent(P);\n") ==
         "scene.pov:4:25: error: 'min_extent' of an object without bounds, such as a plane");
 }

@@ -30,9 +30,13 @@ struct InterpreterOptions {
   size_t maxTokens = 0;                     // stop after reading this many tokens (0: no limit), for fuzzing
   std::string writeFolder;                  // where #write's files go: the image's folder ("": the current one)
   bool writeAnywhere = false;               // --allow-write-anywhere: #fopen may write outside writeFolder
-  // An object's bounding box as min x, y, z then max x, y, z (nothing if unbounded), for min_extent and
-  // max_extent; the scene builder knows it.
-  std::function<std::optional<std::array<double, 6>>(const Node&)> extent;
+  // What the scene builder knows of an object, for the functions that ask it: its bounding box as min x, y, z
+  // then max x, y, z (nothing if unbounded) for min_extent and max_extent; for trace, the first point where
+  // the ray from `start` along `dir` meets it, then the outward normal there (nothing if it misses).
+  using Vec = std::array<double, 3>;
+  std::function<std::optional<std::array<double, 6>>(const std::shared_ptr<const Node>&)> extent;
+  std::function<std::optional<std::array<Vec, 2>>(const std::shared_ptr<const Node>&, const Vec& start, const Vec& dir)>
+      trace;
 };
 
 class Interpreter {
