@@ -18,7 +18,8 @@ Camera<T>::Camera(const CameraDesc& desc, int width, int height)
       right_(desc.rightFollowsImage ? desc.right * (double(width) / height) : desc.right),
       up_(desc.up),
       forward_(glm::normalize(Vec3<T>(desc.lookAt - desc.location))),
-      orthographic_(desc.orthographic),
+      projection_(desc.projection),
+      angle_(T(desc.angle)),
       offset_(desc.pixelOffset),
       width_(width),
       height_(height) {
@@ -41,6 +42,21 @@ Camera<T>::Camera(const CameraDesc& desc, int width, int height)
     }
   }
   if (problem) throw ParseError(desc.loc, std::string("the camera gives no image: ") + problem);
+}
+
+template <class T> Ray<T> Camera<T>::projected(T us, T vs) const {
+  using P = CameraDesc::Projection;
+  if (projection_ == P::Orthographic) return Ray<T>{origin_ + us * right_ + vs * up_, forward_};
+  // The cylinders: an angle across the picture turns the view about the cylinder's axis (up for 1 and 3,
+  // right for 2 and 4); along the axis the ray climbs (1, 2) or its origin moves (3, 4). Fitted to POV-Ray's
+  // pictures (tests/render/test_camera.cpp).
+  const bool vertical = projection_ == P::Cylinder1 || projection_ == P::Cylinder3;
+  const bool moving = projection_ == P::Cylinder3 || projection_ == P::Cylinder4;
+  const Vec3<T> across = glm::normalize(vertical ? right_ : up_), axis = vertical ? up_ : right_;
+  const T turn = (vertical ? us : vs) * angle_, along = vertical ? vs : us;
+  const Vec3<T> turned = std::cos(turn) * forward_ + std::sin(turn) * across;
+  if (moving) return Ray<T>{origin_ + along * axis, turned};
+  return Ray<T>{origin_, glm::normalize(turned + along * axis)};
 }
 
 template class Camera<float>;

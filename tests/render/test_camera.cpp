@@ -144,7 +144,7 @@ TEMPLATE_TEST_CASE("camera: an orthographic camera's rays are parallel, from the
                    float, double) {
   rt::CameraDesc c = camera({0, 0, 14}, {4, 0, 0});
   c.up = {0, 3, 0};
-  c.orthographic = true;
+  c.projection = rt::CameraDesc::Projection::Orthographic;
   const rt::Camera<TestType> cam(c, 40, 30);
   // Pixel (0, 0)'s centre is (0.5, 0.5) pixels from the lower-left corner: Us = −½ + 0.5/40.
   const rt::Ray<TestType> corner = cam.pixelRay(0, 0);
@@ -154,4 +154,30 @@ TEMPLATE_TEST_CASE("camera: an orthographic camera's rays are parallel, from the
   const rt::Ray<TestType> other = cam.pixelRay(39, 29);
   CHECK(other.dir == corner.dir);
   CHECK(corner.dir.z == Approx(-1));
+}
+
+TEMPLATE_TEST_CASE("camera: POV-Ray's cylinder projections, against where POV-Ray's rays met the plane z = 10", "",
+                   float, double) {
+  // A camera at the origin looking along +z, right 4/3, up 1, angle 90, 16×12 pixels. POV-Ray's points (read
+  // back from its pictures of a plane coloured by x and by y, to about ±0.25): type 1, pixel (0, 0) meets
+  // (−9.01, 6.06); type 2, (−8.33, 8.63); type 3, (−9.01, 0.36); type 4, (−0.59, 8.63).
+  struct Case {
+    rt::CameraDesc::Projection projection;
+    double x, y;
+  } cases[] = {{rt::CameraDesc::Projection::Cylinder1, -9.01, 6.06},
+               {rt::CameraDesc::Projection::Cylinder2, -8.33, 8.63},
+               {rt::CameraDesc::Projection::Cylinder3, -9.01, 0.36},
+               {rt::CameraDesc::Projection::Cylinder4, -0.59, 8.63}};
+  for (const Case& k : cases) {
+    rt::CameraDesc c = camera({0, 0, 0}, {4.0 / 3, 0, 0});
+    c.lookAt = {0, 0, 1};
+    c.projection = k.projection;
+    c.angle = M_PI / 2;
+    const rt::Camera<TestType> cam(c, 16, 12);
+    // Pixel (0, 0) of the picture's top row is row 11 counted upward.
+    const rt::Ray<TestType> ray = cam.pixelRay(0, 11);
+    const double t = (10 - double(ray.origin.z)) / double(ray.dir.z);
+    CHECK(double(ray.origin.x) + t * double(ray.dir.x) == Approx(k.x).margin(0.25));
+    CHECK(double(ray.origin.y) + t * double(ray.dir.y) == Approx(k.y).margin(0.25));
+  }
 }

@@ -18,8 +18,10 @@ template <class T> class Camera {
   Ray<T> ray(T px, T py) const {
     const T us = T(-0.5) + px / T(width_);
     const T vs = T(-0.5) + py / T(height_);
-    if (orthographic_) return Ray<T>{origin_ + us * right_ + vs * up_, forward_};
-    return Ray<T>{origin_, glm::normalize(us * right_ + vs * up_ + forward_)};
+    if (projection_ == CameraDesc::Projection::Perspective) {
+      return Ray<T>{origin_, glm::normalize(us * right_ + vs * up_ + forward_)};
+    }
+    return projected(us, vs);
   }
   // The eye ray of pixel (x, y), through the pixel's own sample point (CameraDesc::pixelOffset).
   Ray<T> pixelRay(int x, int y) const { return sampleRay(x, y, 0, 0, 1); }
@@ -37,8 +39,12 @@ template <class T> class Camera {
   int height() const { return height_; }
 
  private:
+  // The eye ray of the projections other than the perspective one.
+  Ray<T> projected(T us, T vs) const;
+
   Vec3<T> origin_, right_, up_, forward_;
-  bool orthographic_;
+  CameraDesc::Projection projection_;
+  T angle_;
   glm::vec<2, T, glm::defaultp> offset_;
   int width_, height_;
 };

@@ -26,9 +26,14 @@ struct CameraDesc {
   // .cli: `right` is written for a square image and is stretched by width/height when the image is made, so
   // pixels stay square at any size and `fov` stays the vertical angle (docs/reference/cs3451.md §A.4 leaves this open).
   bool rightFollowsImage = false;
-  // POV-Ray's orthographic camera: parallel rays along the view, from the picture's point on the plane through
-  // `location`; right and up are then the picture's size.
-  bool orthographic = false;
+  // How a picture's point becomes a ray (docs/povray-language.md, "Cameras"). Perspective: through the point
+  // of the picture plane one unit ahead. Orthographic (POV-Ray): parallel rays along the view, from the
+  // picture's point on the plane through `location`; right and up are the picture's size. Cylinder 1–4
+  // (POV-Ray): the picture wrapped round a vertical (1, 3) or horizontal (2, 4) cylinder over `angle`, seen
+  // from the location (1, 2) or from points along the axis (3, 4); right and up as written.
+  enum class Projection : unsigned char { Perspective, Orthographic, Cylinder1, Cylinder2, Cylinder3, Cylinder4 };
+  Projection projection = Projection::Perspective;
+  double angle = 0;  // radians, for the cylinder projections
   SourceLoc loc;  // the `camera` statement (POV) or the `fov` command (.cli) that set it, for messages
 };
 

@@ -317,7 +317,8 @@ class Builder {
     glm::dvec3 location{0}, direction{0, 0, 1}, up{0, 1, 0}, right{1.33, 0, 0}, sky{0, 1, 0};
     std::optional<glm::dvec3> lookAt;
     std::optional<double> angle;
-    bool orthographic = false, angleGiven = false, sizeGiven = false;
+    CameraDesc::Projection projection = CameraDesc::Projection::Perspective;
+    bool angleGiven = false, sizeGiven = false;
     std::vector<TransformStep> steps;
   };
 
@@ -329,7 +330,9 @@ class Builder {
     PovCamera k;
     collectCamera(n, k);
     glm::dvec3 direction = k.direction, right = k.right, up = k.up;
-    if (k.angle) {
+    const bool planar = k.projection == CameraDesc::Projection::Perspective ||
+                        k.projection == CameraDesc::Projection::Orthographic;
+    if (k.angle && planar) {
       direction = glm::normalize(direction) * (0.5 * glm::length(right) / std::tan(glm::radians(*k.angle) / 2));
     }
     if (k.lookAt) {
@@ -344,20 +347,22 @@ class Builder {
     // What right and up are divided by: the direction's length for a perspective camera, which makes them the
     // picture's size at unit distance; for an orthographic one, 1 or the look_at point's distance in units
     // of the direction's length.
+    using P = CameraDesc::Projection;
     double size = 1;
-    if (k.orthographic && (k.angleGiven || !k.sizeGiven)) {
+    if (k.projection == P::Orthographic && (k.angleGiven || !k.sizeGiven)) {
       size = glm::length(direction) / (k.lookAt ? glm::length(*k.lookAt - k.location) : glm::length(direction));
     }
     const glm::dmat4 m = composeTransforms<double>(k.steps);
     const glm::dvec3 location = glm::dvec3(m * glm::dvec4(k.location, 1));
     direction = glm::dvec3(m * glm::dvec4(direction, 0));
-    if (!k.orthographic) size = glm::length(direction);
+    if (k.projection == P::Perspective) size = glm::length(direction);
     CameraDesc& c = scene_.camera;
     c.location = location;
     c.lookAt = location + glm::normalize(direction);
     c.right = glm::dvec3(m * glm::dvec4(right, 0)) / size;
     c.up = glm::dvec3(m * glm::dvec4(up, 0)) / size;
-    c.orthographic = k.orthographic;
+    c.projection = k.projection;
+    c.angle = glm::radians(k.angle.value_or(90));
     c.loc = n.loc;
   }
 
@@ -375,12 +380,18 @@ class Builder {
       }
       const std::string_view w = it.word;
       if (w == "perspective" || w == "orthographic") {
-        k.orthographic = w == "orthographic";
+        k.projection = w == "orthographic" ? CameraDesc::Projection::Orthographic : CameraDesc::Projection::Perspective;
         continue;
       }
       const Value* v = valueAfter(n, i);
+      if (w == "cylinder") {
+        const int type = v && v->type == Value::Type::Float ? int(v->v[0]) : 0;
+        if (type < 1 || type > 4) throw ParseError(it.loc, "'cylinder' needs a type from 1 to 4");
+        k.projection = CameraDesc::Projection(int(CameraDesc::Projection::Cylinder1) + type - 1);
+        continue;
+      }
       if (w == "angle") k.angleGiven = true;
-      if (!v && w == "angle" && k.orthographic) continue;  // the angle is optional there
+      if (!v && w == "angle" && k.projection == CameraDesc::Projection::Orthographic) continue;  // optional there
       if (!v) {
         refuse(it.loc, w);
         continue;
