@@ -181,3 +181,25 @@ TEMPLATE_TEST_CASE("camera: POV-Ray's cylinder projections, against where POV-Ra
     CHECK(double(ray.origin.y) + t * double(ray.dir.y) == Approx(k.y).margin(0.25));
   }
 }
+
+TEMPLATE_TEST_CASE("camera: POV-Ray's ultra wide angle and spherical projections, against POV-Ray's rays", "", float,
+                   double) {
+  // As above; POV-Ray's points for pixel (0, 0): ultra wide angle (−10.62, 8.04), spherical with angle 90
+  // (and so 45 up) (−9.01, 4.96).
+  struct Case {
+    rt::CameraDesc::Projection projection;
+    double vertical, x, y;
+  } cases[] = {{rt::CameraDesc::Projection::UltraWideAngle, 0.75 * M_PI / 2, -10.62, 8.04},
+               {rt::CameraDesc::Projection::Spherical, M_PI / 4, -9.01, 4.96}};
+  for (const Case& k : cases) {
+    rt::CameraDesc c = camera({0, 0, 0}, {4.0 / 3, 0, 0});
+    c.lookAt = {0, 0, 1};
+    c.projection = k.projection;
+    c.angle = M_PI / 2;
+    c.verticalAngle = k.vertical;
+    const rt::Ray<TestType> ray = rt::Camera<TestType>(c, 16, 12).pixelRay(0, 11);
+    const double t = 10 / double(ray.dir.z);
+    CHECK(t * double(ray.dir.x) == Approx(k.x).margin(0.25));
+    CHECK(t * double(ray.dir.y) == Approx(k.y).margin(0.25));
+  }
+}

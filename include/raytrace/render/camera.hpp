@@ -44,7 +44,7 @@ template <class T> class Camera {
 
   Vec3<T> origin_, right_, up_, forward_;
   CameraDesc::Projection projection_;
-  T angle_;
+  T angle_, verticalAngle_;
   glm::vec<2, T, glm::defaultp> offset_;
   int width_, height_;
 };

@@ -30,10 +30,14 @@ struct CameraDesc {
   // of the picture plane one unit ahead. Orthographic (POV-Ray): parallel rays along the view, from the
   // picture's point on the plane through `location`; right and up are the picture's size. Cylinder 1–4
   // (POV-Ray): the picture wrapped round a vertical (1, 3) or horizontal (2, 4) cylinder over `angle`, seen
-  // from the location (1, 2) or from points along the axis (3, 4); right and up as written.
-  enum class Projection : unsigned char { Perspective, Orthographic, Cylinder1, Cylinder2, Cylinder3, Cylinder4 };
+  // from the location (1, 2) or from points along the axis (3, 4); right and up as written. Ultra wide angle
+  // and spherical (POV-Ray): the picture's sides are angles across and up, the ray on a box-like or a
+  // spherical grid of directions.
+  enum class Projection : unsigned char {
+    Perspective, Orthographic, Cylinder1, Cylinder2, Cylinder3, Cylinder4, UltraWideAngle, Spherical
+  };
   Projection projection = Projection::Perspective;
-  double angle = 0;  // radians, for the cylinder projections
+  double angle = 0, verticalAngle = 0;  // radians, for the cylinder, ultra wide angle and spherical projections
   SourceLoc loc;  // the `camera` statement (POV) or the `fov` command (.cli) that set it, for messages
 };
 

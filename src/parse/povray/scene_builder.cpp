@@ -316,7 +316,7 @@ class Builder {
   struct PovCamera {
     glm::dvec3 location{0}, direction{0, 0, 1}, up{0, 1, 0}, right{1.33, 0, 0}, sky{0, 1, 0};
     std::optional<glm::dvec3> lookAt;
-    std::optional<double> angle;
+    std::optional<double> angle, verticalAngle;
     CameraDesc::Projection projection = CameraDesc::Projection::Perspective;
     bool angleGiven = false, sizeGiven = false;
     std::vector<TransformStep> steps;
@@ -362,7 +362,12 @@ class Builder {
     c.right = glm::dvec3(m * glm::dvec4(right, 0)) / size;
     c.up = glm::dvec3(m * glm::dvec4(up, 0)) / size;
     c.projection = k.projection;
-    c.angle = glm::radians(k.angle.value_or(90));
+    // POV-Ray's defaults: 90° for the cylinders and ultra wide angle, 360° by half that for spherical; ultra
+    // wide angle's vertical angle follows up's length against right's.
+    const bool spherical = k.projection == P::Spherical;
+    c.angle = glm::radians(k.angle.value_or(spherical ? 360 : 90));
+    c.verticalAngle = spherical ? glm::radians(k.verticalAngle.value_or(glm::degrees(c.angle) / 2))
+                                : c.angle * glm::length(up) / glm::length(right);
     c.loc = n.loc;
   }
 
@@ -379,8 +384,14 @@ class Builder {
         continue;
       }
       const std::string_view w = it.word;
-      if (w == "perspective" || w == "orthographic") {
-        k.projection = w == "orthographic" ? CameraDesc::Projection::Orthographic : CameraDesc::Projection::Perspective;
+      using P = CameraDesc::Projection;
+      constexpr std::pair<std::string_view, P> kProjections[] = {
+          {"perspective", P::Perspective}, {"orthographic", P::Orthographic},
+          {"ultra_wide_angle", P::UltraWideAngle}, {"spherical", P::Spherical}};
+      const auto named = std::find_if(std::begin(kProjections), std::end(kProjections),
+                                      [&](const auto& p) { return p.first == w; });
+      if (named != std::end(kProjections)) {
+        k.projection = named->second;
         continue;
       }
       const Value* v = valueAfter(n, i);
@@ -403,7 +414,13 @@ class Builder {
       else if (w == "right") k.right = vec3(*v), k.sizeGiven = true;
       else if (w == "sky") k.sky = vec3(*v);
       else if (w == "look_at") k.lookAt = vec3(*v);
-      else if (w == "angle") k.angle = v->v[0];
+      else if (w == "angle") {
+        k.angle = v->v[0];
+        // `angle H, V` of a spherical camera.
+        if (i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value && n.items[i + 1].value.type == Value::Type::Float) {
+          k.verticalAngle = valueAfter(n, i)->v[0];
+        }
+      }
       else refuse(it.loc, w);
     }
   }
