@@ -29,6 +29,8 @@ class Builder {
       light(n);
     } else if (k == "global_settings") {
       globalSettings(n);
+    } else if (k == "default") {
+      defaults(n);  // the `default { … }` of POV-Ray before 3.0, which 3.7 still reads
     } else if (k == "sky_sphere") {
       skySphere(n);
     } else if (k == "fog") {
