@@ -30,7 +30,6 @@ void finishStandardOutput() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::ios::sync_with_stdio(false);
   // Past a file size limit (ulimit -f) a write then fails with EFBIG, which writePng reports and cleans up
   // after, instead of the signal killing us and leaving its temporary file behind.
   std::signal(SIGXFSZ, SIG_IGN);
@@ -40,6 +39,7 @@ int main(int argc, char** argv) {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 32 << 20);
   try {
+    std::ios::sync_with_stdio(false);  // inside: it allocates the streams' buffers, which a tight ulimit refuses
     const int status = rt::runCommand(std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
     finishStandardOutput();
     return status;

@@ -18,8 +18,10 @@ const std::string kFonts = "/usr/share/fonts/truetype/povray/";
 
 TextDesc textOf(const std::string& font, const std::string& text, double thickness = 0.5,
                 const glm::dvec3& offset = glm::dvec3(0)) {
-  TextDesc d{kFonts + font, text, thickness, offset, nullptr};
-  d.glyphs = std::make_shared<const std::vector<PlacedGlyph>>(textOutline(d.font, text, glm::dvec2(offset), SourceLoc{}));
+  TextDesc d{std::make_shared<const TextDesc::Written>(TextDesc::Written{kFonts + font, text, offset}), thickness,
+             nullptr};
+  d.glyphs =
+      std::make_shared<const std::vector<PlacedGlyph>>(textOutline(kFonts + font, text, glm::dvec2(offset), SourceLoc{}));
   return d;
 }
 
@@ -178,14 +180,14 @@ text { ttf "cyrvetic", "Hi", 0.25, 0 }
 )");
   REQUIRE(s.objects.size() == 4);
   const auto& ttf = std::get<TextDesc>(s.objects[0].shape);
-  CHECK(ttf.text == "Hi");
+  CHECK(ttf.written->text == "Hi");
   CHECK(ttf.thickness == 0.25);
-  CHECK(ttf.offset == glm::dvec3(0.1, 0, 0));
+  CHECK(ttf.written->offset == glm::dvec3(0.1, 0, 0));
   CHECK(ttf.glyphs->size() == 2);
-  CHECK(std::get<TextDesc>(s.objects[1].shape).font.find("timrom.ttf") != std::string::npos);
-  CHECK(std::get<TextDesc>(s.objects[2].shape).font.find("povlogo.ttf") != std::string::npos);
+  CHECK(std::get<TextDesc>(s.objects[1].shape).written->font.find("timrom.ttf") != std::string::npos);
+  CHECK(std::get<TextDesc>(s.objects[2].shape).written->font.find("povlogo.ttf") != std::string::npos);
   CHECK(std::get<TextDesc>(s.objects[2].shape).glyphs->size() == 1);  // the logo is its 'P'
-  CHECK(std::get<TextDesc>(s.objects[3].shape).font.find("cyrvetic.ttf") != std::string::npos);
+  CHECK(std::get<TextDesc>(s.objects[3].shape).written->font.find("cyrvetic.ttf") != std::string::npos);
 }
 
 TEST_CASE("text: strings are ASCII, bytes past 127 blanks, unless global_settings chooses charset utf8", "[text]") {

@@ -22,10 +22,14 @@ template <class T> class Text;
 // font (POV-Ray 3.7's built-in fonts, which are the four files of Debian's fonts-povray). The font is read
 // here, where a missing one can be told at its place in the file.
 struct TextDesc {
-  std::string font;  // the file, where it was found
-  std::string text;
+  // As written, for sceneinfo; held apart, so that every object's shape stays as small as a triangle's.
+  struct Written {
+    std::string font;  // the file, where it was found
+    std::string text;
+    glm::dvec3 offset;  // added to the advance after every character, but for its z (as POV-Ray)
+  };
+  std::shared_ptr<const Written> written;
   double thickness;
-  glm::dvec3 offset;  // added to the advance after every character, but for its z (as POV-Ray)
   std::shared_ptr<const std::vector<PlacedGlyph>> glyphs;
 
   static bool named(std::string_view word) { return word == "text"; }
@@ -48,13 +52,15 @@ struct TextDesc {
     } else {
       file = r.string("the font file name");
     }
-    d.text = r.string("the text");
+    Written w;
+    w.text = r.string("the text");
     d.thickness = r.positive("the text thickness");
     r.comma("after the text thickness");
-    d.offset = r.vec3("the text offset");
-    d.font = r.findFont(file);
-    if (d.font.empty()) throw ParseError(at, "cannot find the font file " + quote(file));
-    d.glyphs = std::make_shared<const std::vector<PlacedGlyph>>(textOutline(d.font, d.text, glm::dvec2(d.offset), at));
+    w.offset = r.vec3("the text offset");
+    w.font = r.findFont(file);
+    if (w.font.empty()) throw ParseError(at, "cannot find the font file " + quote(file));
+    d.glyphs = std::make_shared<const std::vector<PlacedGlyph>>(textOutline(w.font, w.text, glm::dvec2(w.offset), at));
+    d.written = std::make_shared<const Written>(std::move(w));
     return d;
   }
   // The thinner of the slab and the narrowest glyph.
@@ -69,8 +75,8 @@ struct TextDesc {
   }
   FlatFaces flatFaces() const { return {}; }  // computed in double (kFloatErrorBound): no offset to check
   void describe(std::ostream& out) const {
-    out << "- Font: " << quote(font) << "\n- Text: " << quote(text) << "\n- Thickness: " << fixed4(thickness)
-        << "\n- Offset: " << braces(offset) << "\n";
+    out << "- Font: " << quote(written->font) << "\n- Text: " << quote(written->text)
+        << "\n- Thickness: " << fixed4(thickness) << "\n- Offset: " << braces(written->offset) << "\n";
   }
   // The glyphs' boxes together, from z = 0 to the thickness; a point at the origin when nothing is drawn.
   Aabb<double> bounds() const {
