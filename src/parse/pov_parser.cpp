@@ -230,6 +230,7 @@ class PovParser {
   void comma(const char* after) { expect(',', after); }
   SourceLoc here() const { return peek().loc; }
   bool objectNext() const { return peek().kind == Token::Kind::Word && isShapeKeyword(peek().text); }
+  bool valueNext() const { return peek().kind == Token::Kind::Number || isPunct(peek(), '<'); }
   ObjectDesc object() { return readObject(next()); }
   // The course language has no strings or keywords in a shape, and so no text, prism, lathe or sor: the first
   // of these their read() calls stops it.

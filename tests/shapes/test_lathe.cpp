@@ -100,4 +100,6 @@ TEST_CASE("lathe: bad input stops at the number of points, with what is wrong", 
         "scene.pov:2:23: error: a bezier_spline lathe needs a multiple of 4 points, found 5");
   CHECK(povFailure("lathe { 3, <1, 0>, <1, 1> pigment { rgb 1 } }") ==
         "scene.pov:2:27: error: 'lathe' needs a lathe point");
+  CHECK(povFailure("lathe { 2, <1, 0>, <1, 1>, <1, 2> pigment { rgb 1 } }") ==
+        "scene.pov:2:28: error: more lathe points than the 2 its count gives");
 }

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "crossing_parity.hpp"
+#include "raytrace/parse/pov_parser.hpp"
 #include "raytrace/parse/povray/scene_builder.hpp"
 #include "raytrace/shapes/prism.hpp"
 
@@ -110,4 +111,18 @@ TEST_CASE("prism: bad input stops at the number of points, with what is wrong", 
   CHECK(povFailure("prism { 0, 1, 4, <0, 0>, <1, 0>, <1, 1> }") == "scene.pov:2:1: error: 'prism' needs a prism point");
   CHECK(povFailure("prism { 0, 1, 2.5, <0, 0>, <1, 0>, <1, 1> }") ==
         "scene.pov:2:15: error: the number of prism points must be a whole number, found 2.5");
+}
+
+TEST_CASE("prism and lathe: the course language, which has no keywords in a shape, refuses them at their place",
+          "[prism]") {
+  for (const std::string shape : {"prism", "lathe"}) {
+    std::string message = "no error";
+    try {
+      parsePov(shape + " { linear_spline 0, 1, 3, <0, 0>, <1, 0>, <0, 1> }\n", "course.pov");
+    } catch (const Error& e) {
+      message = e.what();
+    }
+    CHECK(message == "course.pov:1:" + std::to_string(shape.size() + 4) + ": error: '" + shape +
+                         "' is read only in POV-Ray 3.7 scenes");
+  }
 }

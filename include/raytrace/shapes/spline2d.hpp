@@ -74,6 +74,9 @@ template <class Reader> SplinePoints readSplinePoints(Reader& r, const std::stri
     const glm::dvec3 p = r.vec3(what.c_str());
     list.points.emplace_back(p.x, p.y);
   }
+  if (r.valueNext()) {
+    throw ParseError(r.here(), "more " + shape + " points than the " + shortest(n) + " its count gives");
+  }
   return list;
 }
 

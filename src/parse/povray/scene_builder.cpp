@@ -127,6 +127,7 @@ class Builder {
     }
     std::string findFont(const std::string& name) const { return b_.interpreter_.findFont(name); }
     SourceLoc here() const { return i_ < n_.items.size() ? n_.items[i_].loc : n_.loc; }
+    bool valueNext() const { return i_ < n_.items.size() && n_.items[i_].kind == Item::Kind::Value; }
     bool objectNext() {
       while (i_ < n_.items.size() && b_.lightHere(n_.items[i_])) ++i_;
       return i_ < n_.items.size() && isObject(n_.items[i_]);
