@@ -41,15 +41,6 @@ namespace {
 constexpr int kMax = Polynomial::kMaxDegree;
 using Powers = std::array<Polynomial, kMax + 1>;
 
-Polynomial times(const Polynomial& a, const Polynomial& b) {
-  Polynomial p;
-  p.degree = a.degree + b.degree;
-  for (int i = 0; i <= a.degree; ++i) {
-    for (int j = 0; j <= b.degree; ++j) p.c[size_t(i + j)] += a.c[size_t(i)] * b.c[size_t(j)];
-  }
-  return p;
-}
-
 // (a + b·s)^k for k = 0 … n, each from the one before: c_i ← a·c_i + b·c_{i−1}.
 Powers linearPowers(double a, double b, int n) {
   Powers p;

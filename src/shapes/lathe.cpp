@@ -10,15 +10,6 @@ namespace rt {
 
 namespace {
 
-Polynomial times(const Polynomial& a, const Polynomial& b) {
-  Polynomial p;
-  p.degree = a.degree + b.degree;
-  for (int i = 0; i <= a.degree; ++i) {
-    for (int j = 0; j <= b.degree; ++j) p.c[size_t(i + j)] += a.c[size_t(i)] * b.c[size_t(j)];
-  }
-  return p;
-}
-
 Polynomial plus(Polynomial a, const Polynomial& b, double scale) {
   a.degree = std::max(a.degree, b.degree);
   for (int i = 0; i <= b.degree; ++i) a.c[size_t(i)] += scale * b.c[size_t(i)];

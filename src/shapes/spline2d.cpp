@@ -67,10 +67,7 @@ void segmentBounds(const std::vector<Segment2>& segments, glm::dvec2& lo, glm::d
       hi = glm::max(hi, seg.at(s));
     }
     for (const auto& [a, b] : {std::pair{1.0, 0.0}, std::pair{0.0, 1.0}}) {
-      Polynomial slope;
-      slope.degree = 2;
-      for (size_t i = 0; i < 3; ++i) slope.c[i] = double(i + 1) * (a * seg.c[i + 1].x + b * seg.c[i + 1].y);
-      const int n = realRoots(slope.trimmed(), 0, 1, roots, 2);
+      const int n = realRoots(seg.combination(a, b, 0).derivative(), 0, 1, roots, 2);
       for (int i = 0; i < n; ++i) {
         lo = glm::min(lo, seg.at(roots[i]));
         hi = glm::max(hi, seg.at(roots[i]));

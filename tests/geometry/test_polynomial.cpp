@@ -13,15 +13,6 @@ using namespace rt;
 
 namespace {
 
-Polynomial times(const Polynomial& a, const Polynomial& b) {
-  Polynomial p;
-  p.degree = a.degree + b.degree;
-  for (int i = 0; i <= a.degree; ++i) {
-    for (int j = 0; j <= b.degree; ++j) p.c[size_t(i + j)] += a.c[size_t(i)] * b.c[size_t(j)];
-  }
-  return p;
-}
-
 // lead · Π (t − r) · Π (t² + b·t + c) for the pairs (b, c), which have no real roots when b² < 4c.
 Polynomial build(double lead, const std::vector<double>& roots, const std::vector<std::pair<double, double>>& pairs = {}) {
   Polynomial p;
