@@ -7,6 +7,7 @@
 
 #include "crossing_parity.hpp"
 #include "raytrace/parse/povray/scene_builder.hpp"
+#include "raytrace/shapes/shape_desc.hpp"
 #include "raytrace/shapes/sor.hpp"
 
 using namespace rt;
@@ -80,4 +81,25 @@ TEST_CASE("sor: bad input stops at the number of points, with what is wrong", "[
         "scene.pov:2:7: error: a sor needs at least 4 points, found 3");
   CHECK(povFailure("sor { 4, <1, 0>, <1, 1>, <1, 1>, <1, 2> }") ==
         "scene.pov:2:7: error: the sor's heights must increase, but point 3's (1) is not above point 2's (1)");
+}
+
+TEST_CASE("sor, lathe and prism: open and sturm are read where POV-Ray has them", "[sor]") {
+  const SceneDesc scene = povray::parsePovRay(
+      "#version 3.7;\n"
+      "sor { 4, <1, 0> <1, 1> <1, 2> <1, 3> open sturm pigment { rgb 1 } }\n"
+      "lathe { bezier_spline 4, <1, 0>, <2, 0>, <2, 1>, <1, 1> sturm }\n"
+      "prism { conic_sweep cubic_spline 0.5, 1, 6, <0, 1>, <1, 0>, <0, -1>, <-1, 0>, <1, 0>, <0, -1> open }\n",
+      "scene.pov", povray::PovRayOptions{{}, 320, 240, false});
+  REQUIRE(scene.objects.size() == 3);
+  const auto& sor = std::get<SorDesc>(scene.objects[0].shape);
+  CHECK(sor.open);
+  CHECK(sor.sturm);
+  const auto& lathe = std::get<LatheDesc>(scene.objects[1].shape);
+  CHECK(lathe.spline == SplineKind::Bezier);
+  CHECK(lathe.sturm);
+  const auto& prism = std::get<PrismDesc>(scene.objects[2].shape);
+  CHECK(prism.conic);
+  CHECK(prism.spline == SplineKind::Cubic);
+  CHECK(prism.open);
+  CHECK(prism.outline.size() == 3);
 }
