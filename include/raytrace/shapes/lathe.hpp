@@ -28,8 +28,7 @@ struct LatheDesc {
 
   template <class Reader> static LatheDesc read(Reader& r, std::string_view) {
     LatheDesc d;
-    while (readSplineKeyword(r, d.spline)) {
-    }
+    readSplineKeyword(r, d.spline);
     SplinePoints list = readSplinePoints(r, "lathe");
     d.points = std::move(list.points);
     d.check(list.at);
@@ -59,8 +58,8 @@ struct LatheDesc {
 };
 
 // Each segment (R(s), Y(s)) met by a ray: with t = (Y(s) − o.y)/d.y, the ray's squared distance from the axis equals
-// R(s)², a polynomial of degree up to 6 in s; a ray across the axis's direction meets Y(s) = o.y instead, a cubic, and
-// then a quadratic in t. Computed in double whatever T is.
+// R(s)², a polynomial of degree up to 6 in s; a level ray meets Y(s) = o.y instead, a cubic, and then a quadratic in t.
+// Computed in double whatever T is.
 template <class T> class Lathe final : public Object<T> {
  public:
   Lathe(const LatheDesc& desc, const Material& material, int id);
