@@ -23,6 +23,15 @@ Polynomial Polynomial::derivative() const {
   return d;
 }
 
+Polynomial times(const Polynomial& a, const Polynomial& b) {
+  Polynomial p;
+  p.degree = a.degree + b.degree;
+  for (int i = 0; i <= a.degree; ++i) {
+    for (int j = 0; j <= b.degree; ++j) p.c[size_t(i + j)] += a.c[size_t(i)] * b.c[size_t(j)];
+  }
+  return p;
+}
+
 Polynomial Polynomial::trimmed() const {
   Polynomial p = *this;
   while (p.degree > 0 && p.c[size_t(p.degree)] == 0) --p.degree;

@@ -230,12 +230,16 @@ class PovParser {
   void comma(const char* after) { expect(',', after); }
   SourceLoc here() const { return peek().loc; }
   bool objectNext() const { return peek().kind == Token::Kind::Word && isShapeKeyword(peek().text); }
+  bool valueNext() const { return peek().kind == Token::Kind::Number || isPunct(peek(), '<'); }
   ObjectDesc object() { return readObject(next()); }
-  // The course language has no strings, and so no text: the first of these a text's read() calls stops it.
-  bool keyword(std::string_view) const { throw noStrings(); }
-  std::string string(const char*) const { throw noStrings(); }
-  std::string findFont(const std::string&) const { throw noStrings(); }
-  ParseError noStrings() const { return ParseError(here(), "'text' is read only in POV-Ray 3.7 scenes"); }
+  // The course language has no strings or keywords in a shape, and so no text, prism, lathe or sor: the first
+  // of these their read() calls stops it.
+  bool keyword(std::string_view) const { throw povRayOnly(); }
+  std::string string(const char*) const { throw povRayOnly(); }
+  std::string findFont(const std::string&) const { throw povRayOnly(); }
+  ParseError povRayOnly() const {
+    return ParseError(here(), "'" + std::string(kind_) + "' is read only in POV-Ray 3.7 scenes");
+  }
   double positive(const char* what) {
     const SourceLoc at = peek().loc;
     const double v = numberFor(what);
@@ -255,6 +259,7 @@ class PovParser {
     expect('{', "after " + keyword.quoted());
     ObjectDesc obj;
     obj.loc = keyword.loc;
+    kind_ = keyword.text;
     obj.shape = *readShape(keyword.text, *this);
     parseModifiers(obj, keyword);
     passTextureDown(obj);
@@ -344,7 +349,8 @@ class PovParser {
   }
 
   Tokenizer tokens_;
-  Token current_;  // the one token of lookahead
+  Token current_;          // the one token of lookahead
+  std::string_view kind_;  // the shape being read, for povRayOnly()
   std::uint64_t parts_;
   SceneDesc scene_;
   int cameras_ = 0;

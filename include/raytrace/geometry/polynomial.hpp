@@ -24,6 +24,9 @@ struct Polynomial {
   Polynomial trimmed() const;
 };
 
+// The product a·b; the degrees must add up to at most kMaxDegree.
+Polynomial times(const Polynomial& a, const Polynomial& b);
+
 // How the roots are found. Auto: closed forms up to degree 2, the derivative's roots splitting the line into
 // monotone pieces for degrees 3 and 4, Sturm sequences above; Sturm: Sturm sequences for every degree above 2
 // (POV-Ray's `sturm`).

@@ -79,6 +79,13 @@ template <class T> [[gnu::always_inline]] inline Vec3<T> spawnOrigin(const Hit<T
   return hit.point + kRayEpsilon<T> * std::max(T(1), maxAbs(hit.point)) * outward;
 }
 
+// Whether a hit at t on a surface of normal n lies across that surface within a few offsets of the ray's start:
+// the surface a spawned ray leaves, found again by a shape whose roots carry more rounding than the offset
+// (prism, lathe, sor), rather than a new one.
+inline bool nearSpawnOffset(double t, const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& n) {
+  return std::abs(t * glm::dot(d, n)) <= 4 * kRayEpsilon<double> * std::max(1.0, maxAbs(o));
+}
+
 template <class T> Ray<T> spawnRay(const Hit<T>& hit, const Vec3<T>& dir, OffsetPolicy policy) {
   return Ray<T>{spawnOrigin(hit, dir, policy), dir};
 }

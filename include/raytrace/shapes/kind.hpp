@@ -56,6 +56,7 @@ struct ObjectBuild {
 //   bool objectNext() const;                ObjectDesc object();   (a whole object, for CSG)
 //   std::vector<double> coefficients(size_t n, const char* what);   `<c1, …, cn>`, exactly n numbers (a poly's)
 //   bool keyword(std::string_view word);    takes the keyword `word` if it comes next
+//   bool valueNext();                       whether a number or vector comes next (one too many, for a list)
 //   std::string string(const char* what);   std::string findFont(const std::string& name);  ("" if nowhere)
 // The course language has no strings: its parser refuses the last three.
 // A template parameter rather than a base class: the parser's calls stay inline in its per-object loop.

@@ -16,9 +16,12 @@
 #include "raytrace/shapes/cone.hpp"
 #include "raytrace/shapes/csg.hpp"
 #include "raytrace/shapes/cylinder.hpp"
+#include "raytrace/shapes/lathe.hpp"
 #include "raytrace/shapes/plane.hpp"
 #include "raytrace/shapes/poly.hpp"
+#include "raytrace/shapes/prism.hpp"
 #include "raytrace/shapes/quadric.hpp"
+#include "raytrace/shapes/sor.hpp"
 #include "raytrace/shapes/sphere.hpp"
 #include "raytrace/shapes/torus.hpp"
 #include "raytrace/shapes/text.hpp"
@@ -29,7 +32,7 @@
 namespace rt {
 
 using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc, CsgDesc, TorusDesc,
-                               QuadricDesc, PolyDesc, TextDesc>;
+                               QuadricDesc, PolyDesc, TextDesc, PrismDesc, LatheDesc, SorDesc>;
 
 struct ObjectDesc {
   ShapeDesc shape;

@@ -168,6 +168,7 @@ class Builder {
     }
     std::string findFont(const std::string& name) const { return b_.interpreter_.findFont(name); }
     SourceLoc here() const { return i_ < n_.items.size() ? n_.items[i_].loc : n_.loc; }
+    bool valueNext() const { return i_ < n_.items.size() && n_.items[i_].kind == Item::Kind::Value; }
     bool objectNext() {
       while (i_ < n_.items.size() && b_.lightHere(n_.items[i_])) ++i_;
       return i_ < n_.items.size() && isObject(n_.items[i_]);
@@ -193,8 +194,8 @@ class Builder {
   // Whether an item is an object: a shape of ours, or one of POV-Ray's that is refused when read.
   static bool isObject(const Item& it) {
     static constexpr std::string_view kPovObjects[] = {
-        "bicubic_patch", "blob", "disc", "height_field", "isosurface", "julia_fractal", "lathe", "light_group",
-        "mesh", "mesh2", "object", "ovus", "parametric", "polygon", "polynomial", "prism", "smooth_triangle", "sor", "sphere_sweep",
+        "bicubic_patch", "blob", "disc", "height_field", "isosurface", "julia_fractal", "light_group", "mesh",
+        "mesh2", "object", "ovus", "parametric", "polygon", "polynomial", "smooth_triangle", "sphere_sweep",
         "superellipsoid"};
     if (it.kind != Item::Kind::Node) return false;
     const std::string_view k = it.node->keyword;
@@ -287,11 +288,14 @@ class Builder {
     return true;
   }
 
-  // POV-Ray's `sturm [on]`: the Sturm-sequence root finder for a torus or a polynomial shape; other shapes
-  // take it and have no use for it.
+  // POV-Ray's `sturm [on]`: the Sturm-sequence root finder for a torus, a polynomial shape, a prism, a lathe
+  // or a sor; other shapes take it and have no use for it.
   static void sturm(ShapeDesc& shape, bool on) {
     if (auto* torus = std::get_if<TorusDesc>(&shape)) torus->sturm = on;
     if (auto* poly = std::get_if<PolyDesc>(&shape)) poly->sturm = on;
+    if (auto* prism = std::get_if<PrismDesc>(&shape)) prism->sturm = on;
+    if (auto* lathe = std::get_if<LatheDesc>(&shape)) lathe->sturm = on;
+    if (auto* sor = std::get_if<SorDesc>(&shape)) sor->sturm = on;
   }
 
   // The object's material, and its texture when its colour varies over it, moved by the transforms `after`.
