@@ -228,14 +228,20 @@ class PovParser {
     return c;
   }
   void comma(const char* after) { expect(',', after); }
+  bool moreNumbers() const { return isPunct(peek(), ','); }
   SourceLoc here() const { return peek().loc; }
   bool objectNext() const { return peek().kind == Token::Kind::Word && isShapeKeyword(peek().text); }
   ObjectDesc object() { return readObject(next()); }
-  // The course language has no strings, and so no text: the first of these a text's read() calls stops it.
-  bool keyword(std::string_view) const { throw noStrings(); }
-  std::string string(const char*) const { throw noStrings(); }
-  std::string findFont(const std::string&) const { throw noStrings(); }
-  ParseError noStrings() const { return ParseError(here(), "'text' is read only in POV-Ray 3.7 scenes"); }
+  // The course language has no strings, keywords inside a shape or blocks in it, and so no text and no blob:
+  // the first of these their read() calls stops it.
+  bool keyword(std::string_view) const { throw povrayOnly(); }
+  std::string string(const char*) const { throw povrayOnly(); }
+  std::string findFont(const std::string&) const { throw povrayOnly(); }
+  template <class F> bool block(std::string_view, F&&) const { throw povrayOnly(); }
+  std::vector<TransformStep> transforms() const { throw povrayOnly(); }
+  ParseError povrayOnly() const {
+    return ParseError(here(), "'" + std::string(shape_) + "' is read only in POV-Ray 3.7 scenes");
+  }
   double positive(const char* what) {
     const SourceLoc at = peek().loc;
     const double v = numberFor(what);
@@ -255,6 +261,7 @@ class PovParser {
     expect('{', "after " + keyword.quoted());
     ObjectDesc obj;
     obj.loc = keyword.loc;
+    shape_ = keyword.text;
     obj.shape = *readShape(keyword.text, *this);
     parseModifiers(obj, keyword);
     passTextureDown(obj);
@@ -347,6 +354,7 @@ class PovParser {
   Token current_;  // the one token of lookahead
   std::uint64_t parts_;
   SceneDesc scene_;
+  std::string shape_;  // the keyword of the shape being read, for povrayOnly()
   int cameras_ = 0;
 };
 

@@ -56,8 +56,11 @@ struct ObjectBuild {
 //   bool objectNext() const;                ObjectDesc object();   (a whole object, for CSG)
 //   std::vector<double> coefficients(size_t n, const char* what);   `<c1, …, cn>`, exactly n numbers (a poly's)
 //   bool keyword(std::string_view word);    takes the keyword `word` if it comes next
+//   bool moreNumbers() const;               whether an optional number follows (`, n` in the course language)
+//   bool block(std::string_view word, F read);   `word { … }` next: read(reader of its items) (a blob's parts)
+//   std::vector<TransformStep> transforms();     the transforms that come next
+// The course language has no strings, keywords inside a shape or blocks: its parser refuses the calls for them.
 //   std::string string(const char* what);   std::string findFont(const std::string& name);  ("" if nowhere)
-// The course language has no strings: its parser refuses the last three.
 // A template parameter rather than a base class: the parser's calls stay inline in its per-object loop.
 
 }  // namespace rt
