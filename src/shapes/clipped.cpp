@@ -21,8 +21,6 @@ template <class T> std::optional<Hit<T>> Clipped<T>::intersect(const Ray<T>& ray
   return std::nullopt;
 }
 
-template <class T> bool Clipped<T>::inside(const Vec3<T>& p) const { return inner_->inside(p) && insideClips(p); }
-
 // What remains lies in the object's box and in every bounded clip's.
 template <class T> std::optional<Aabb<T>> Clipped<T>::bounds() const {
   std::optional<Aabb<T>> box = inner_->bounds();

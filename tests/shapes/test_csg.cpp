@@ -255,22 +255,26 @@ TEMPLATE_TEST_CASE("a clipped sphere keeps the surface inside its clip and close
   CHECK(qbox->min.x == Approx(0));
 }
 
-// A clipped object's inside is also its clip's (as POV-Ray has it), but no surface closes the cut: a group with one
-// has solid changing without a surface there, and no parity of crossings to check.
-TEST_CASE("a clipped object in CSG cuts only where it remains", "[csg]") {
-  // A box less a clipped ball: the part of the ball above y = 0 is no solid, so the box keeps its top there.
+// As POV-Ray's pictures have it: a clipped object's inside is its clips' and its own, and a difference takes the
+// complement of its own solid but keeps the clips. So a difference with a clipped child keeps nothing outside
+// the clip, and is open there (no parity of crossings to check).
+TEST_CASE("a difference with a clipped child keeps only what lies inside the clip", "[csg]") {
+  // A box less a ball clipped to y < 0: the box's top and its sides above y = 0 are gone, and from above one sees
+  // the ball's lower wall, or the box's floor.
   ObjectDesc box;
   box.shape = BoxDesc{{-2, -2, -2}, {2, 0.5, 2}};
   const auto cut = csg<double>(CsgOp::Difference, {box, clipped(sphere({0, 0.5, 0}, 1), {plane({0, 1, 0}, 0)})});
-  const auto top = cut->intersect({{0, 5, 0}, {0, -1, 0}}, Interval<double>{});
-  REQUIRE(top);
-  CHECK(top->t == Approx(4.5));
-  CHECK(cut->inside({0, 0.25, 0}));
-  CHECK_FALSE(cut->inside({0, -0.25, 0}));
-  const auto wall = cut->intersect({{0, -0.25, -1.5}, {0, 0, 1}}, Interval<double>{});  // from inside the box
+  const auto wall = cut->intersect({{0, 5, 0}, {0, -1, 0}}, Interval<double>{});
   REQUIRE(wall);
-  CHECK(wall->t == Approx(1.5 - std::sqrt(1 - 0.75 * 0.75)));  // the ball's wall
-  CHECK(wall->normal.z > 0);  // turned into the ball, out of what remains
+  CHECK(wall->t == Approx(5.5));
+  CHECK(wall->normal.y == Approx(1));  // turned into the ball, out of what remains
+  const auto floor = cut->intersect({{1.5, 5, 0}, {0, -1, 0}}, Interval<double>{});
+  REQUIRE(floor);
+  CHECK(floor->t == Approx(7));
+  CHECK_FALSE(cut->inside({0, 0.25, 0}));
+  CHECK_FALSE(cut->inside({1.5, 0.25, 0}));
+  CHECK_FALSE(cut->inside({0, -0.25, 0}));
+  CHECK(cut->inside({1.5, -1, 0}));
 }
 
 TEST_CASE("clipped_by and inverse are read with POV-Ray's transforms and bounded_by rules", "[csg]") {

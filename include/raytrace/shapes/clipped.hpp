@@ -16,8 +16,10 @@ template <class T> class Clipped final : public Object<T> {
 
   // The inner object's first crossing inside all the clipping objects.
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
-  // Inside the object and every clip, so that a clipped object in CSG cuts only where it remains.
-  bool inside(const Vec3<T>& p) const override;
+  // Inside every clip and the object; the clips stay when a difference takes the complement, as POV-Ray's
+  // pictures of a difference with a clipped child show (docs/shapes.md, "clipped_by").
+  bool inside(const Vec3<T>& p) const override { return insideClips(p) && inner_->inside(p); }
+  bool insideComplement(const Vec3<T>& p) const override { return insideClips(p) && !inner_->inside(p); }
   std::optional<Aabb<T>> bounds() const override;
   const char* name() const override { return inner_->name(); }
   void forEachMaterial(const std::function<void(const Material&)>& f) const override { inner_->forEachMaterial(f); }
