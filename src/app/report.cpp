@@ -37,6 +37,9 @@ void printSceneInfo(std::ostream& out, const SceneDesc& scene) {
     const ObjectDesc& o = scene.objects[i];
     out << "\nObject[" << i << "]:\n- Type: " << shapeName(o.shape) << "\n";
     std::visit([&](const auto& s) { s.describe(out); }, o.shape);
+    // Only when given, so that the course's scenes print as they always have.
+    if (o.inverse) out << "- Inverse: yes\n";
+    if (!o.clip.empty()) out << "- Clipped by: " << o.clip.size() << "\n";
     printMaterial(out, o, scene.language);
   }
 }

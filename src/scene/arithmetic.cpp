@@ -16,10 +16,11 @@ bool courseTierSound(const SceneDesc& scene, const SceneScale& s, const TierDoma
          d.offsetRefractionPixels <= kVisiblePixels && smallestGap(scene) >= 2 * kCourseEpsilon;
 }
 
-// Whether float's error is bounded, and tested, on every kind of shape in the scene (shapes/kind.hpp).
+// Whether float's error is bounded, and tested, on every kind of shape in the scene (shapes/kind.hpp). A clip
+// decides by inside tests at points of another surface, as CSG does: not bounded yet.
 bool floatErrorBounded(const SceneDesc& scene) {
   return std::all_of(scene.objects.begin(), scene.objects.end(), [](const ObjectDesc& o) {
-    return std::visit([](const auto& k) { return k.kFloatErrorBound; }, o.shape);
+    return o.clip.empty() && std::visit([](const auto& k) { return k.kFloatErrorBound; }, o.shape);
   });
 }
 

@@ -60,23 +60,31 @@ Csg<T>::Csg(CsgOp op, std::vector<std::unique_ptr<Object<T>>> children, const ch
             int id)
     : Object<T>(material, id), op_(op), children_(std::move(children)), name_(name) {}
 
-template <class T> bool Csg<T>::insideAnyOther(size_t i, size_t from, const Vec3<T>& p) const {
-  for (size_t j = from; j < children_.size(); ++j) {
+template <class T> bool Csg<T>::insideAnyOther(size_t i, const Vec3<T>& p) const {
+  for (size_t j = 0; j < children_.size(); ++j) {
     if (j != i && children_[j]->inside(p)) return true;
   }
   return false;
 }
 
+// In the complement of every child of a difference after the first but i.
+template <class T> bool Csg<T>::outsideOthers(size_t i, const Vec3<T>& p) const {
+  for (size_t j = 1; j < children_.size(); ++j) {
+    if (j != i && !children_[j]->insideComplement(p)) return false;
+  }
+  return true;
+}
+
 template <class T> bool Csg<T>::keeps(size_t i, const Vec3<T>& p) const {
   switch (op_) {
     case CsgOp::Union: return true;
-    case CsgOp::Merge: return !insideAnyOther(i, 0, p);
+    case CsgOp::Merge: return !insideAnyOther(i, p);
     case CsgOp::Intersection:
       for (size_t j = 0; j < children_.size(); ++j) {
         if (j != i && !children_[j]->inside(p)) return false;
       }
       return true;
-    case CsgOp::Difference: return (i == 0 || children_[0]->inside(p)) && !insideAnyOther(i, 1, p);
+    case CsgOp::Difference: return (i == 0 || children_[0]->inside(p)) && outsideOthers(i, p);
   }
   return false;
 }
@@ -101,10 +109,10 @@ template <class T> std::optional<Hit<T>> Csg<T>::intersect(const Ray<T>& ray, In
 template <class T> bool Csg<T>::inside(const Vec3<T>& p) const {
   switch (op_) {
     case CsgOp::Union:
-    case CsgOp::Merge: return insideAnyOther(children_.size(), 0, p);
+    case CsgOp::Merge: return insideAnyOther(children_.size(), p);
     case CsgOp::Intersection:
       return std::all_of(children_.begin(), children_.end(), [&](const auto& c) { return c->inside(p); });
-    case CsgOp::Difference: return children_[0]->inside(p) && !insideAnyOther(0, 1, p);
+    case CsgOp::Difference: return children_[0]->inside(p) && outsideOthers(0, p);
   }
   return false;
 }

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <optional>
 
+#include "raytrace/shapes/clipped.hpp"
+#include "raytrace/shapes/inverted.hpp"
 #include "raytrace/shapes/transformed.hpp"
 
 namespace rt {
@@ -44,8 +46,16 @@ std::unique_ptr<Object<T>> makeObject(const ObjectDesc& desc, SphereMethod spher
   object->setTexture(o.texture);
   const Mat4<T> m = course ? composeTransforms<T>(o.transforms) : Mat4<T>(o.worldFromObject());
   // An identity transform (`translate <0,0,0>`) costs nothing: the shape is used as it is.
-  if (m == Mat4<T>(T(1))) return object;
-  return std::make_unique<Transformed<T>>(std::move(object), m, o.material, id, course);
+  if (m != Mat4<T>(T(1))) object = std::make_unique<Transformed<T>>(std::move(object), m, o.material, id, course);
+  if (o.inverse) object = std::make_unique<Inverted<T>>(std::move(object), o.material, id);
+  if (o.clip.empty()) return object;
+  std::vector<std::unique_ptr<Object<T>>> clips;
+  for (const ClipDesc& c : o.clip) {
+    ObjectDesc placed = c.object;
+    placed.transforms.insert(placed.transforms.end(), desc.transforms.begin() + long(c.from), desc.transforms.end());
+    clips.push_back(makeObject<T>(placed, sphere, id, course));
+  }
+  return std::make_unique<Clipped<T>>(std::move(object), std::move(clips), o.material, id);
 }
 
 template std::unique_ptr<Object<float>> makeObject<float>(const ObjectDesc&, SphereMethod, int, bool);

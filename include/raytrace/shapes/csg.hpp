@@ -64,7 +64,8 @@ template <class T> class Csg final : public Object<T> {
  private:
   // Whether a point on child i's surface is a surface of the whole.
   bool keeps(size_t i, const Vec3<T>& p) const;
-  bool insideAnyOther(size_t i, size_t from, const Vec3<T>& p) const;
+  bool insideAnyOther(size_t i, const Vec3<T>& p) const;
+  bool outsideOthers(size_t i, const Vec3<T>& p) const;
 
   CsgOp op_;
   std::vector<std::unique_ptr<Object<T>>> children_;

@@ -57,8 +57,11 @@ struct ObjectBuild {
 //   std::vector<double> coefficients(size_t n, const char* what);   `<c1, …, cn>`, exactly n numbers (a poly's)
 //   bool keyword(std::string_view word);    takes the keyword `word` if it comes next
 //   bool valueNext();                       whether a number or vector comes next (one too many, for a list)
+//   bool moreNumbers() const;               whether an optional number follows (`, n` in the course language)
+//   bool block(std::string_view word, F read);   `word { … }` next: read(reader of its items) (a blob's parts)
+//   std::vector<TransformStep> transforms();     the transforms that come next
 //   std::string string(const char* what);   std::string findFont(const std::string& name);  ("" if nowhere)
-// The course language has no strings: its parser refuses the last three.
+// The course language has no strings, keywords inside a shape or blocks: its parser refuses the calls for them.
 // A template parameter rather than a base class: the parser's calls stay inline in its per-object loop.
 
 }  // namespace rt

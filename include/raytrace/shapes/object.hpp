@@ -63,6 +63,9 @@ template <class T> class Object {
   // Whether `point` lies strictly inside the solid: what CSG keeps or cuts away (shapes/csg). A shape that
   // encloses nothing (a triangle) has no inside.
   virtual bool inside(const Vec3<T>& point) const = 0;
+  // Whether `point` lies inside the solid's complement, what a difference keeps of the first child: POV-Ray's
+  // inverse of the solid, which keeps a clipped object's clips (shapes/clipped); for any other, not inside.
+  virtual bool insideComplement(const Vec3<T>& point) const { return !inside(point); }
 
   // World-space bounds, or nothing for unbounded shapes (planes), which stay outside any hierarchy.
   virtual std::optional<Aabb<T>> bounds() const = 0;

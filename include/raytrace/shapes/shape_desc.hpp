@@ -12,10 +12,12 @@
 #include <vector>
 
 #include "raytrace/geometry/transform.hpp"
+#include "raytrace/shapes/blob.hpp"
 #include "raytrace/shapes/box.hpp"
 #include "raytrace/shapes/cone.hpp"
 #include "raytrace/shapes/csg.hpp"
 #include "raytrace/shapes/cylinder.hpp"
+#include "raytrace/shapes/disc.hpp"
 #include "raytrace/shapes/lathe.hpp"
 #include "raytrace/shapes/plane.hpp"
 #include "raytrace/shapes/poly.hpp"
@@ -23,6 +25,7 @@
 #include "raytrace/shapes/quadric.hpp"
 #include "raytrace/shapes/sor.hpp"
 #include "raytrace/shapes/sphere.hpp"
+#include "raytrace/shapes/superellipsoid.hpp"
 #include "raytrace/shapes/torus.hpp"
 #include "raytrace/shapes/text.hpp"
 #include "raytrace/shapes/triangle.hpp"
@@ -32,7 +35,10 @@
 namespace rt {
 
 using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc, CsgDesc, TorusDesc,
-                               QuadricDesc, PolyDesc, TextDesc, PrismDesc, LatheDesc, SorDesc>;
+                               QuadricDesc, PolyDesc, TextDesc, PrismDesc, LatheDesc, SorDesc, DiscDesc,
+                               SuperellipsoidDesc, BlobDesc>;
+
+struct ClipDesc;
 
 struct ObjectDesc {
   ShapeDesc shape;
@@ -45,10 +51,18 @@ struct ObjectDesc {
   std::shared_ptr<const Texture> texture;
   // The POV transforms as written (§c.10), in file order; a scene built in code gives its own the same way.
   std::vector<TransformStep> transforms;
+  bool inverse = false;  // POV-Ray's inverse: inside and outside swap (shapes/inverted)
+  std::vector<ClipDesc> clip;  // POV-Ray's clipped_by: the surface inside all of these remains (shapes/clipped)
 
   // The transforms composed in double. Made when asked, not stored: most objects have none, and the matrix
   // would be a third of every object's description, to fill, copy and page in.
   glm::dmat4 worldFromObject() const { return composeTransforms<double>(transforms); }
+};
+
+// A clipping object. The transforms written after its clipped_by, its owner's from `from` on, move it too.
+struct ClipDesc {
+  ObjectDesc object;
+  size_t from;
 };
 
 // As POV-Ray does: a CSG group's child without a texture of its own takes the group's, and so do its own

@@ -17,6 +17,9 @@ namespace rt::povray {
 
 namespace {
 
+template <class K, class = void> struct HasSturm : std::false_type {};
+template <class K> struct HasSturm<K, std::void_t<decltype(std::declval<K&>().sturm)>> : std::true_type {};
+
 class Builder {
  public:
   Builder(SceneDesc& scene, const Interpreter& interpreter) : scene_(scene), interpreter_(interpreter) {}
@@ -94,9 +97,9 @@ class Builder {
 
  private:
   // A union's children go into the scene one by one, under the union's transforms: the same surfaces, and the
-  // hierarchy bounds each of them (POV-Ray's split_union).
+  // hierarchy bounds each of them (POV-Ray's split_union). An inverted or clipped union stays whole.
   void add(ObjectDesc o, const SourceLoc& at) {
-    if (auto* csg = std::get_if<CsgDesc>(&o.shape); csg && csg->op == CsgOp::Union) {
+    if (auto* csg = std::get_if<CsgDesc>(&o.shape); csg && csg->op == CsgOp::Union && !o.inverse && o.clip.empty()) {
       for (ObjectDesc& child : csg->children) {
         child.transforms.insert(child.transforms.end(), o.transforms.begin(), o.transforms.end());
         child.noShadow = child.noShadow || o.noShadow;
@@ -110,6 +113,14 @@ class Builder {
   }
 
   void refuse(const SourceLoc& loc, std::string_view what) { refusals_.refuse(loc, what); }
+  // An item a block inside an object does not take, `where` it is ("'pigment in a blob's sphere' is not
+  // supported yet").
+  void refuseItem(const Item& it, const std::string& where) {
+    const std::string in = " in " + where;
+    if (it.kind == Item::Kind::Node) refuse(it.loc, std::string(it.node->keyword) + in);
+    else if (it.kind == Item::Kind::Keyword) refuse(it.loc, std::string(it.word) + in);
+    else refuse(it.loc, "a value" + in);
+  }
   bool transformItem(const Node& n, size_t& i, std::vector<TransformStep>& steps) {
     return readTransform(n, i, steps, refusals_);
   }
@@ -153,6 +164,9 @@ class Builder {
       return c;
     }
     void comma(const char*) {}  // the interpreter has dropped them
+    bool moreNumbers() const {
+      return i_ < n_.items.size() && n_.items[i_].kind == Item::Kind::Value && n_.items[i_].value.type == Value::Type::Float;
+    }
     bool keyword(std::string_view word) {
       if (i_ >= n_.items.size() || n_.items[i_].kind != Item::Kind::Keyword || n_.items[i_].word != word) return false;
       ++i_;
@@ -167,6 +181,21 @@ class Builder {
       return s;
     }
     std::string findFont(const std::string& name) const { return b_.interpreter_.findFont(name); }
+    // `word { … }` next: read(reader) reads its items; what it leaves is refused.
+    template <class F> bool block(std::string_view word, F&& read) {
+      if (i_ >= n_.items.size() || n_.items[i_].kind != Item::Kind::Node || n_.items[i_].node->keyword != word) return false;
+      const Node& inner = *n_.items[i_++].node;
+      size_t j = 0;
+      ItemReader sub(b_, inner, j);
+      read(sub);
+      for (; j < inner.items.size(); ++j) b_.refuseItem(inner.items[j], "a " + std::string(n_.keyword) + "'s " + std::string(word));
+      return true;
+    }
+    std::vector<TransformStep> transforms() {
+      std::vector<TransformStep> steps;
+      while (i_ < n_.items.size() && b_.transformItem(n_, i_, steps)) ++i_;
+      return steps;
+    }
     SourceLoc here() const { return i_ < n_.items.size() ? n_.items[i_].loc : n_.loc; }
     bool valueNext() const { return i_ < n_.items.size() && n_.items[i_].kind == Item::Kind::Value; }
     bool objectNext() {
@@ -194,9 +223,8 @@ class Builder {
   // Whether an item is an object: a shape of ours, or one of POV-Ray's that is refused when read.
   static bool isObject(const Item& it) {
     static constexpr std::string_view kPovObjects[] = {
-        "bicubic_patch", "blob", "disc", "height_field", "isosurface", "julia_fractal", "light_group", "mesh",
-        "mesh2", "object", "ovus", "parametric", "polygon", "polynomial", "smooth_triangle", "sphere_sweep",
-        "superellipsoid"};
+        "bicubic_patch", "height_field", "isosurface", "julia_fractal", "light_group", "mesh", "mesh2", "object",
+        "ovus", "parametric", "polygon", "polynomial", "smooth_triangle", "sphere_sweep"};
     if (it.kind != Item::Kind::Node) return false;
     const std::string_view k = it.node->keyword;
     return isShapeKeyword(k) || std::find(std::begin(kPovObjects), std::end(kPovObjects), k) != std::end(kPovObjects);
@@ -240,6 +268,7 @@ class Builder {
     const size_t ownTransforms = o.transforms.size();  // after those of an `object { Name` before them
     std::optional<size_t> textureFrom;  // the transforms from here on move this level's texture
     bool textureBlock = false;
+    std::vector<ClipDesc> bound;  // bounded_by's objects
     for (; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
       if (transformItem(n, i, o.transforms)) continue;
@@ -252,7 +281,21 @@ class Builder {
       if (lightHere(it)) continue;
       if (it.kind == Item::Kind::Node) {
         const std::string_view m = it.node->keyword;
-        if (m == "bounded_by" || m == "photons" || m == "radiosity") continue;
+        if (m == "clipped_by" || m == "bounded_by") {
+          std::vector<ClipDesc>& into = m == "clipped_by" ? o.clip : bound;
+          for (const Item& c : it.node->items) {
+            if (c.kind == Item::Kind::Node && isObject(c)) {
+              ObjectDesc clip;
+              if (object(*c.node, clip)) into.push_back({std::move(clip), o.transforms.size()});
+            } else if (c.kind == Item::Kind::Keyword && c.word == "bounded_by" && m == "clipped_by") {
+              o.clip.insert(o.clip.end(), bound.begin(), bound.end());
+            } else if (!(c.kind == Item::Kind::Keyword && c.word == "clipped_by" && m == "bounded_by")) {
+              refuseItem(c, std::string(m));
+            }
+          }
+          continue;
+        }
+        if (m == "photons" || m == "radiosity") continue;
         if (m == "pigment" || m == "finish" || m == "texture" || m == "material" || m == "interior" ||
             m == "layered texture") {
           // A second texture block is a layer on top of the first.
@@ -264,8 +307,10 @@ class Builder {
           refuse(it.loc, m);
         }
       } else if (it.kind == Item::Kind::Keyword) {
-        if (it.word == "hollow") {
+        if (it.word == "hollow" || it.word == "hierarchy") {
           valueAfter(n, i);
+        } else if (it.word == "inverse") {
+          o.inverse = !o.inverse;
         } else if (it.word == "no_shadow") {
           o.noShadow = true;
         } else if (it.word == "sturm") {
@@ -278,6 +323,11 @@ class Builder {
         refuse(it.loc, "a value here");
       }
     }
+    // POV-Ray's pictures of unbounded shapes with a bounded_by (the quartics of scenes/objects/quartic) show
+    // only what lies inside the bound: there it clips, unless the object has a clip of its own.
+    if (o.clip.empty() && std::visit([](const auto& kind) { return kind.boundingBall().radius == 0; }, o.shape)) {
+      o.clip = std::move(bound);
+    }
     const std::vector<TransformStep> own(o.transforms.begin() + long(ownTransforms), o.transforms.end());
     moveTextures(o, glm::inverse(composeTransforms<double>(own)));
     if (textureFrom || k != "object") surface(o, s, std::vector(o.transforms.begin() + long(textureFrom.value_or(o.transforms.size())), o.transforms.end()));
@@ -288,14 +338,14 @@ class Builder {
     return true;
   }
 
-  // POV-Ray's `sturm [on]`: the Sturm-sequence root finder for a torus, a polynomial shape, a prism, a lathe
-  // or a sor; other shapes take it and have no use for it.
+  // POV-Ray's `sturm [on]`: the Sturm-sequence root finder, for the kinds that have one (a `sturm` member);
+  // the other shapes take it and have no use for it.
   static void sturm(ShapeDesc& shape, bool on) {
-    if (auto* torus = std::get_if<TorusDesc>(&shape)) torus->sturm = on;
-    if (auto* poly = std::get_if<PolyDesc>(&shape)) poly->sturm = on;
-    if (auto* prism = std::get_if<PrismDesc>(&shape)) prism->sturm = on;
-    if (auto* lathe = std::get_if<LatheDesc>(&shape)) lathe->sturm = on;
-    if (auto* sor = std::get_if<SorDesc>(&shape)) sor->sturm = on;
+    std::visit(
+        [on](auto& kind) {
+          if constexpr (HasSturm<std::decay_t<decltype(kind)>>::value) kind.sturm = on;
+        },
+        shape);
   }
 
   // The object's material, and its texture when its colour varies over it, moved by the transforms `after`.
