@@ -47,11 +47,11 @@ struct ObjectDesc {
   SourceLoc loc;  // where the object starts, for messages
   bool textured = false;  // the file gave it a pigment or finish of its own (a CSG child without takes its group's)
   bool noShadow = false;  // POV-Ray's no_shadow: it casts no shadow
+  bool inverse = false;   // POV-Ray's inverse: inside and outside swap (shapes/inverted)
   // A texture that varies over the surface, in world space; none when `material` is the same everywhere.
   std::shared_ptr<const Texture> texture;
   // The POV transforms as written (§c.10), in file order; a scene built in code gives its own the same way.
   std::vector<TransformStep> transforms;
-  bool inverse = false;  // POV-Ray's inverse: inside and outside swap (shapes/inverted)
   std::vector<ClipDesc> clip;  // POV-Ray's clipped_by: the surface inside all of these remains (shapes/clipped)
 
   // The transforms composed in double. Made when asked, not stored: most objects have none, and the matrix

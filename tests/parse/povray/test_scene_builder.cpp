@@ -186,8 +186,7 @@ TEST_CASE("povray scene: min_extent, max_extent and trace ask the object; a macr
 }
 
 TEST_CASE("povray scene: a shape or group that cannot be drawn yet is refused where it is written", "[povray]") {
-  CHECK(failure("union { sphere { 0, 1 }\n lathe { linear_spline 2, <0, 0>, <1, 1> } }\n") ==
-        "scene.pov:4:2: error: 'lathe' is not supported yet");
+  CHECK(failure("union { sphere { 0, 1 }\n ovus { 1, 0.5 } }\n") == "scene.pov:4:2: error: 'ovus' is not supported yet");
   CHECK(failure("intersection { sphere { 0, 1 } plane { y, 0 } no_image }\n") ==
         "scene.pov:3:47: error: 'no_image' is not supported yet");
   CHECK(failure("sphere { 0 }\n") == "scene.pov:3:1: error: 'sphere' needs the sphere radius");
