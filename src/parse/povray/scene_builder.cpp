@@ -551,6 +551,7 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   io.maxTokens = options.maxTokens;
   io.writeFolder = options.writeFolder;
   io.writeAnywhere = options.writeAnywhere;
+  io.clock = options.clock;
   Interpreter interpreter(io);
   for (const std::string& d : options.declares) {
     const size_t eq = d.find('=');

@@ -14,6 +14,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "raytrace/parse/povray/clock.hpp"
 #include "raytrace/parse/povray/lexer.hpp"
 #include "raytrace/parse/povray/value.hpp"
 #include "raytrace/scene/description.hpp"
@@ -28,6 +29,7 @@ struct InterpreterOptions {
   size_t maxTokens = 0;                     // stop after reading this many tokens (0: no limit), for fuzzing
   std::string writeFolder;                  // where #write's files go: the image's folder ("": the current one)
   bool writeAnywhere = false;               // --allow-write-anywhere: #fopen may write outside writeFolder
+  Clock clock;                              // clock, frame_number … of this frame
 };
 
 class Interpreter {
