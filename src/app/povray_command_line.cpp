@@ -356,15 +356,16 @@ int regionEnd(const std::optional<Given>& g, int side, int start) {
   return end;
 }
 
-// +SF, +EF: a frame number, or a fraction of the way from the first frame to the last.
+// +SF, +EF: a frame number, or a fraction f of the frames, as POV-Ray computes it: frame f x the number of
+// frames, rounded down and kept within them.
 int subsetFrame(const std::optional<Given>& g, int fallback, int first, int last) {
   if (!g) return fallback;
-  if (const auto f = fraction(g->value)) return first + int(*f * (last - first));
+  if (const auto f = fraction(g->value)) return std::clamp(int(*f * (last - first + 1)), first, last);
   return parseInt(g->value, g->name.c_str(), first, last);
 }
 
 // The frames and their clocks as POV-Ray computes them: clock runs from +KI at +KFI to +KF at +KFF, or with
-// +KC to one step short of +KF; each file is numbered, zero-padded to the digits of +KFF.
+// +KC to one step short of +KF; each file is numbered, zero-padded to the digits of the final frame.
 std::vector<PovRayFrame> frames(const Settings& s, const std::string& stem, const std::string& extension) {
   if (!s.initialFrame && !s.finalFrame) {
     if (!s.animationOnly.empty()) {
@@ -372,6 +373,7 @@ std::vector<PovRayFrame> frames(const Settings& s, const std::string& stem, cons
     }
     povray::Clock still;
     still.clock = s.clock.value_or(0);
+    still.on = s.clock.has_value();  // as POV-Ray sets clock_on for +K
     return {{stem + extension, still}};
   }
   if (s.clock) throw Error("+K sets the clock of one picture, but +KFI and +KFF ask for an animation");
@@ -397,7 +399,7 @@ std::vector<PovRayFrame> frames(const Settings& s, const std::string& stem, cons
   c.finalClock = s.finalClock;
   // One frame has no step: POV-Ray's clock is then NaN, ours the initial clock.
   c.delta = steps ? (s.finalClock - s.initialClock) / steps : 0;
-  const size_t digits = std::to_string(last).size();
+  const size_t digits = std::to_string(c.finalFrame).size();
   std::vector<PovRayFrame> list;
   for (int f = from; f <= to; ++f) {
     c.frame = f;
@@ -442,8 +444,9 @@ PovRayJob readPovRayCommandLine(const std::vector<std::string>& args) {
   }
   PovRayJob job;
   job.frames = frames(s, stem, extension);
+  job.animation = s.initialFrame || s.finalFrame;
   if (!own.output.empty()) {
-    if (job.frames[0].clock.on) {
+    if (job.animation) {
       throw Error("-o names one image, but an animation's are numbered: name them with +O");
     }
     job.frames[0].output = own.output;
@@ -477,7 +480,7 @@ int runPovRayCommandLine(const std::vector<std::string>& args, std::ostream& out
     try {
       status = std::max(status, renderWords(words, out, err));
     } catch (const Error& e) {
-      if (!frame.clock.on) throw;
+      if (!job.animation) throw;
       throw Error("frame " + std::to_string(frame.clock.frame) + " failed, the frames before it are written: " +
                   e.what());
     }

@@ -76,9 +76,13 @@ TEST_CASE("povcli: each switch's render words", "[povcli]") {
   CHECK(wordsOf({"+Ia.pov", "+W8", "+H6", "+FE", "+SC2", "+EC0.5", "+SR0.5", "+ER6"}) ==
         "render a.pov 8 6 --region 1,3,4,6");
   CHECK(wordsOf({"+Ia.pov", "+W8", "+H6", "+FE", "+EC1"}) == "render a.pov 8 6 --region 0,0,1,6");
-  // The clock of one picture.
-  CHECK(rt::readPovRayCommandLine({"+Ia.pov", "+K0.25"}).frames[0].clock.clock == 0.25);
-  CHECK_FALSE(rt::readPovRayCommandLine({"+Ia.pov", "+K0.25"}).frames[0].clock.on);
+  // As `povray` renders them: +SR0.5 +ER0.9 are rows 3 and 4 of 6, +SC0.3 +EC0.6 columns 2 and 3 of 8.
+  CHECK(wordsOf({"+Ia.pov", "+W8", "+H6", "+FE", "+SR0.5", "+ER0.9", "+SC0.3", "+EC0.6"}) ==
+        "render a.pov 8 6 --region 2,3,4,5");
+  // The clock of one picture; POV-Ray sets clock_on for it too.
+  const rt::PovRayJob still = rt::readPovRayCommandLine({"+Ia.pov", "+K0.25"});
+  CHECK((still.frames[0].clock.clock == 0.25 && still.frames[0].clock.on && !still.animation));
+  CHECK(still.frames[0].output == "a.png");
 }
 
 TEST_CASE("povcli: .ini files, their sections, comments and nesting", "[povcli]") {
@@ -117,6 +121,7 @@ TEST_CASE("povcli: .ini files, their sections, comments and nesting", "[povcli]"
 TEST_CASE("povcli: an animation's frames, clocks and numbered names", "[povcli]") {
   const rt::PovRayJob job = rt::readPovRayCommandLine({"+Ia.pov", "+KFI0", "+KFF3"});
   REQUIRE(job.frames.size() == 4);
+  CHECK(job.animation);
   for (int f = 0; f < 4; ++f) {
     const rt::povray::Clock& c = job.frames[f].clock;
     CHECK(job.frames[f].output == "a" + std::to_string(f) + ".png");
@@ -135,8 +140,12 @@ TEST_CASE("povcli: an animation's frames, clocks and numbered names", "[povcli]"
   CHECK(subset.frames[0].output == "out01.png");
   CHECK(subset.frames[1].output == "out02.png");
   CHECK(subset.frames[1].clock.clock == Approx(2 + 1 / 11.0));
-  // Fractions of the way from the first frame to the last: 1 + 0.5 x 9 and 1 + 0.6 x 9, rounded down.
+  // Fractions of the 10 frames, as `povray` renders them: frames 5 and 6, then frames 3 to 6.
   CHECK(rt::readPovRayCommandLine({"+Ia.pov", "+KFF10", "+SF0.5", "+EF0.6"}).frames.size() == 2);
+  const rt::PovRayJob third = rt::readPovRayCommandLine({"+Ia.pov", "+KFF10", "+SF0.33", "+EF0.67"});
+  CHECK((third.frames.front().clock.frame == 3 && third.frames.back().clock.frame == 6));
+  // Cyclic frames 0 to 9 are numbered to the width of POV-Ray's final frame, 10.
+  CHECK(rt::readPovRayCommandLine({"+Ia.pov", "+KFI0", "+KFF9", "+KC"}).frames[0].output == "a00.png");
   // One frame: POV-Ray's clock is NaN, ours the initial clock.
   CHECK(rt::readPovRayCommandLine({"+Ia.pov", "+KFI5", "+KFF5", "+KI0.5"}).frames[0].clock.clock == 0.5);
   CHECK(rt::readPovRayCommandLine({"+Ia.pov", "+KFI5", "+KFF5"}).frames[0].output == "a5.png");

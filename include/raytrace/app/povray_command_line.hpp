@@ -22,6 +22,7 @@ struct PovRayJob {
   // raytrace's words for each frame: "render", the scene, width, height, then options; the output is the frame's.
   std::vector<std::string> words;
   std::vector<PovRayFrame> frames;  // in the order rendered; one for a still picture
+  bool animation = false;           // +KFI or +KFF: the frames are numbered
 };
 
 // The usage line of POV-Ray's command line, for --help and the man page.
