@@ -48,7 +48,7 @@ struct Given {
 // What the options said so far; a later one replaces an earlier one, as in POV-Ray, but for +L and Declare.
 struct Settings {
   std::string input, output;
-  std::string type = "N";          // +F's letter: PNG, OpenEXR or Radiance HDR
+  std::string type;                // +F's letter: N (PNG, the default), E (OpenEXR) or H (Radiance HDR)
   int width = 320, height = 240;   // POV-Ray's own defaults, without an .ini file
   std::vector<std::string> words;  // -L and -D made from +L and Declare, in order
   std::string threads;
@@ -280,7 +280,7 @@ void readWord(Settings& s, const std::vector<std::string>& words, size_t& i) {
     const Option* o = ownOption(word);
     if (!o) readWords({word});  // throws its "unknown option" message, with the nearest name
     s.own.push_back(word);
-    if (o->form == Form::Either && word.find('=') == std::string::npos && i + 1 < words.size()) {
+    if (o && o->form == Form::Either && word.find('=') == std::string::npos && i + 1 < words.size()) {
       s.own.push_back(words[++i]);
     }
   } else if (word.size() > 1 && (word[0] == '+' || word[0] == '-')) {
@@ -297,12 +297,14 @@ void readWord(Settings& s, const std::vector<std::string>& words, size_t& i) {
 // An .ini file, "res.ini" or "res.ini[Low]": with a section, only its lines; without, only the lines before
 // the first section. A line holds key=value, switches, or another .ini file's name; ';' starts a comment.
 void readIni(Settings& s, const std::string& spec) {
-  const size_t bracket = spec.find('[');
+  const size_t bracket = spec.back() == ']' ? spec.find('[') : std::string::npos;
   std::string path = spec.substr(0, bracket);
   const std::string section = bracket == std::string::npos ? "" : spec.substr(bracket + 1, spec.size() - bracket - 2);
   // As in POV-Ray, a name without an extension is an .ini file's.
   if (path.find('.', path.rfind('/') + 1) == std::string::npos) path += ".ini";
-  if (s.iniDepth == kMaxIniDepth) throw Error(quote(path) + " is more than 10 .ini files deep");
+  if (s.iniDepth == kMaxIniDepth) {
+    throw Error(quote(path) + " is more than " + std::to_string(kMaxIniDepth) + " .ini files deep");
+  }
   ++s.iniDepth;
   const FileText file = readFile(path);
   const std::string_view text = file.view();
@@ -426,6 +428,7 @@ PovRayJob readPovRayCommandLine(const std::vector<std::string>& args) {
   if (s.input.empty()) throw Error("no scene to render: give +Iscene.pov or Input_File_Name=scene.pov");
   const Words own = readWords(s.own);  // checked before anything is rendered
   if (!own.output.empty() && !s.output.empty()) throw Error("-o and +O both name the image: give one");
+  if (!own.output.empty() && !s.type.empty()) throw Error("-o's extension and +F both pick the format: give one");
   const bool region = s.startColumn || s.startRow || s.endColumn || s.endRow;
   if (region && (!own.region.empty() || !own.tile.empty())) {
     throw Error("+SR, +ER, +SC or +EC and " + std::string(own.tile.empty() ? "--region" : "--tile") +

@@ -202,6 +202,7 @@ TEST_CASE("povcli: bad POV-Ray command lines write nothing", "[povcli]") {
   CHECK(error({"+P"}) == "'+P' is not supported yet");
   CHECK(error({"+A0.x"}) == "+A must be a number, found '0.x'");
   CHECK(error({"-o", "x.png"}) == "-o and +O both name the image: give one");
+  CHECK(errorOf({"+I" + scene, "+FE", "-o", dir.file("x.png")}) == "-o's extension and +F both pick the format: give one");
   CHECK(error({"--thread", "2"}) == "unknown option '--thread': did you mean '--threads'? (see raytrace --help)");
   CHECK(error({"+SR2"}) == "+SR, +ER, +SC and +EC render a part of the picture, written as an OpenEXR tile: give +FE");
   CHECK(error({"+FE", "+SR2", "--region", "0,0,1,1"}) ==
