@@ -8,6 +8,7 @@
 #include "raytrace/app/arguments.hpp"
 #include "raytrace/app/commands.hpp"
 #include "raytrace/app/povray_command_line.hpp"
+#include "raytrace/parse/scene_file.hpp"
 #include "command_error.hpp"
 #include "temp_dir.hpp"
 
@@ -166,6 +167,22 @@ TEST_CASE("povcli: a 4-frame animation is 4 renders with the clock set", "[povcl
     CHECK(frame == readAll(dir.file("single.png")));
     if (f > 0) CHECK(frame != readAll(dir.file("anim" + std::to_string(f - 1) + ".png")));
   }
+}
+
+TEST_CASE("povcli: the scene sees each built-in of its frame", "[povcli]") {
+  TempDir dir;
+  // Frame 2 of +KFI0 +KFF3 +KI1 +KF4: POV-Ray's #debug shows these values.
+  const std::string scene = dir.write("values.pov",
+                                      "#version 3.7;\n"
+                                      "#if (clock != 3 | clock_delta != 1 | frame_number != 2 | clock_on != 1 |\n"
+                                      "     initial_frame != 0 | final_frame != 3 | initial_clock != 1 | final_clock != 4)\n"
+                                      "  #error \"not frame 2's values\"\n"
+                                      "#end\n"
+                                      "sphere { 0, 1 }\n");
+  rt::LoadOptions load;
+  load.clock = rt::readPovRayCommandLine({"+Ia.pov", "+KFI0", "+KFF3", "+KI1", "+KF4"}).frames[2].clock;
+  CHECK_NOTHROW(rt::loadScene(scene, 1, load));
+  CHECK_THROWS(rt::loadScene(scene, 1, rt::LoadOptions{}));
 }
 
 TEST_CASE("povcli: a frame that fails leaves the frames before it written", "[povcli]") {
