@@ -9,6 +9,7 @@
 #include "raytrace/app/arguments.hpp"
 #include "raytrace/app/invocation.hpp"
 #include "raytrace/app/merge.hpp"
+#include "raytrace/app/povray_command_line.hpp"
 #include "raytrace/app/tile_header.hpp"
 #include "raytrace/parse/scene_file.hpp"
 #include "raytrace/util/error.hpp"
@@ -123,7 +124,7 @@ std::string commandHelp(const std::string& name) {
 std::string usage() {
   std::string text = "usage:\n";
   for (const Command& c : commands()) text += "  " + usageLine(c) + "\n";
-  text += "  raytrace --version\n";
+  text += "  raytrace --version\n  " + std::string(kPovRayUsage) + "\n";
   return text + optionsHelp(Section::General) + optionsHelp(Section::Image);
 }
 
@@ -251,16 +252,8 @@ int mergeCommand(const std::vector<std::string>& args, std::ostream& err) {
   return merge(own, TileRequest{tileHeader(inv, "render"), inv.width, inv.height});
 }
 
-}  // namespace
-
-int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  if (const auto text = helpText(args)) {
-    out << *text;
-    return 0;
-  }
-  const Command& command = findCommand(args);
-  if (command.runWords) return command.runWords(std::vector<std::string>(args.begin() + 1, args.end()), out, err);
-  const Words words = readWords(args, 1);
+// Runs `command`, one that reads a scene, with what its words say.
+int runScene(const Command& command, const Words& words, std::ostream& out, std::ostream& err) {
   Invocation inv = invocation(command, words, err);
   if (command.writesImage) checkOutput(inv);
   // The image commands render on all their threads: the helpers start while the file is read.
@@ -279,6 +272,23 @@ int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   inv.loadSeconds = watch.lap();
   for (const std::string& w : collapseRepeats(inv.scene.warnings)) err << w << "\n";
   return command.run(inv, out);
+}
+
+}  // namespace
+
+int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  if (const auto text = helpText(args)) {
+    out << *text;
+    return 0;
+  }
+  if (isPovRayCommandLine(args)) return runPovRayCommandLine(args, out, err);
+  const Command& command = findCommand(args);
+  if (command.runWords) return command.runWords(std::vector<std::string>(args.begin() + 1, args.end()), out, err);
+  return runScene(command, readWords(args, 1), out, err);
+}
+
+int renderWords(const Words& words, std::ostream& out, std::ostream& err) {
+  return runScene(*commandNamed("render"), words, out, err);
 }
 
 }  // namespace rt

@@ -4,6 +4,7 @@
 
 #include "raytrace/app/arguments.hpp"
 #include "raytrace/app/commands.hpp"
+#include "raytrace/app/povray_command_line.hpp"
 
 namespace rt {
 
@@ -52,12 +53,14 @@ std::string manPage() {
                      ".SH NAME\nraytrace \\- ray tracer for POV\\-Ray\\-style and CS 3451 .cli scene files\n"
                      ".SH SYNOPSIS\n";
   for (const CommandSummary& c : commandSummaries()) page += ".nf\n" + roff(c.usage) + "\n.fi\n";
-  page += ".nf\nraytrace \\-\\-help\nraytrace \\-\\-version\n.fi\n"
+  page += ".nf\nraytrace \\-\\-help\nraytrace \\-\\-version\n" + roff(kPovRayUsage) + "\n.fi\n"
           ".SH DESCRIPTION\n"
           "raytrace renders a scene file to an image, or prints what one ray of it does in the text formats of the "
           "Cal Poly CSC 473 ray\\-tracing course. A scene is a POV\\-Ray\\-style file (.pov) or a CS 3451 .cli file; "
           "its language comes from the extension, or else from its first meaningful line. "
-          "Pixel y grows upward (row 0 is the bottom).\n"
+          "Pixel y grows upward (row 0 is the bottom). When the first argument is a POV\\-Ray switch (+I, +W, "
+          "\\-D ...), an .ini file or Input_File_Name=..., the command line is read as POV\\-Ray 3.7 reads it, "
+          "animation frames (+KFI, +KFF) included: see docs/povray\\-command\\-line.md.\n"
           ".SH COMMANDS\n";
   for (const CommandSummary& c : commandSummaries()) page += ".TP\n.B " + c.name + "\n" + roff(c.summary) + "\n";
   const auto section = [&](Section s, const char* heading) {
@@ -73,7 +76,8 @@ std::string manPage() {
           "written or replaced.\n"
           ".SH EXAMPLES\n.nf\nraytrace render scene.pov 640 480 \\-ss=3 \\-o scene.png\n"
           "raytrace render scene.pov 640 480 \\-\\-display \\-\\-stats=json\n"
-          "raytrace pixelcolor scene.pov 640 480 320 240\n.fi\n"
+          "raytrace pixelcolor scene.pov 640 480 320 240\n"
+          "raytrace +Iscene.pov +W640 +H480 +KFI0 +KFF9 +Oframe\n.fi\n"
           ".SH \"SEE ALSO\"\nThe documentation installed with raytrace (README.md and docs/), usually in "
           "/usr/share/doc/raytrace.\n";
   return page;

@@ -98,6 +98,7 @@ SceneDesc loadScene(const std::string& path, int threads, const LoadOptions& opt
     pov.declares = options.declares;
     pov.writeFolder = options.writeFolder;
     pov.writeAnywhere = options.writeAnywhere;
+    pov.clock = options.clock;
     return povray::parsePovRay(text, path, pov);
   }
   return parsePov(text, path, threads);

@@ -11,6 +11,12 @@ namespace rt {
 // Returns the exit status; user errors are thrown as Error and reported by main().
 int runCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
+struct Words;
+
+// The render command with `words` read from its arguments (readWords), for a command line of another program's
+// (povray_command_line.hpp).
+int renderWords(const Words& words, std::ostream& out, std::ostream& err);
+
 // The usage text that `raytrace --help` prints.
 std::string usage();
 

@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "raytrace/parse/povray/clock.hpp"
 #include "raytrace/scene/description.hpp"
 
 namespace rt {
@@ -46,6 +47,7 @@ struct LoadOptions {
   std::vector<std::string> declares;      // -D name=value: identifiers a POV-Ray scene starts with
   std::string writeFolder;                // the output image's folder, where a POV-Ray scene's #write files go
   bool writeAnywhere = false;             // --allow-write-anywhere: they may go anywhere
+  povray::Clock clock;                    // a POV-Ray animation frame's clock (povray_command_line.hpp)
 };
 
 // The POV language a .pov file is read in.

@@ -64,11 +64,15 @@ Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
   if (name == "t") return Value::vector({0, 0, 0, 1, 0}, 4);
   if (name == "u") return Value::vector({1, 0, 0, 0, 0}, 2);
   if (name == "v") return Value::vector({0, 1, 0, 0, 0}, 2);
-  // Without an animation POV-Ray gives every clock and frame value 0.
-  if (name == "clock" || name == "clock_on" || name == "frame_number" || name == "initial_clock" ||
-      name == "clock_delta" || name == "final_clock" || name == "initial_frame" || name == "final_frame") {
-    return Value::number(0);
-  }
+  const Clock& c = options_.clock;
+  if (name == "clock") return Value::number(c.clock);
+  if (name == "clock_delta") return Value::number(c.delta);
+  if (name == "clock_on") return Value::number(c.on);
+  if (name == "frame_number") return Value::number(c.frame);
+  if (name == "initial_clock") return Value::number(c.initialClock);
+  if (name == "final_clock") return Value::number(c.finalClock);
+  if (name == "initial_frame") return Value::number(c.initialFrame);
+  if (name == "final_frame") return Value::number(c.finalFrame);
   if (name == "image_width") return Value::number(options_.imageWidth);
   if (name == "image_height") return Value::number(options_.imageHeight);
   if (name == "version") return Value::number(version_);

@@ -679,6 +679,7 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   io.maxTokens = options.maxTokens;
   io.writeFolder = options.writeFolder;
   io.writeAnywhere = options.writeAnywhere;
+  io.clock = options.clock;
   Builder* builderOf = nullptr;  // made once the interpreter is, and asked only while it runs
   io.extent = [&builderOf](const std::shared_ptr<const Node>& n) { return builderOf->extent(n); };
   io.trace = [&builderOf](const std::shared_ptr<const Node>& n, const InterpreterOptions::Vec& start,

@@ -16,6 +16,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "raytrace/parse/povray/clock.hpp"
 #include "raytrace/parse/povray/lexer.hpp"
 #include "raytrace/parse/povray/value.hpp"
 #include "raytrace/scene/description.hpp"
@@ -30,6 +31,7 @@ struct InterpreterOptions {
   size_t maxTokens = 0;                     // stop after reading this many tokens (0: no limit), for fuzzing
   std::string writeFolder;                  // where #write's files go: the image's folder ("": the current one)
   bool writeAnywhere = false;               // --allow-write-anywhere: #fopen may write outside writeFolder
+  Clock clock;                              // clock, frame_number … of this frame
   // What the scene builder knows of an object, for the functions that ask it: its bounding box as min x, y, z
   // then max x, y, z (nothing if unbounded) for min_extent and max_extent; for trace, the first point where
   // the ray from `start` along `dir` meets it, then the outward normal there (nothing if it misses).

@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "raytrace/parse/povray/clock.hpp"
 #include "raytrace/scene/description.hpp"
 
 namespace rt::povray {
@@ -18,6 +19,7 @@ struct PovRayOptions {
   size_t maxTokens = 0;               // InterpreterOptions::maxTokens
   std::string writeFolder;            // InterpreterOptions::writeFolder
   bool writeAnywhere = false;         // InterpreterOptions::writeAnywhere
+  Clock clock;                        // InterpreterOptions::clock
 };
 
 SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovRayOptions& options = {});
