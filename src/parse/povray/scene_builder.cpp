@@ -398,7 +398,7 @@ class Builder {
       const glm::dvec3 side = glm::cross(k.sky, direction);
       right = glm::normalize(glm::length(side) > 1e-12 * glm::length(direction) ? side : right) * glm::length(right);
       up = glm::normalize(glm::cross(direction, right)) * glm::length(up);
-      if (handedness < 0) right = -right;
+      if (handedness <= 0) right = -right;  // POV-Ray flips it when up and direction are parallel too
     }
     // What right and up are divided by: the direction's length for a perspective camera, which makes them the
     // picture's size at unit distance; for an orthographic one, 1 or the look_at point's distance in units

@@ -185,6 +185,15 @@ TEST_CASE("povray scene: min_extent, max_extent and trace ask the object; a macr
         "scene.pov:4:25: error: 'min_extent' of an object without bounds, such as a plane");
 }
 
+TEST_CASE("povray scene: a camera whose up lies along its direction has right flipped, as POV-Ray's pictures show",
+          "[povray]") {
+  // objects/prism3.inc's camera: up z and the default direction z make up × direction zero.
+  const SceneDesc s = scene("camera { location <-10, 10, -10> right x*4/3 up z look_at 0 angle 20 }\n");
+  const glm::dvec3 toward = glm::normalize(s.camera.lookAt - s.camera.location);
+  // Seen along the view, right points to the left of the usual left-handed frame: (up × direction) · right > 0.
+  CHECK(glm::dot(glm::cross(s.camera.up, toward), s.camera.right) < 0);
+}
+
 TEST_CASE("povray scene: a shape or group that cannot be drawn yet is refused where it is written", "[povray]") {
   CHECK(failure("union { sphere { 0, 1 }\n ovus { 1, 0.5 } }\n") == "scene.pov:4:2: error: 'ovus' is not supported yet");
   CHECK(failure("intersection { sphere { 0, 1 } plane { y, 0 } no_image }\n") ==
