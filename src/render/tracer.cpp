@@ -51,6 +51,7 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
       options_(options),
       conventions_(scene.desc().conventions),
       lastOccluder_(scene.lights().size(), nullptr),
+      sky_(scene.desc().sky.get()),
       fogs_(!scene.desc().fogs.empty()),
       batches_(size_t(1 + (options.gi.enabled ? options.gi.bounceCount() : 0))) {
   if (options.depth) conventions_.maxDepth = *options.depth;
@@ -221,8 +222,7 @@ typename Tracer<T>::Traced Tracer<T>::follow(const Ray<T>& ray, const std::optio
     record->dir = glm::dvec3(ray.dir);
   }
   if (!hit) {
-    const SceneDesc& desc = scene_.desc();
-    Color sky = desc.sky ? desc.sky->at(glm::dvec3(ray.dir), conventions_.background) : conventions_.background;
+    Color sky = sky_ ? sky_->at(glm::dvec3(ray.dir), conventions_.background) : conventions_.background;
     if (fogs_) sky = fogged(sky, ray, std::numeric_limits<T>::infinity());
     if (record) record->color = sky;
     return {sky, std::numeric_limits<T>::infinity()};

@@ -39,8 +39,9 @@ template <class T> class Camera {
   int height() const { return height_; }
 
  private:
-  // The eye ray of the projections other than the perspective one.
-  Ray<T> projected(T us, T vs) const;
+  // The eye ray of the projections other than the perspective one; out of the way of the perspective one,
+  // which every course scene takes.
+  [[gnu::cold]] Ray<T> projected(T us, T vs) const;
 
   Vec3<T> origin_, right_, up_, forward_;
   CameraDesc::Projection projection_;

@@ -151,6 +151,7 @@ template <class T> class Tracer {
   int raysLeft_ = 0;  // the secondary rays the current eye ray's tree may still have
   uint64_t sampleRaysLeft_ = 0;  // the rays the current eye sample may still cost, gathered trees included
   std::vector<const Object<T>*> lastOccluder_;  // per light: what occluded its latest shadow ray (Scene::occluded)
+  const SkySphere* sky_;                        // the scene's, or none
   bool fogs_;                                   // whether the scene has any fog
   bool filteredShadows_ = false;  // shadow rays pass transparent surfaces (POV-Ray, and some surface lets light through)
   std::vector<Batch> batches_;                 // [0] tile()'s eye rays, [1 + b] the gather rays at bounce b
