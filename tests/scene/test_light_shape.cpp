@@ -18,7 +18,7 @@ float spotAt(const LightShape& s, double degrees) {
 LightDesc spotlight(double radius, double falloff, double tightness) {
   LightDesc l;
   l.position = {0, 1, 0};
-  l.spot = LightDesc::Spot{{0, 0, 0}, radius, falloff, tightness};
+  l.spot = SpotDesc{{0, 0, 0}, radius, falloff, tightness};
   return l;
 }
 

@@ -41,15 +41,18 @@ struct CameraDesc {
   SourceLoc loc;  // the `camera` statement (POV) or the `fov` command (.cli) that set it, for messages
 };
 
+// A POV-Ray spotlight's cone (docs/povray-language.md, "Lights"). At namespace scope: inside LightDesc, clang
+// would take it as not default-constructible where std::optional<Spot> is declared.
+struct SpotDesc {
+  glm::dvec3 pointAt{0};
+  double radius = 30, falloff = 45, tightness = 0;  // degrees, degrees, exponent: POV-Ray's defaults
+};
+
 struct LightDesc {
   glm::dvec3 position{0};
   Color color{1};
-  // POV-Ray's light modifiers (docs/povray-language.md, "Lights"); a course light has none.
-  struct Spot {
-    glm::dvec3 pointAt{0};
-    double radius = 30, falloff = 45, tightness = 0;  // degrees, degrees, exponent: POV-Ray's defaults
-  };
-  std::optional<Spot> spot;
+  // POV-Ray's light modifiers; a course light has none.
+  std::optional<SpotDesc> spot;
   double fadeDistance = 0, fadePower = 0;  // 0: no fading
   bool shadowless = false;
 };

@@ -498,7 +498,7 @@ class Builder {
     std::vector<TransformStep> steps;
     // The cone's values may come before `spotlight`, and mean nothing to a light that is not one.
     bool isSpot = l.spot.has_value();
-    LightDesc::Spot spot = l.spot.value_or(LightDesc::Spot{});
+    SpotDesc spot = l.spot.value_or(SpotDesc{});
     for (; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
       if (transformItem(n, i, steps)) continue;
