@@ -53,11 +53,29 @@ std::optional<Hit<T>> Superellipsoid<T>::intersect(const Ray<T>& ray, Interval<T
   if (!(near < far)) return std::nullopt;
   const auto in = [&](double t) { return f(o + t * d) < 0; };
   const bool startIn = in(near);
-  double lo = near;
+  // g > 0 on the start's side: a sample where it dips between its neighbours without changing sign may hide a
+  // grazing pair of crossings, which a search for its least value between them finds.
+  const auto g = [&](double t) { return startIn ? -f(o + t * d) : f(o + t * d); };
+  double lo = near, before = near, gBefore = g(near), gLo = gBefore;
   for (int s = 1; s <= kSamples; ++s) {
     double hi = near + (far - near) * s / kSamples;
+    const double gHi = g(hi);
+    if (in(hi) == startIn && s > 1 && gLo < gBefore && gLo < gHi) {
+      double a = before, b = hi;  // golden-section search for g's least value in (before, hi)
+      for (int k = 0; k < kBisections && in((a + b) / 2) == startIn; ++k) {
+        const double m1 = b - (b - a) * 0.6180339887498949, m2 = a + (b - a) * 0.6180339887498949;
+        (g(m1) < g(m2) ? b : a) = g(m1) < g(m2) ? m2 : m1;
+      }
+      if (in((a + b) / 2) != startIn) {
+        hi = (a + b) / 2;
+        lo = before;
+      }
+    }
     if (in(hi) == startIn) {
+      before = lo;
+      gBefore = gLo;
       lo = hi;
+      gLo = gHi;
       continue;
     }
     for (int b = 0; b < kBisections; ++b) {
