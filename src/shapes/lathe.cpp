@@ -144,13 +144,7 @@ template <class T> std::optional<Hit<T>> Lathe<T>::intersect(const Ray<T>& ray, 
       consider(t, s, seg);
     }
   }
-  if (!(best < double(range.max))) return std::nullopt;
-  Hit<T> hit;
-  hit.t = T(best);
-  hit.point = Vec3<T>(o + best * d);
-  hit.normal = Vec3<T>(normal);
-  hit.object = this;
-  return hit;
+  return hitBefore<T>(this, o, d, best, normal, range);
 }
 
 template class Lathe<float>;

@@ -147,13 +147,7 @@ template <class T> std::optional<Hit<T>> Prism<T>::intersect(const Ray<T>& ray, 
       normal = glm::dvec3(0, h == top_ ? 1 : -1, 0);
     }
   }
-  if (!(best < double(range.max))) return std::nullopt;
-  Hit<T> hit;
-  hit.t = T(best);
-  hit.point = Vec3<T>(o + best * d);
-  hit.normal = Vec3<T>(normal);
-  hit.object = this;
-  return hit;
+  return hitBefore<T>(this, o, d, best, normal, range);
 }
 
 template class Prism<float>;

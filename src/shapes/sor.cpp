@@ -146,13 +146,7 @@ template <class T> std::optional<Hit<T>> Sor<T>::intersect(const Ray<T>& ray, In
       normal = glm::dvec3(0, top ? 1 : -1, 0);
     }
   }
-  if (!(best < double(range.max))) return std::nullopt;
-  Hit<T> hit;
-  hit.t = T(best);
-  hit.point = Vec3<T>(o + best * d);
-  hit.normal = Vec3<T>(normal);
-  hit.object = this;
-  return hit;
+  return hitBefore<T>(this, o, d, best, normal, range);
 }
 
 template class Sor<float>;

@@ -4,10 +4,13 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "raytrace/geometry/hit.hpp"
+#include "raytrace/geometry/interval.hpp"
 #include "raytrace/geometry/math.hpp"
 #include "raytrace/geometry/polynomial.hpp"
 #include "raytrace/util/error.hpp"
@@ -78,6 +81,20 @@ template <class Reader> SplinePoints readSplinePoints(Reader& r, const std::stri
     throw ParseError(r.here(), "more " + shape + " points than the " + shortest(n) + " its count gives");
   }
   return list;
+}
+
+// The hit of the swept and turned shapes: the nearest t found in double, or none when it lies at or past the
+// range's end.
+template <class T>
+std::optional<Hit<T>> hitBefore(const Object<T>* object, const glm::dvec3& o, const glm::dvec3& d, double t,
+                                const glm::dvec3& normal, Interval<T> range) {
+  if (!(t < double(range.max))) return std::nullopt;
+  Hit<T> hit;
+  hit.t = T(t);
+  hit.point = Vec3<T>(o + t * d);
+  hit.normal = Vec3<T>(normal);
+  hit.object = object;
+  return hit;
 }
 
 }  // namespace rt
