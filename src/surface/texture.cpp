@@ -14,7 +14,7 @@ Material layerMaterial(const FinishTerms& f, const Rgbft& c) {
   m.ambient = f.ambient * c.rgb;
   m.diffuse = f.diffuse * c.rgb;
   // POV-Ray's metallic highlight takes the pigment's colour; its empirical change toward white at grazing
-  // angles is not modelled (docs/povray-language.md, "Finish").
+  // angles is not modelled (docs/povray-language.md, "Textures").
   m.specular = f.specular * (Color(1) + f.metallic * (c.rgb - Color(1)));
   m.exponent = f.exponent;
   m.roughness = f.roughness;

@@ -26,8 +26,8 @@ struct CameraDesc {
   // .cli: `right` is written for a square image and is stretched by width/height when the image is made, so
   // pixels stay square at any size and `fov` stays the vertical angle (docs/reference/cs3451.md §A.4 leaves this open).
   bool rightFollowsImage = false;
-  // How a picture's point becomes a ray (docs/povray-language.md, "Cameras"). Perspective: through the point
-  // of the picture plane one unit ahead. Orthographic (POV-Ray): parallel rays along the view, from the
+  // How a picture's point becomes a ray (docs/povray-language.md, "What is drawn, and what is refused").
+  // Perspective: through the point of the picture plane one unit ahead. Orthographic (POV-Ray): parallel rays along the view, from the
   // picture's point on the plane through `location`; right and up are the picture's size. Cylinder 1–4
   // (POV-Ray): the picture wrapped round a vertical (1, 3) or horizontal (2, 4) cylinder over `angle`, seen
   // from the location (1, 2) or from points along the axis (3, 4); right and up as written. Ultra wide angle
@@ -41,8 +41,8 @@ struct CameraDesc {
   SourceLoc loc;  // the `camera` statement (POV) or the `fov` command (.cli) that set it, for messages
 };
 
-// A POV-Ray spotlight's cone (docs/povray-language.md, "Lights"). At namespace scope: inside LightDesc, clang
-// would take it as not default-constructible where std::optional<Spot> is declared.
+// A POV-Ray spotlight's cone (docs/povray-language.md, "What is drawn, and what is refused"). At namespace
+// scope: inside LightDesc, clang would take it as not default-constructible inside std::optional.
 struct SpotDesc {
   glm::dvec3 pointAt{0};
   double radius = 30, falloff = 45, tightness = 0;  // degrees, degrees, exponent: POV-Ray's defaults
