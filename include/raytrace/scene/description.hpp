@@ -27,8 +27,9 @@ struct CameraDesc {
   // pixels stay square at any size and `fov` stays the vertical angle (docs/reference/cs3451.md §A.4 leaves this open).
   bool rightFollowsImage = false;
   // How a picture's point becomes a ray (docs/povray-language.md, "What is drawn, and what is refused").
-  // Perspective: through the point of the picture plane one unit ahead. Orthographic (POV-Ray): parallel rays along the view, from the
-  // picture's point on the plane through `location`; right and up are the picture's size. Cylinder 1–4
+  // Perspective: through the point of the picture plane one unit ahead. Orthographic (POV-Ray): parallel rays
+  // along the view, from the picture's point on the plane through `location`; right and up are the picture's
+  // size. Cylinder 1–4
   // (POV-Ray): the picture wrapped round a vertical (1, 3) or horizontal (2, 4) cylinder over `angle`, seen
   // from the location (1, 2) or from points along the axis (3, 4); right and up as written. Ultra wide angle
   // and spherical (POV-Ray): the picture's sides are angles across and up, the ray on a box-like or a
