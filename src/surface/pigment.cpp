@@ -35,9 +35,10 @@ Rgbft Pigment::at(const glm::dvec3& p) const {
     const size_t i = std::min(size_t(raw), list.size() - 1);
     return list[i]->at(q);
   }
-  // frequency and phase, then the value wrapped to [0, 1), keeping 1 itself where the pattern reaches it.
-  double v = raw * frequency + phase;
-  if (v < 0 || v > 1) v -= std::floor(v);
+  // frequency and phase, then the value wrapped as POV-Ray wraps it: modulo 1.00001, which keeps 1 itself where
+  // the pattern reaches it (and shows as a slow drift far from the origin, which POV-Ray's pictures have too).
+  double v = std::fmod(raw * frequency + phase, 1.00001);
+  if (v < 0) v -= std::floor(v);
   v = shaped(v, wave, exponent);
   if (map.empty()) return solid;
   if (v <= map.front().value) return map.front().pigment->at(q);

@@ -24,9 +24,6 @@ struct MapEntry {
   std::shared_ptr<const Pigment> pigment;
 };
 
-// How a continuous pattern's value is shaped before the map reads it (POV-Ray's wave modifiers).
-enum class Wave { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
-
 struct Pigment {
   Rgbft solid;                              // the colour when there is no pattern
   std::shared_ptr<const Pattern> pattern;

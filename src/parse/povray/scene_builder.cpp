@@ -611,7 +611,10 @@ class Builder {
           ambientLight_ = colourOf(*v).rgb;
         } else if (w == "assumed_gamma" && v && v->type == Value::Type::Float) {
           assumedGamma_ = v->v[0];
-        } else if (w == "adc_bailout" || w == "number_of_waves" || w == "noise_generator" ||
+        } else if (w == "noise_generator" && v && v->type == Value::Type::Float) {
+          if (v->v[0] == 3) refuse(it.loc, "noise_generator 3");
+          *refusals_.sceneNoise = v->v[0] < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
+        } else if (w == "adc_bailout" || w == "number_of_waves" ||
                    w == "irid_wavelength" || w == "max_intersections" || w == "hf_gray_16") {
         } else {
           refuse(it.loc, w);

@@ -103,6 +103,75 @@ bool readWave(const Node& n, size_t& i, Pigment& p) {
   return true;
 }
 
+// A pattern being read: its kind and what the pigment's modifiers set, made again with them once the block
+// is read, since the modifiers may follow the colour map.
+struct PatternDraft {
+  const PatternKind* kind = nullptr;
+  PatternArgs args;
+  bool modified = false;
+
+  // The pattern of keyword n.items[i] (i moves past its vector), or nothing if the word names no pattern.
+  std::unique_ptr<Pattern> start(const Node& n, size_t& i, const Refusals& refusals) {
+    const Item& it = n.items[i];
+    const PatternKind* k = it.kind == Item::Kind::Keyword ? patternKind(it.word) : nullptr;
+    if (!k) return nullptr;
+    kind = k;
+    args = PatternArgs{};
+    args.noise.scene = refusals.sceneNoise;
+    if (k->needsVector) {
+      const Value* v = valueAfter(n, i);
+      if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a vector");
+      args.vector = vec3(*v);
+      args.hasVector = true;
+    }
+    return makePattern(*k, args);
+  }
+
+  // turbulence, octaves, omega, lambda, noise_generator and agate_turb; false for any other item.
+  bool modifier(const Node& n, size_t& i, Refusals& refusals) {
+    const Item& it = n.items[i];
+    if (it.kind != Item::Kind::Keyword) return false;
+    const std::string_view w = it.word;
+    if (w != "turbulence" && w != "octaves" && w != "omega" && w != "lambda" && w != "noise_generator" &&
+        w != "agate_turb") {
+      return false;
+    }
+    const Value* v = valueAfter(n, i);
+    if (!v || !v->numeric() || (w != "turbulence" && v->type != Value::Type::Float)) {
+      throw ParseError(it.loc, "'" + std::string(w) + (w == "turbulence" ? "' needs a float or a vector" : "' needs a float"));
+    }
+    const double x = v->v[0];
+    Turbulence& t = args.turbulence;
+    if (w == "turbulence") {
+      t.amount = vec3(*v);
+    } else if (w == "octaves") {
+      t.octaves = std::clamp(int(x), 1, 10);  // POV-Ray's limits
+    } else if (w == "omega") {
+      t.omega = float(x);
+    } else if (w == "lambda") {
+      t.lambda = float(x);
+    } else if (w == "agate_turb") {
+      args.agateTurbulence = x;
+    } else if (x == 3) {
+      refusals.refuse(it.loc, "noise_generator 3");
+    } else {
+      args.noise.own = x < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
+    }
+    modified = true;
+    return true;
+  }
+
+  // The pattern made again with the modifiers read after it.
+  void finish(std::shared_ptr<const Pattern>& pattern, const SourceLoc& at, Refusals& refusals) const {
+    if (!modified || !pattern) return;
+    if (!kind) {
+      refusals.refuse(at, "turbulence on a pattern of an earlier block");
+      return;
+    }
+    pattern = makePattern(*kind, args);
+  }
+};
+
 }  // namespace
 
 std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals);
@@ -160,7 +229,8 @@ void readMap(const Node& n, std::vector<MapEntry>& map, Refusals& refusals) {
   std::stable_sort(map.begin(), map.end(), [](const MapEntry& a, const MapEntry& b) { return a.value < b.value; });
 }
 
-void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals) {
+void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vector<TransformStep>& steps,
+                      Refusals& refusals) {
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     const bool blocks = p.pattern && p.pattern->blocks() > 0;
@@ -179,7 +249,7 @@ void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, R
       if (k == "pigment" && blocks && p.list.size() < size_t(p.pattern->blocks())) {
         p.list.push_back(nestedPigment(*it.node, refusals));
       } else if (k == "pigment") {
-        readPigment(*it.node, p, steps, refusals);  // an identifier, modified by what follows
+        readPigmentItems(*it.node, p, draft, steps, refusals);  // an identifier, modified by what follows
       } else if (k == "color_map" || k == "colour_map" || k == "pigment_map") {
         p.map.clear();
         readMap(*it.node, p.map, refusals);
@@ -193,26 +263,26 @@ void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, R
       continue;
     }
     const std::string_view w = it.word;
-    if (const PatternKind* kind = patternKind(w)) {
-      PatternArgs args;
-      if (kind->needsVector) {
-        const Value* v = valueAfter(n, i);
-        if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(w) + "' needs a vector");
-        args.vector = vec3(*v);
-        args.hasVector = true;
-      }
+    if (std::unique_ptr<Pattern> pattern = draft.start(n, i, refusals)) {
       const Rgbft keep = p.solid;
       p = Pigment{};
       p.solid = keep;
-      p.pattern = kind->make(args);
+      p.pattern = std::move(pattern);
+      p.wave = draft.kind->wave;
       continue;
     }
     if (w == "quick_color" || w == "quick_colour") {
       valueAfter(n, i);
-    } else if (!readWave(n, i, p)) {
+    } else if (!readWave(n, i, p) && !draft.modifier(n, i, refusals)) {
       refusals.refuse(it.loc, w);
     }
   }
+}
+
+void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals) {
+  PatternDraft draft;
+  readPigmentItems(n, p, draft, steps, refusals);
+  draft.finish(p.pattern, n.loc, refusals);
   if (p.pattern && p.pattern->blocks() == 0 && p.map.empty()) refusals.refuse(n.loc, "a pattern's default color_map");
   while (p.pattern && p.list.size() < size_t(p.pattern->blocks())) {
     p.list.push_back(solidPigment({p.pattern->defaultBlock(int(p.list.size())), 0, 0}));
@@ -319,6 +389,7 @@ std::shared_ptr<const Texture> subTexture(const Node& n, const Surface& defaults
 std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Surface& defaults, Refusals& refusals) {
   auto tp = std::make_shared<TexturePattern>();
   Pigment& selector = tp->selector;
+  PatternDraft draft;
   std::vector<TransformStep> steps;
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
@@ -341,20 +412,14 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
         selector.map.push_back({e.node->items[0].value.v[0], solidPigment({Color(float(tp->textures.size())), 0, 0})});
         tp->textures.push_back(subTexture(body, defaults, refusals));
       }
-    } else if (it.kind == Item::Kind::Keyword && patternKind(it.word)) {
-      const PatternKind* kind = patternKind(it.word);
-      PatternArgs args;
-      if (kind->needsVector) {
-        const Value* v = valueAfter(n, i);
-        if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a vector");
-        args.vector = vec3(*v);
-        args.hasVector = true;
-      }
-      selector.pattern = kind->make(args);
-    } else if (!readWave(n, i, selector)) {
+    } else if (std::unique_ptr<Pattern> pattern = draft.start(n, i, refusals)) {
+      selector.pattern = std::move(pattern);
+      selector.wave = draft.kind->wave;
+    } else if (!readWave(n, i, selector) && !draft.modifier(n, i, refusals)) {
       refusals.refuse(it, "texture");
     }
   }
+  draft.finish(selector.pattern, n.loc, refusals);
   const int blocks = selector.pattern ? selector.pattern->blocks() : 0;
   for (int b = 0; b < blocks; ++b) selector.list.push_back(solidPigment({Color(float(b)), 0, 0}));
   if (!selector.pattern) {
@@ -380,12 +445,18 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
   } else if (k == "texture" && texturePatternIn(n)) {
     top.pattern = readTexturePattern(n, defaults, refusals);
   } else if (k == "texture" || k == "material") {
+    // A transform moves every layer the block has read so far (a layered texture identifier's too).
+    const size_t first = s.layers.size() - 1;
     for (size_t i = 0; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
+      std::vector<TransformStep> steps;
       if (it.kind == Item::Kind::Node) {
         readSurfaceItem(*it.node, s, defaults, refusals);
-      } else if (!readTransform(n, i, s.layers.back().steps, refusals)) {
+      } else if (!readTransform(n, i, steps, refusals)) {
         refusals.refuse(it, k);
+      }
+      for (size_t l = first; l < s.layers.size(); ++l) {
+        s.layers[l].steps.insert(s.layers[l].steps.end(), steps.begin(), steps.end());
       }
     }
   } else if (k == "layered texture") {
