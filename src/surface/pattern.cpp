@@ -10,10 +10,13 @@ const PatternKind* patternKind(std::string_view name) {
       {"agate", false, makeAgate},
       {"boxed", false, makeBoxed},
       {"bozo", false, makeBozo},
+      {"bumps", false, makeBozo},  // as a pigment; as a normal it bends the surface
       {"checker", false, makeChecker},
       {"cylindrical", false, makeCylindrical},
+      {"dents", false, makeDents},
       {"gradient", true, makeGradient},
       {"granite", false, makeGranite},
+      {"leopard", false, makeLeopard},
       {"marble", false, makeMarble, kTriangle, true},
       {"onion", false, makeOnion},
       {"planar", false, makePlanar},
