@@ -698,11 +698,14 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   interpreter.run(path, text, [&](const std::shared_ptr<const Node>& n) { builder.statement(*n); },
                   [&](const std::shared_ptr<const Node>& n) { builder.defaults(*n); });
   builder.finish();
-  // POV-Ray 3.7 works in linear light and writes sRGB when assumed_gamma is 1, which is its default from
-  // #version 3.7 on; an older scene, or another gamma (mostly 2.2), has its colours written as they are
+  // POV-Ray 3.7 writes the sRGB of each pixel's colour raised to assumed_gamma, which is 1 by default from
+  // #version 3.7 on; an older scene without assumed_gamma has its colours written as they are
   // (docs/povray-language.md, "Gamma").
   const double gamma = builder.assumedGamma_.value_or(interpreter.version() >= 3.7 ? 1.0 : 0.0);
-  if (gamma == 1.0) scene.conventions.toByte = Conventions::ToByte::Srgb;
+  if (gamma > 0) {
+    scene.conventions.toByte = Conventions::ToByte::Srgb;
+    scene.conventions.gamma = float(gamma);
+  }
   for (ObjectDesc& o : scene.objects) scaleAmbient(o, builder.ambientLight_);
   scene.dataFiles = interpreter.takeDataFiles();
   return scene;

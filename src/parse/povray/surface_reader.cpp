@@ -271,7 +271,13 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
       p.wave = draft.kind->wave;
       continue;
     }
-    if (w == "quick_color" || w == "quick_colour") {
+    if (w == "average") {
+      const Rgbft keep = p.solid;
+      p = Pigment{};
+      p.solid = keep;
+      p.average = true;
+      draft = PatternDraft{};
+    } else if (w == "quick_color" || w == "quick_colour") {
       valueAfter(n, i);
     } else if (!readWave(n, i, p) && !draft.modifier(n, i, refusals)) {
       refusals.refuse(it.loc, w);
@@ -283,7 +289,9 @@ void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, R
   PatternDraft draft;
   readPigmentItems(n, p, draft, steps, refusals);
   draft.finish(p.pattern, n.loc, refusals);
-  if (p.pattern && p.pattern->blocks() == 0 && p.map.empty()) refusals.refuse(n.loc, "a pattern's default color_map");
+  // Without a map a continuous pattern is drawn as a grey ramp, black at 0 and white at 1 (measured).
+  if (p.average && p.map.empty()) throw ParseError(n.loc, "'average' needs a pigment_map");
+  if (p.pattern && p.pattern->blocks() == 0 && p.map.empty()) p.map = {{0, solidPigment({})}, {1, solidPigment({Color(1), 0, 0})}};
   while (p.pattern && p.list.size() < size_t(p.pattern->blocks())) {
     p.list.push_back(solidPigment({p.pattern->defaultBlock(int(p.list.size())), 0, 0}));
   }
@@ -367,7 +375,10 @@ std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals) 
   return p;
 }
 
-bool Surface::patterned() const { return layers.size() > 1 || layers[0].pigment.pattern || layers[0].pattern; }
+bool Surface::patterned() const {
+  const Pigment& p = layers[0].pigment;
+  return layers.size() > 1 || p.pattern || p.average || layers[0].pattern;
+}
 
 namespace {
 
