@@ -1,0 +1,148 @@
+#include "raytrace/shapes/height_field.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+// stb_image decodes the files; STB_IMAGE_STATIC keeps its functions to this file, so that another file of the
+// program (or of its tests) may compile its own copy.
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb/stb_image.h>
+
+namespace rt {
+
+namespace {
+
+uint32_t bigEndian(const unsigned char* p) {
+  return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | uint32_t(p[3]);
+}
+
+// A palette PNG's indices, which stb_image turns into the palette's colours (and the manual's heights are the
+// indices, whatever the colours): the chunks unpacked here, the compressed rows inflated by stb_image, and
+// the rows' filters undone as the PNG specification (§9) says. Nothing for any other PNG, or an interlaced one.
+std::optional<HeightImage> paletteIndices(const std::string& bytes) {
+  const auto* b = reinterpret_cast<const unsigned char*>(bytes.data());
+  if (bytes.size() < 33 || std::memcmp(b, "\x89PNG\r\n\x1a\n", 8) != 0) return std::nullopt;
+  const uint32_t width = bigEndian(b + 16), height = bigEndian(b + 20);
+  const int depth = b[24], colourType = b[25], interlace = b[28];
+  if (colourType != 3 || interlace != 0 || width == 0 || height == 0 || width > 65536 || height > 65536) {
+    return std::nullopt;
+  }
+  std::string compressed;
+  for (size_t at = 8; at + 12 <= bytes.size();) {
+    const size_t length = bigEndian(b + at);
+    if (at + 12 + length > bytes.size()) return std::nullopt;
+    if (std::memcmp(b + at + 4, "IDAT", 4) == 0) compressed.append(bytes, at + 8, length);
+    at += 12 + length;
+  }
+  const size_t stride = (size_t(width) * size_t(depth) + 7) / 8;
+  int size = 0;
+  char* raw = stbi_zlib_decode_malloc(compressed.data(), int(compressed.size()), &size);
+  if (!raw) return std::nullopt;
+  const std::string rows(raw, size_t(size));
+  STBI_FREE(raw);
+  if (rows.size() < (stride + 1) * height) return std::nullopt;
+  HeightImage image{int(width), int(height), {}};
+  image.heights.reserve(size_t(width) * height);
+  std::vector<unsigned char> line(stride), previous(stride, 0);
+  const size_t bpp = 1;  // a palette pixel's bytes, for the filters, rounded up to one
+  for (uint32_t y = 0; y < height; ++y) {
+    const auto* in = reinterpret_cast<const unsigned char*>(rows.data()) + y * (stride + 1);
+    const int filter = in[0];
+    for (size_t i = 0; i < stride; ++i) {
+      const int a = i >= bpp ? line[i - bpp] : 0, up = previous[i], c = i >= bpp ? previous[i - bpp] : 0;
+      int predicted = 0;
+      if (filter == 1) predicted = a;
+      else if (filter == 2) predicted = up;
+      else if (filter == 3) predicted = (a + up) / 2;
+      else if (filter == 4) {
+        const int p = a + up - c, pa = std::abs(p - a), pb = std::abs(p - up), pc = std::abs(p - c);
+        predicted = pa <= pb && pa <= pc ? a : (pb <= pc ? up : c);
+      }
+      line[i] = static_cast<unsigned char>(in[1 + i] + predicted);
+    }
+    for (uint32_t x = 0; x < width; ++x) {
+      const size_t bit = size_t(x) * size_t(depth);
+      const int index = (line[bit / 8] >> (8 - depth - int(bit % 8))) & ((1 << depth) - 1);
+      // What POV-Ray 3.7 gives a palette index: index/256 (measured with trace() on its height fields).
+      image.heights.push_back(index / 256.0);
+    }
+    previous = line;
+  }
+  return image;
+}
+
+}  // namespace
+
+HeightImage readHeightImage(const std::string& path, const SourceLoc& at) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.good() && !in.eof()) throw ParseError(at, "cannot read the height field image \"" + path + "\"");
+  if (std::optional<HeightImage> indexed = paletteIndices(bytes)) return *indexed;
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  int w = 0, h = 0, channels = 0;
+  if (!stbi_info_from_memory(data, int(bytes.size()), &w, &h, &channels)) {
+    throw ParseError(at, "cannot read the height field image \"" + path + "\": " + stbi_failure_reason());
+  }
+  const bool grey = channels <= 2;
+  stbi_us* pixels = stbi_load_16_from_memory(data, int(bytes.size()), &w, &h, &channels, grey ? 1 : 3);
+  if (!pixels) throw ParseError(at, "cannot read the height field image \"" + path + "\": " + stbi_failure_reason());
+  const bool sixteen = stbi_is_16_bit_from_memory(data, int(bytes.size()));
+  HeightImage image{w, h, {}};
+  image.heights.resize(size_t(w) * size_t(h));
+  for (size_t i = 0; i < image.heights.size(); ++i) {
+    // The manual's heights: a grey image's value over its largest; a colour image's red and green as the high and
+    // low bytes of a 16-bit number (POV-Ray 3.7 divides it by 65536, as trace() shows).
+    if (grey) {
+      image.heights[i] = pixels[i] / 65535.0;
+    } else {
+      const int red = pixels[3 * i] >> 8, green = pixels[3 * i + 1] >> 8;
+      image.heights[i] = sixteen ? pixels[3 * i] / 65535.0 : (red * 256 + green) / 65536.0;
+    }
+  }
+  stbi_image_free(pixels);
+  return image;
+}
+
+MeshData heightFieldMesh(const HeightImage& image, bool smooth, double waterLevel) {
+  MeshData m;
+  const int w = image.width, h = image.height;
+  if (w < 2 || h < 2) return m;
+  // The image's top row lies at z = 1 and its bottom row at z = 0, its first column at x = 0.
+  const auto height = [&](int x, int z) {
+    return image.heights[size_t(h - 1 - std::clamp(z, 0, h - 1)) * size_t(w) + size_t(std::clamp(x, 0, w - 1))];
+  };
+  const double dx = 1.0 / (w - 1), dz = 1.0 / (h - 1);
+  for (int z = 0; z < h; ++z) {
+    for (int x = 0; x < w; ++x) {
+      m.vertices.push_back({x * dx, height(x, z), z * dz});
+      if (!smooth) continue;
+      // The slope from the neighbouring heights, one-sided at the edges.
+      const double sx = (height(x + 1, z) - height(x - 1, z)) / ((std::min(x + 1, w - 1) - std::max(x - 1, 0)) * dx);
+      const double sz = (height(x, z + 1) - height(x, z - 1)) / ((std::min(z + 1, h - 1) - std::max(z - 1, 0)) * dz);
+      m.normals.push_back(glm::normalize(glm::dvec3(-sx, 1, -sz)));
+    }
+  }
+  // Each square split along the diagonal from its corner (x + 1, z) to (x, z + 1), as POV-Ray's trace() shows.
+  const auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
+    if (std::max({m.vertices[a].y, m.vertices[b].y, m.vertices[c].y}) < waterLevel) return;
+    MeshData::Face f;
+    f.v = {a, b, c};
+    if (smooth) f.n = {int32_t(a), int32_t(b), int32_t(c)};
+    m.faces.push_back(f);
+  };
+  for (int z = 0; z + 1 < h; ++z) {
+    for (int x = 0; x + 1 < w; ++x) {
+      const uint32_t p = uint32_t(z * w + x);
+      add(p, p + 1, p + uint32_t(w));
+      add(p + 1, p + uint32_t(w) + 1, p + uint32_t(w));
+    }
+  }
+  if (waterLevel > 0) m.waterLevel = waterLevel;
+  m.insideVector = glm::dvec3(0, 1, 0);  // below the surface is inside
+  return m;
+}
+
+}  // namespace rt
