@@ -194,7 +194,7 @@ std::optional<Hit<T>> MeshObject<T>::intersect(const Ray<T>& ray, Interval<T> ra
   Hit<T> hit;
   hit.t = t;
   hit.point = tri.a + u * tri.ab + v * tri.ac;
-  // A smooth triangle's normal is its corners' interpolated at the point (the manual's §3.4.2.2.1).
+  // A smooth triangle's normal is its corners' interpolated at the point (the manual's §3.4.5.2.7).
   const int32_t smooth = geometry_->smoothOf[tri.face];
   if (smooth >= 0) {
     const auto& n = geometry_->cornerNormals[size_t(smooth)];

@@ -34,6 +34,14 @@ const std::string kRgb(
     "\x00\x9d\x91\x69\xd2\xb8\x00\x00\x00\x00\x49\x45\x4e\x44\xae\x42\x60\x82",
     72);
 
+// A 4×3 GIF of palette indices 8 4 5 7 / 1 3 10 9 / 6 0 2 11 (its colours matched to its palette apart).
+const std::string kGif(
+    "\x47\x49\x46\x38\x39\x61\x04\x00\x03\x00\xf3\x00\x00\x00\x00\x00\x58\x0d\x35\x51\x4a\x00\x4b\x69\x00\x2f\x3e"
+    "\x6f\x70\x1c\x68\x39\x69\x42\x8f\x46\x30\x6a\x89\x57\xa4\xb5\x3b\xc1\xb9\x00\xc3\xf5\x33\x00\x00\x00\x00\x00"
+    "\x00\x00\x00\x00\x00\x00\x00\x21\xf9\x04\x00\x00\x00\x00\x00\x2c\x00\x00\x00\x00\x04\x00\x03\x00\x00\x04\x09"
+    "\x10\x91\x72\xc2\x50\xc9\x00\xb1\x22\x00\x3b",
+    92);
+
 SceneDesc povIn(const test::TempDir& dir, const std::string& body) {
   return povray::parsePovRay("#version 3.7;\n" + body, dir.file("scene.pov"), povray::PovRayOptions{{}, 320, 240, false});
 }
@@ -53,6 +61,9 @@ TEST_CASE("a height field's pixels: a palette's index over 256, a grey over its 
   REQUIRE(palette.width == 2);
   CHECK(palette.heights == std::vector<double>{3 / 256.0, 0, 1 / 256.0, 2 / 256.0});
   CHECK(readHeightImage(dir.write("g.png", kPeak16), at).heights == std::vector<double>{1, 0, 0, 0});
+  std::vector<double> gif;
+  for (int index : {8, 4, 5, 7, 1, 3, 10, 9, 6, 0, 2, 11}) gif.push_back(index / 256.0);
+  CHECK(readHeightImage(dir.write("s.gif", kGif), at).heights == gif);
   CHECK(readHeightImage(dir.write("c.png", kRgb), at).heights ==
         std::vector<double>{153 * 256 / 65536.0, (1 * 256 + 2) / 65536.0});
 }

@@ -38,7 +38,7 @@ class MeshData {
   std::vector<glm::dvec3> vertices, normals;
   std::vector<Face> faces;
   // POV-Ray's inside_vector: a point is inside when a ray from it this way crosses the triangles an odd number
-  // of times (the manual's §3.4.2.2.3). Without it the mesh has no inside.
+  // of times (the manual's §3.4.5.2.3.1). Without it the mesh has no inside.
   std::optional<glm::dvec3> insideVector;
   // A height field's water_level: the points of the triangles below this height are not there.
   std::optional<double> waterLevel;

@@ -280,7 +280,7 @@ class Builder {
       const bool lightsAlone = k == "union" && std::none_of(n.items.begin(), n.items.end(), isObject);
       std::optional<ShapeDesc> shape;
       // A mesh read before (`object { MyMesh }` again) is the same triangles, shared (shapes/triangle_mesh).
-      if (const auto read = meshesRead_.find(&n); read != meshesRead_.end()) {
+      if (const auto read = meshesRead_.empty() ? meshesRead_.end() : meshesRead_.find(&n); read != meshesRead_.end()) {
         shape = read->second.first;
         i = read->second.second;
       } else {
