@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "raytrace/parse/pov_parser.hpp"
 #include "raytrace/parse/povray/scene_builder.hpp"
 #include "raytrace/shapes/polygon.hpp"
 
@@ -70,4 +71,18 @@ TEST_CASE("a polygon of too few points, or out of one plane, is an error where i
         "scene.pov:2:11: error: the polygon's points are not in one plane");
   CHECK(povFailure("polygon { 3, <0, 0>, <1, 1>, <2, 2> }\n") == "scene.pov:2:11: error: the polygon's points span no plane");
   CHECK(povFailure("polygon { 4, <0, 0>, <1, 1>, <2, 2> }\n") == "scene.pov:2:1: error: 'polygon' needs a polygon point");
+}
+
+TEST_CASE("the course subset reads a polygon, its commas required", "[polygon]") {
+  const SceneDesc s = parsePov(
+      "camera { location <0,0,5> look_at <0,0,0> }\npolygon { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,0,0> }\n", "s.pov");
+  REQUIRE(s.objects.size() == 1);
+  CHECK(std::get<PolygonDesc>(s.objects[0].shape).points.size() == 4);
+  std::string message;
+  try {
+    parsePov("camera { location <0,0,5> look_at <0,0,0> }\npolygon { 3 <0,0,0>, <1,0,0>, <1,1,0> }\n", "s.pov");
+  } catch (const Error& e) {
+    message = e.what();
+  }
+  CHECK(message == "s.pov:2:13: error: expected ',' after the number of polygon points, found '<'");
 }

@@ -32,7 +32,7 @@ struct PolygonDesc {
       throw ParseError(countAt, "a polygon needs a whole number of points, at least 3, found " + shortest(n));
     }
     for (size_t i = 0; i < size_t(n); ++i) {
-      if (i > 0) r.comma("after a polygon point");
+      r.comma(i == 0 ? "after the number of polygon points" : "after a polygon point");
       d.points.push_back(r.vec3("a polygon point"));
     }
     d.check(countAt);
