@@ -152,7 +152,9 @@ std::optional<HeightImage> gifIndices(const std::string& bytes) {
       }
       target = kStart[pass] + k * kStep[pass];
     }
-    for (int x = 0; x < width; ++x) image.heights[size_t(target) * size_t(width) + size_t(x)] = indices[size_t(row) * size_t(width) + size_t(x)] / 256.0;
+    for (int x = 0; x < width; ++x) {
+      image.heights[size_t(target) * size_t(width) + size_t(x)] = indices[size_t(row) * size_t(width) + size_t(x)] / 256.0;
+    }
     ++row;
   }
   return image;

@@ -36,7 +36,9 @@ void PolygonDesc::check(const SourceLoc& at) const {
   double size = 0;
   for (const glm::dvec3& p : points) size = std::max(size, glm::length(p - points[0]));
   for (const glm::dvec3& p : points) {
-    if (std::abs(glm::dot(p - points[0], n)) > 1e-6 * size) throw ParseError(at, "the polygon's points are not in one plane");
+    if (std::abs(glm::dot(p - points[0], n)) > 1e-6 * size) {
+      throw ParseError(at, "the polygon's points are not in one plane");
+    }
   }
 }
 

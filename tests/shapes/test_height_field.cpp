@@ -43,7 +43,8 @@ const std::string kGif(
     92);
 
 SceneDesc povIn(const test::TempDir& dir, const std::string& body) {
-  return povray::parsePovRay("#version 3.7;\n" + body, dir.file("scene.pov"), povray::PovRayOptions{{}, 320, 240, false});
+  return povray::parsePovRay("#version 3.7;\n" + body, dir.file("scene.pov"),
+                             povray::PovRayOptions{{}, 320, 240, false});
 }
 
 double heightAt(const Object<double>& o, double x, double z) {

@@ -26,7 +26,9 @@ std::string povFailure(const std::string& body) {
   return "no error";
 }
 
-std::unique_ptr<Object<double>> made(const ObjectDesc& o) { return makeObject<double>(o, SphereMethod::Auto, 1, false); }
+std::unique_ptr<Object<double>> made(const ObjectDesc& o) {
+  return makeObject<double>(o, SphereMethod::Auto, 1, false);
+}
 
 const Interval<double> kAll{};
 

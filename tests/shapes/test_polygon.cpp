@@ -56,7 +56,8 @@ TEMPLATE_TEST_CASE("the manual's letter P is hit on its outline and not in its h
 
 TEST_CASE("a polygon left open is closed, in any plane", "[polygon]") {
   const SceneDesc s = pov("polygon { 3, <0, 0, 0>, <0, 2, 0>, <0, 0, 2> }\n");
-  const auto p = std::get<PolygonDesc>(s.objects[0].shape).make<double>(ObjectBuild{kMaterial, 1, SphereMethod::Auto, false});
+  const auto p =
+      std::get<PolygonDesc>(s.objects[0].shape).make<double>(ObjectBuild{kMaterial, 1, SphereMethod::Auto, false});
   const auto hit = p->intersect({{3, 0.5, 0.5}, {-1, 0, 0}}, Interval<double>{});
   REQUIRE(hit);
   CHECK(hit->t == 3);
@@ -69,8 +70,10 @@ TEST_CASE("a polygon of too few points, or out of one plane, is an error where i
         "scene.pov:2:11: error: a polygon needs a whole number of points, at least 3, found 2");
   CHECK(povFailure("polygon { 4, <0, 0, 0>, <1, 0, 0>, <1, 1, 0>, <0, 1, 1> }\n") ==
         "scene.pov:2:11: error: the polygon's points are not in one plane");
-  CHECK(povFailure("polygon { 3, <0, 0>, <1, 1>, <2, 2> }\n") == "scene.pov:2:11: error: the polygon's points span no plane");
-  CHECK(povFailure("polygon { 4, <0, 0>, <1, 1>, <2, 2> }\n") == "scene.pov:2:1: error: 'polygon' needs a polygon point");
+  CHECK(povFailure("polygon { 3, <0, 0>, <1, 1>, <2, 2> }\n") ==
+        "scene.pov:2:11: error: the polygon's points span no plane");
+  CHECK(povFailure("polygon { 4, <0, 0>, <1, 1>, <2, 2> }\n") ==
+        "scene.pov:2:1: error: 'polygon' needs a polygon point");
 }
 
 TEST_CASE("the course subset reads a polygon, its commas required", "[polygon]") {

@@ -124,7 +124,8 @@ struct MeshDesc {
   // An index into a list of `size` entries, located when it is out of range.
   static uint32_t index(double value, size_t size, const SourceLoc& at, const char* list) {
     if (!(value >= 0 && value < double(size) && value == double(size_t(value)))) {
-      throw ParseError(at, "index " + shortest(value) + " is out of range for the " + std::to_string(size) + " " + list);
+      throw ParseError(at,
+                       "index " + shortest(value) + " is out of range for the " + std::to_string(size) + " " + list);
     }
     return uint32_t(value);
   }
@@ -159,7 +160,9 @@ struct MeshDesc {
       const SourceLoc at = l.here();
       const glm::dvec3 n = l.vec3("a face's normal indices");
       if (i >= m.faces.size()) throw ParseError(at, "'normal_indices' lists more faces than 'face_indices'");
-      for (int k = 0; k < 3; ++k) m.faces[i].n[size_t(k)] = int32_t(index(n[k], m.normals.size(), at, "normal_vectors"));
+      for (int k = 0; k < 3; ++k) {
+        m.faces[i].n[size_t(k)] = int32_t(index(n[k], m.normals.size(), at, "normal_vectors"));
+      }
     });
     // Without normal_indices, as many normals as vertices are indexed as the vertices are (the manual's §3.4.5.2.4).
     if (!normalIndices && !m.normals.empty() && m.normals.size() == m.vertices.size()) {
