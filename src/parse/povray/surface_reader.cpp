@@ -49,8 +49,19 @@ bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, 
   }
   if (w != "translate" && w != "rotate" && w != "scale" && w != "matrix") return false;
   const Value* v = valueAfter(n, i);
-  if (w == "matrix" || !v) {
+  if (!v) {
     refusals.refuse(it.loc, w);
+    return true;
+  }
+  if (w == "matrix") {
+    const auto* list = dynamic_cast<const CoefficientList*>(v->ref.get());
+    if (!list || list->values.size() != 12) {
+      throw ParseError(n.items[i].loc, "'matrix' needs 12 numbers, found " +
+                                           std::to_string(list ? list->values.size() : size_t(v->size)));
+    }
+    auto m = std::make_shared<std::array<double, 12>>();
+    std::copy(list->values.begin(), list->values.end(), m->begin());
+    steps.push_back({TransformStep::Kind::Matrix, glm::dvec3(0), std::move(m)});
     return true;
   }
   glm::dvec3 a = vec3(*v);
