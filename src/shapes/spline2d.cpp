@@ -1,6 +1,7 @@
 #include "raytrace/shapes/spline2d.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace rt {
@@ -85,11 +86,12 @@ bool Ring::missedBy(const glm::dvec3& o, const glm::dvec3& d, double t0, double 
     return true;
   }
   if (!(t0 <= t1)) return true;
+  const double across = d.x * d.x + d.z * d.z;
   const auto distance2 = [&](double t) {
+    if (std::isinf(t)) return across > 0 ? t * t : o.x * o.x + o.z * o.z;  // an open end: the ray's far reach
     const double x = o.x + t * d.x, z = o.z + t * d.z;
     return x * x + z * z;
   };
-  const double across = d.x * d.x + d.z * d.z;
   const double nearest = across > 0 ? std::clamp(-(o.x * d.x + o.z * d.z) / across, t0, t1) : t0;
   return distance2(nearest) > r1 || std::max(distance2(t0), distance2(t1)) < r0;
 }

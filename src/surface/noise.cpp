@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <random>
 
 namespace rt {
 
@@ -59,9 +60,23 @@ constexpr std::array<uint16_t, 4096> makePermutation() {
 
 constexpr std::array<uint16_t, 4096> kPermutation = makePermutation();
 
-int entry(int x, int y, int z) {
+int hash(int x, int y, int z) {
   const auto& t = kPermutation;
-  return t[t[t[size_t(x & 0xfff)] ^ size_t(y & 0xfff)] ^ size_t(z & 0xfff)] & 0xff;
+  return t[t[t[size_t(x & 0xfff)] ^ size_t(y & 0xfff)] ^ size_t(z & 0xfff)];
+}
+
+int entry(int x, int y, int z) { return hash(x, y, z) & 0xff; }
+
+// The cells' table: the first outputs of std::mt19937 with its default seed, over 2³², one per hash and two more
+// for the last point's y and z.
+const std::array<double, 4098>& cellTable() {
+  static const std::array<double, 4098> table = [] {
+    std::array<double, 4098> t{};
+    std::mt19937 twister;
+    for (double& v : t) v = double(twister()) / 4294967296.0;
+    return t;
+  }();
+  return table;
 }
 
 double sCurve(double a) { return a * a * (3 - 2 * a); }
@@ -112,6 +127,13 @@ glm::dvec3 vectorNoise(const glm::dvec3& p) {
   const auto s = latticeSum<3>(p);
   return {s[0], s[1], s[2]};
 }
+
+glm::dvec3 cellPoint(int x, int y, int z) {
+  const double* r = cellTable().data() + hash(x, y, z);
+  return {x + r[0], y + r[1], z + r[2]};
+}
+
+double cellValue(int x, int y, int z) { return cellTable()[size_t(hash(x, y, z))]; }
 
 glm::dvec3 turbulentOffset(const glm::dvec3& p, const Turbulence& t) {
   glm::dvec3 sum = vectorNoise(p);

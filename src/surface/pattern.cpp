@@ -11,7 +11,9 @@ const PatternKind* patternKind(std::string_view name) {
       {"boxed", false, makeBoxed},
       {"bozo", false, makeBozo},
       {"bumps", false, makeBozo},  // as a pigment; as a normal it bends the surface
+      {"cells", false, makeCells},
       {"checker", false, makeChecker},
+      {"crackle", false, makeCrackle},
       {"cylindrical", false, makeCylindrical},
       {"dents", false, makeDents},
       {"gradient", true, makeGradient},

@@ -2,6 +2,7 @@
 // rays in step, for every spline.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -113,4 +114,11 @@ TEST_CASE("lathe: a segment's ring passes over only the rays that cannot meet it
   CHECK_FALSE(ring.missedBy({1.5, 5, 0}, {0, -1, 0}, 0, 10));  // down through the ring
   CHECK(ring.missedBy({3, 0.5, 0}, {-1, 0, 0}, 0, 0.5));       // stops at radius 2.5, short of the wall
   CHECK_FALSE(ring.missedBy({3, -1, 0}, {-1, 1, 0}, 0, 10));   // climbs into it from below
+}
+
+TEST_CASE("lathe: a ray along a level line with no far end still meets the ring", "[lathe]") {
+  const Ring ring{0, 2, 1, 1};
+  const double far = std::numeric_limits<double>::infinity();
+  CHECK_FALSE(ring.missedBy({0, 1, 0}, {0, 0, 1}, 0, far));  // from the axis outward: it reaches radius 1
+  CHECK(ring.missedBy({0, 1, 0}, {0, 1, 0}, 0, far));        // up the axis: never at radius 1
 }

@@ -16,6 +16,12 @@ double noise(const glm::dvec3& p, NoiseGenerator g);
 // Three independent noises, each about [-0.5, 0.5]: POV-Ray's vector noise, which turbulence displaces by.
 glm::dvec3 vectorNoise(const glm::dvec3& p);
 
+// The cells of crackle and cells: each unit cube [x, x+1) × [y, y+1) × [z, z+1) holds one random point, and
+// cells gives the cube a random value; both from a table POV-Ray fills with the Mersenne Twister's default
+// sequence, found by the same lattice hash as the noise's without its shift (docs/povray-noise.md).
+glm::dvec3 cellPoint(int x, int y, int z);
+double cellValue(int x, int y, int z);
+
 // turbulence's modifiers. POV-Ray keeps omega and lambda in single precision, which shows in its pictures.
 struct Turbulence {
   glm::dvec3 amount{0};

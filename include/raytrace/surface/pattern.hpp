@@ -34,6 +34,14 @@ struct NoiseChoice {
   NoiseGenerator get() const { return own ? *own : scene ? *scene : NoiseGenerator::RangeCorrected; }
 };
 
+// crackle's modifiers: the distances to the nearest three cell points weighted by `form`, each measured with
+// `metric` and lifted by `offset` along a fourth axis; `solid` gives each cell one value.
+struct CrackleArgs {
+  glm::dvec3 form{-1, 1, 0};
+  double metric = 2, offset = 0;
+  bool solid = false;
+};
+
 // What makes a pattern: the vector after its keyword (`gradient <1, 0, 0>`) and the pigment's modifiers that
 // change the pattern itself.
 struct PatternArgs {
@@ -42,6 +50,7 @@ struct PatternArgs {
   Turbulence turbulence;  // the pigment's turbulence, octaves, omega and lambda
   NoiseChoice noise;
   double agateTurbulence = 1;
+  CrackleArgs crackle;
 };
 
 struct PatternKind {

@@ -10,7 +10,9 @@ namespace rt {
 std::unique_ptr<Pattern> makeAgate(const PatternArgs&);
 std::unique_ptr<Pattern> makeBoxed(const PatternArgs&);
 std::unique_ptr<Pattern> makeBozo(const PatternArgs&);
+std::unique_ptr<Pattern> makeCells(const PatternArgs&);
 std::unique_ptr<Pattern> makeChecker(const PatternArgs&);
+std::unique_ptr<Pattern> makeCrackle(const PatternArgs&);
 std::unique_ptr<Pattern> makeCylindrical(const PatternArgs&);
 std::unique_ptr<Pattern> makeDents(const PatternArgs&);
 std::unique_ptr<Pattern> makeGradient(const PatternArgs&);

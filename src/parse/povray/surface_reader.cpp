@@ -138,23 +138,37 @@ struct PatternDraft {
     return makePattern(*k, args);
   }
 
-  // turbulence, octaves, omega, lambda, noise_generator and agate_turb; false for any other item.
+  // turbulence, octaves, omega, lambda, noise_generator, agate_turb and crackle's form, metric, offset and
+  // solid; false for any other item.
   bool modifier(const Node& n, size_t& i, Refusals& refusals) {
     const Item& it = n.items[i];
     if (it.kind != Item::Kind::Keyword) return false;
     const std::string_view w = it.word;
-    if (w != "turbulence" && w != "octaves" && w != "omega" && w != "lambda" && w != "noise_generator" &&
-        w != "agate_turb") {
+    if (w == "solid") {
+      args.crackle.solid = true;
+      modified = true;
+      return true;
+    }
+    const bool vector = w == "turbulence" || w == "form";
+    if (!vector && w != "octaves" && w != "omega" && w != "lambda" && w != "noise_generator" && w != "agate_turb" &&
+        w != "metric" && w != "offset") {
       return false;
     }
     const Value* v = valueAfter(n, i);
-    if (!v || !v->numeric() || (w != "turbulence" && v->type != Value::Type::Float)) {
-      throw ParseError(it.loc, "'" + std::string(w) + (w == "turbulence" ? "' needs a float or a vector" : "' needs a float"));
+    if (!v || !v->numeric() || (!vector && v->type != Value::Type::Float)) {
+      throw ParseError(it.loc, "'" + std::string(w) + (vector ? "' needs a float or a vector" : "' needs a float"));
     }
     const double x = v->v[0];
     Turbulence& t = args.turbulence;
     if (w == "turbulence") {
       t.amount = vec3(*v);
+    } else if (w == "form") {
+      args.crackle.form = vec3(*v);
+    } else if (w == "metric") {
+      if (!(x > 0)) throw ParseError(it.loc, "the crackle metric must be greater than 0");
+      args.crackle.metric = x;
+    } else if (w == "offset") {
+      args.crackle.offset = x;
     } else if (w == "octaves") {
       t.octaves = std::clamp(int(x), 1, 10);  // POV-Ray's limits
     } else if (w == "omega") {
@@ -190,11 +204,12 @@ std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals);
 namespace {
 
 // color_map or pigment_map entries: `[value colour]`, `[value pigment { … }]`, or the old `[v0 v1 colour0 colour1]`.
-void readMap(const Node& n, std::vector<MapEntry>& map, Refusals& refusals) {
+// An average's entries may leave out their weight, which is then 1.
+void readMap(const Node& n, std::vector<MapEntry>& map, Refusals& refusals, bool weightsOptional = false) {
   for (const Item& it : n.items) {
     if (it.kind == Item::Kind::Node && (it.node->keyword == "color_map" || it.node->keyword == "colour_map" ||
                                         it.node->keyword == "pigment_map")) {
-      readMap(*it.node, map, refusals);  // a map identifier
+      readMap(*it.node, map, refusals, weightsOptional);  // a map identifier
       continue;
     }
     if (it.kind != Item::Kind::Node || it.node->keyword != "[") {
@@ -228,6 +243,7 @@ void readMap(const Node& n, std::vector<MapEntry>& map, Refusals& refusals) {
     }
     // `[0.5 1]` is a value and a grey.
     if (pigments.empty() && values.size() == 2) pigments.push_back(solidPigment({Color(float(values[1])), 0, 0}));
+    if (values.empty() && weightsOptional) values.push_back(1);
     if (values.empty() || pigments.empty()) continue;
     if (values.size() == 2 && pigments.size() == 2) {
       map.push_back({values[0], pigments[0]});
@@ -263,7 +279,7 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
         readPigmentItems(*it.node, p, draft, steps, refusals);  // an identifier, modified by what follows
       } else if (k == "color_map" || k == "colour_map" || k == "pigment_map") {
         p.map.clear();
-        readMap(*it.node, p.map, refusals);
+        readMap(*it.node, p.map, refusals, p.average);
       } else {
         refusals.refuse(it, "pigment");
       }

@@ -192,6 +192,9 @@ global_settings { noise_generator 1 }
   // No map: a grey ramp.
   const SceneDesc ramp = scene("plane { y, 0 pigment { gradient x } }\n");
   CHECK(ramp.objects[0].texture->at(glm::dvec3(0.25, 0, 0)).pigment == Color(0.25f));
+  // An average's entries without weights weigh 1 each.
+  const SceneDesc mixed = scene("plane { y, 0 pigment { average pigment_map { [pigment { Red }] [3 Blue] } } }\n");
+  CHECK(mixed.objects[0].texture->at(glm::dvec3(0)).pigment == Color(0.25f, 0, 0.75f));
   CHECK(failure("plane { y, 0 pigment { bozo noise_generator 3 color_map { [0 Red] [1 Blue] } } }\n") ==
         "scene.pov:3:29: error: 'noise_generator 3' is not supported yet");
   CHECK(failure("plane { y, 0 pigment { bozo octaves <1, 2, 3> color_map { [0 Red] [1 Blue] } } }\n") ==
