@@ -27,6 +27,13 @@ double shaped(double v, Wave wave, double exponent) {
 
 }  // namespace
 
+// frequency and phase, then the value wrapped to [0, 1), keeping 1 itself where the pattern reaches it.
+double waveValue(double raw, double frequency, double phase, Wave wave, double exponent) {
+  double v = raw * frequency + phase;
+  if (v < 0 || v > 1) v -= std::floor(v);
+  return shaped(v, wave, exponent);
+}
+
 Rgbft Pigment::at(const glm::dvec3& p) const {
   if (!pattern) return solid;
   const glm::dvec3 q = glm::dvec3(fromTexture * glm::dvec4(p, 1));
@@ -35,10 +42,7 @@ Rgbft Pigment::at(const glm::dvec3& p) const {
     const size_t i = std::min(size_t(raw), list.size() - 1);
     return list[i]->at(q);
   }
-  // frequency and phase, then the value wrapped to [0, 1), keeping 1 itself where the pattern reaches it.
-  double v = raw * frequency + phase;
-  if (v < 0 || v > 1) v -= std::floor(v);
-  v = shaped(v, wave, exponent);
+  const double v = waveValue(raw, frequency, phase, wave, exponent);
   if (map.empty()) return solid;
   if (v <= map.front().value) return map.front().pigment->at(q);
   if (v >= map.back().value) return map.back().pigment->at(q);

@@ -80,8 +80,8 @@ std::shared_ptr<const Pigment> solidPigment(const Rgbft& c) {
 
 void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals);
 
-// frequency, phase and the wave types; false for any other item.
-bool readWave(const Node& n, size_t& i, Pigment& p) {
+// frequency, phase and the wave types of a pigment or a normal; false for any other item.
+template <class Waved> bool readWave(const Node& n, size_t& i, Waved& p) {
   const Item& it = n.items[i];
   if (it.kind != Item::Kind::Keyword) return false;
   const std::string_view w = it.word;
@@ -271,6 +271,72 @@ void readFinish(const Node& n, PovFinish& f, Refusals& refusals) {
   }
 }
 
+// slope_map entries `[value, <height, slope>]`, or a slope_map identifier.
+void readSlopeMap(const Node& n, std::vector<SlopeEntry>& slopes, Refusals& refusals) {
+  for (const Item& it : n.items) {
+    if (it.kind == Item::Kind::Node && it.node->keyword == "slope_map") {
+      readSlopeMap(*it.node, slopes, refusals);
+      continue;
+    }
+    const std::vector<Item>* e = it.kind == Item::Kind::Node && it.node->keyword == "[" ? &it.node->items : nullptr;
+    if (!e || e->size() != 2 || (*e)[0].kind != Item::Kind::Value || (*e)[0].value.type != Value::Type::Float ||
+        (*e)[1].kind != Item::Kind::Value || !(*e)[1].value.numeric()) {
+      throw ParseError(it.loc, "a slope_map entry is [value, <height, slope>]");
+    }
+    const glm::dvec3 hs = vec3((*e)[1].value);
+    slopes.push_back({(*e)[0].value.v[0], hs.x, hs.y});
+  }
+  std::stable_sort(slopes.begin(), slopes.end(), [](const SlopeEntry& a, const SlopeEntry& b) { return a.value < b.value; });
+}
+
+// `normal { [identifier] pattern [amount] modifiers… }` (POV-Ray 3.7 manual, "Normal").
+void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, Refusals& refusals) {
+  for (size_t i = 0; i < n.items.size(); ++i) {
+    const Item& it = n.items[i];
+    if (readTransform(n, i, steps, refusals)) continue;
+    if (it.kind == Item::Kind::Node) {
+      const std::string_view k = it.node->keyword;
+      if (k == "normal" && !(normal.pattern && normal.pattern->blocks() > 0)) {
+        readNormal(*it.node, normal, steps, refusals);  // an identifier, modified by what follows
+      } else if (k == "slope_map") {
+        normal.slopes.clear();
+        readSlopeMap(*it.node, normal.slopes, refusals);
+      } else {
+        refusals.refuse(it, "normal");  // normal_map, a block pattern's list of normals
+      }
+      continue;
+    }
+    if (it.kind != Item::Kind::Keyword) {
+      refusals.refuse(it, it.value.type == Value::Type::Function ? "function" : "a value here");
+      continue;
+    }
+    const std::string_view w = it.word;
+    if (const PatternKind* kind = patternKind(w)) {
+      PatternArgs args;
+      if (kind->needsVector) {
+        const Value* v = valueAfter(n, i);
+        if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(w) + "' needs a vector");
+        args.vector = vec3(*v);
+        args.hasVector = true;
+      }
+      normal.pattern = kind->make(args);
+      const Value* amount = valueAfter(n, i);
+      normal.amount = amount ? amount->v[0] : 0.5;
+      continue;
+    }
+    if (w == "bump_size" || w == "accuracy") {
+      const Value* v = valueAfter(n, i);
+      if (!v || v->type != Value::Type::Float) throw ParseError(it.loc, "'" + std::string(w) + "' needs a float");
+      (w == "bump_size" ? normal.amount : normal.accuracy) = v->v[0];
+    } else if (w == "no_bump_scale") {
+      const Value* v = i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value ? valueAfter(n, i) : nullptr;
+      normal.bumpScale = v && v->v[0] == 0;
+    } else if (!readWave(n, i, normal)) {
+      refusals.refuse(it.loc, w);
+    }
+  }
+}
+
 FinishTerms finishTerms(const PovFinish& f, double ior) {
   FinishTerms t;
   t.ambient = f.ambient;
@@ -297,7 +363,9 @@ std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals) 
   return p;
 }
 
-bool Surface::patterned() const { return layers.size() > 1 || layers[0].pigment.pattern || layers[0].pattern; }
+bool Surface::patterned() const {
+  return layers.size() > 1 || layers[0].pigment.pattern || layers[0].pattern || layers[0].normal;
+}
 
 namespace {
 
@@ -377,14 +445,23 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
     readPigment(n, top.pigment, top.steps, refusals);
   } else if (k == "finish") {
     readFinish(n, top.finish, refusals);
+  } else if (k == "normal") {
+    if (!top.normal) top.normal.emplace();
+    readNormal(n, *top.normal, top.normalSteps, refusals);
   } else if (k == "texture" && texturePatternIn(n)) {
     top.pattern = readTexturePattern(n, defaults, refusals);
   } else if (k == "texture" || k == "material") {
     for (size_t i = 0; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
+      std::vector<TransformStep> moved;
       if (it.kind == Item::Kind::Node) {
         readSurfaceItem(*it.node, s, defaults, refusals);
-      } else if (!readTransform(n, i, s.layers.back().steps, refusals)) {
+      } else if (readTransform(n, i, moved, refusals)) {
+        // A texture's transform moves its pigment, and its normal if it has one by then.
+        SurfaceLayer& layer = s.layers.back();
+        layer.steps.insert(layer.steps.end(), moved.begin(), moved.end());
+        if (layer.normal) layer.normalSteps.insert(layer.normalSteps.end(), moved.begin(), moved.end());
+      } else {
         refusals.refuse(it, k);
       }
     }
@@ -433,7 +510,12 @@ Texture makeTexture(const Surface& s, const std::vector<TransformStep>& after) {
   for (const SurfaceLayer& layer : s.layers) {
     auto p = std::make_shared<Pigment>(layer.pigment);
     p->fromTexture = glm::inverse(composeTransforms<double>(layer.steps));
-    t.layers.push_back({p, finishTerms(layer.finish, s.ior), layer.pattern});
+    std::shared_ptr<Normal> normal;
+    if (layer.normal && layer.normal->pattern) {
+      normal = std::make_shared<Normal>(*layer.normal);
+      normal->fromTexture = glm::inverse(composeTransforms<double>(layer.normalSteps));
+    }
+    t.layers.push_back({p, finishTerms(layer.finish, s.ior), layer.pattern, std::move(normal)});
   }
   t.fromWorld = glm::inverse(composeTransforms<double>(after));
   return t;
