@@ -22,8 +22,9 @@ double Normal::height(const glm::dvec3& q) const {
 
 // The height is sampled at the four corners of a regular pyramid `accuracy` away from the point (POV-Ray 3.7
 // manual, "Normals, Accuracy"); its gradient bends the normal by amount/10 per unit of slope, measured on
-// POV-Ray's renders. By default the bend is the one in the pattern's space, so that scaling a normal scales
-// its bumps' depth with them ("Scaling normals"); no_bump_scale bends by the slope in world space.
+// POV-Ray's renders; a pattern with a formula of its own (quilted) gives that vector itself. By default the
+// bend is the one in the pattern's space, so that scaling a normal scales its bumps' depth with them ("Scaling
+// normals"); no_bump_scale bends by the slope in world space.
 glm::dvec3 Normal::bent(const glm::dvec3& n, const glm::dvec3& p, const glm::dmat3& toTexture) const {
   static const glm::dvec3 kPyramid[4] = {{0.942809041582063, -1.0 / 3, 0},
                                          {-0.471404520791032, -1.0 / 3, 0.816496580927726},
@@ -31,11 +32,14 @@ glm::dvec3 Normal::bent(const glm::dvec3& n, const glm::dvec3& p, const glm::dma
                                          {0, 1, 0}};
   const glm::dmat3 m = glm::dmat3(fromTexture) * toTexture;
   const glm::dvec3 q = glm::dvec3(fromTexture * glm::dvec4(p, 1));
-  glm::dvec3 sum(0);
-  for (const glm::dvec3& corner : kPyramid) sum += height(q + accuracy * corner) * corner;
-  double scale = amount / (10 * accuracy);
+  glm::dvec3 slope = pattern->hasBump() ? pattern->bump(q) : glm::dvec3(0);
+  if (!pattern->hasBump()) {
+    for (const glm::dvec3& corner : kPyramid) slope += height(q + accuracy * corner) * corner;
+    slope /= 10 * accuracy;
+  }
+  double scale = amount;
   if (bumpScale) scale *= glm::length(glm::transpose(glm::inverse(m)) * n);
-  return glm::normalize(n - scale * (glm::transpose(m) * sum));
+  return glm::normalize(n - scale * (glm::transpose(m) * slope));
 }
 
 }  // namespace rt

@@ -10,7 +10,7 @@ const PatternKind* patternKind(std::string_view name) {
   static constexpr PatternKind kKinds[] = {
       {"boxed", false, makeBoxed},       {"checker", false, makeChecker},         {"cylindrical", false, makeCylindrical},
       {"gradient", true, makeGradient},  {"onion", false, makeOnion},             {"planar", false, makePlanar},
-      {"radial", false, makeRadial},     {"spherical", false, makeSpherical},
+      {"quilted", false, makeQuilted},   {"radial", false, makeRadial},           {"spherical", false, makeSpherical},
   };
   for (const PatternKind& k : kKinds) {
     if (k.name == name) return &k;

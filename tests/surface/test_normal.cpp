@@ -94,5 +94,26 @@ TEST_CASE("normal: a texture bends by its top normal, in its own texture space; 
   CHECK_FALSE(bounded(plain).bumpy);
 }
 
+TEST_CASE("normal: quilted's value and bend, against POV-Ray's renders", "[normal]") {
+  // Pigment values read once from POV-Ray's 16-bit renders of `quilted color_map { [0 rgb 0] [1 rgb 1] }`.
+  PatternArgs args;
+  CHECK(makeQuilted(args)->value({0.025, 0.5, 0.5}) == Approx(0.1564).margin(1e-4));
+  args.control0 = 0;
+  args.control1 = 0;
+  CHECK(makeQuilted(args)->value({0.025, 0.1, 0.1}) == Approx(0.1978).margin(1e-4));
+  CHECK(makeQuilted(args)->value({1.025, -0.9, 2.1}) == Approx(0.1978).margin(1e-4));  // every unit cube alike
+  args.control0 = 1;
+  CHECK(makeQuilted(args)->value({0.025, 0.5, 0.5}) == Approx(0.0914).margin(1e-4));
+  // `normal { quilted 1 }` on the plane y = 0 at (0.95, 0, 0.45): n·l under lights straight up, along +x and
+  // along +z, from POV-Ray's renders.
+  Normal n;
+  n.pattern = makeQuilted({});
+  n.amount = 1;
+  const glm::dvec3 b = n.bent(kUp, {0.95, 0, 0.45}, glm::dmat3(1));
+  CHECK(b.y == Approx(0.6592).margin(1e-4));
+  CHECK(glm::dot(b, glm::normalize(glm::dvec3(1, 1, 0))) == Approx(0.9946).margin(1e-4));
+  CHECK(glm::dot(b, glm::normalize(glm::dvec3(0, 1, 1))) == Approx(0.4074).margin(1e-4));
+}
+
 }  // namespace
 }  // namespace rt

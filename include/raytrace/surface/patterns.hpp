@@ -13,6 +13,7 @@ std::unique_ptr<Pattern> makeCylindrical(const PatternArgs&);
 std::unique_ptr<Pattern> makeGradient(const PatternArgs&);
 std::unique_ptr<Pattern> makeOnion(const PatternArgs&);
 std::unique_ptr<Pattern> makePlanar(const PatternArgs&);
+std::unique_ptr<Pattern> makeQuilted(const PatternArgs&);
 std::unique_ptr<Pattern> makeRadial(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpherical(const PatternArgs&);
 

@@ -103,6 +103,19 @@ template <class Waved> bool readWave(const Node& n, size_t& i, Waved& p) {
   return true;
 }
 
+// quilted's control0 and control1, wherever they stand among the pattern's modifiers in n; the readers skip them.
+void readControls(const Node& n, PatternArgs& args) {
+  for (size_t i = 0; i < n.items.size(); ++i) {
+    const Item& it = n.items[i];
+    if (it.kind != Item::Kind::Keyword || (it.word != "control0" && it.word != "control1")) continue;
+    const Value* v = valueAfter(n, i);
+    if (!v || v->type != Value::Type::Float) throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a float");
+    (it.word == "control0" ? args.control0 : args.control1) = v->v[0];
+  }
+}
+
+bool isControl(const Item& it) { return it.kind == Item::Kind::Keyword && (it.word == "control0" || it.word == "control1"); }
+
 }  // namespace
 
 std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals);
@@ -204,10 +217,11 @@ void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, R
       const Rgbft keep = p.solid;
       p = Pigment{};
       p.solid = keep;
+      readControls(n, args);
       p.pattern = kind->make(args);
       continue;
     }
-    if (w == "quick_color" || w == "quick_colour") {
+    if (w == "quick_color" || w == "quick_colour" || isControl(it)) {
       valueAfter(n, i);
     } else if (!readWave(n, i, p)) {
       refusals.refuse(it.loc, w);
@@ -319,6 +333,7 @@ void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps
         args.vector = vec3(*v);
         args.hasVector = true;
       }
+      readControls(n, args);
       normal.pattern = kind->make(args);
       const Value* amount = valueAfter(n, i);
       normal.amount = amount ? amount->v[0] : 0.5;
@@ -328,6 +343,8 @@ void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps
       const Value* v = valueAfter(n, i);
       if (!v || v->type != Value::Type::Float) throw ParseError(it.loc, "'" + std::string(w) + "' needs a float");
       (w == "bump_size" ? normal.amount : normal.accuracy) = v->v[0];
+    } else if (isControl(it)) {
+      valueAfter(n, i);
     } else if (w == "no_bump_scale") {
       const Value* v = i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value ? valueAfter(n, i) : nullptr;
       normal.bumpScale = v && v->v[0] == 0;
@@ -418,7 +435,10 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
         args.vector = vec3(*v);
         args.hasVector = true;
       }
+      readControls(n, args);
       selector.pattern = kind->make(args);
+    } else if (isControl(it)) {
+      valueAfter(n, i);
     } else if (!readWave(n, i, selector)) {
       refusals.refuse(it, "texture");
     }
