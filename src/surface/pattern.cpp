@@ -1,21 +1,61 @@
 #include "raytrace/surface/pattern.hpp"
 
-#include <iterator>
-
 #include "raytrace/surface/patterns.hpp"
 
 namespace rt {
 
 const PatternKind* patternKind(std::string_view name) {
+  constexpr Wave kTriangle = Wave::Triangle;
   static constexpr PatternKind kKinds[] = {
-      {"boxed", false, makeBoxed},       {"checker", false, makeChecker},         {"cylindrical", false, makeCylindrical},
-      {"gradient", true, makeGradient},  {"onion", false, makeOnion},             {"planar", false, makePlanar},
-      {"quilted", false, makeQuilted},   {"radial", false, makeRadial},           {"spherical", false, makeSpherical},
+      {"agate", false, makeAgate},
+      {"boxed", false, makeBoxed},
+      {"bozo", false, makeBozo},
+      {"bumps", false, makeBozo},  // as a pigment; as a normal it bends the surface
+      {"checker", false, makeChecker},
+      {"cylindrical", false, makeCylindrical},
+      {"dents", false, makeDents},
+      {"gradient", true, makeGradient},
+      {"granite", false, makeGranite},
+      {"leopard", false, makeLeopard},
+      {"marble", false, makeMarble, kTriangle, true},
+      {"onion", false, makeOnion},
+      {"planar", false, makePlanar},
+      {"quilted", false, makeQuilted},
+      {"radial", false, makeRadial},
+      {"spherical", false, makeSpherical},
+      {"spotted", false, makeBozo},
+      {"wood", false, makeWood, kTriangle, true},
+      {"wrinkles", false, makeWrinkles},
   };
   for (const PatternKind& k : kKinds) {
     if (k.name == name) return &k;
   }
   return nullptr;
+}
+
+namespace {
+
+// Turbulence as most patterns take it: the point displaced by the turbulent offset, scaled per axis.
+class Turbulent final : public Pattern {
+ public:
+  Turbulent(std::unique_ptr<Pattern> base, const Turbulence& t) : base_(std::move(base)), turbulence_(t) {}
+  double value(const glm::dvec3& p) const override {
+    return base_->value(p + turbulentOffset(p, turbulence_) * turbulence_.amount);
+  }
+  int blocks() const override { return base_->blocks(); }
+  Color defaultBlock(int i) const override { return base_->defaultBlock(i); }
+
+ private:
+  std::unique_ptr<Pattern> base_;
+  Turbulence turbulence_;
+};
+
+}  // namespace
+
+std::unique_ptr<Pattern> makePattern(const PatternKind& kind, const PatternArgs& args) {
+  std::unique_ptr<Pattern> p = kind.make(args);
+  if (!args.turbulence.on() || kind.ownTurbulence) return p;
+  return std::make_unique<Turbulent>(std::move(p), args.turbulence);
 }
 
 }  // namespace rt

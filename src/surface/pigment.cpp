@@ -27,10 +27,11 @@ double shaped(double v, Wave wave, double exponent) {
 
 }  // namespace
 
-// frequency and phase, then the value wrapped to [0, 1), keeping 1 itself where the pattern reaches it.
+// frequency and phase, then the value wrapped as POV-Ray wraps it: modulo 1.00001, which keeps 1 itself where
+// the pattern reaches it (and shows as a slow drift far from the origin, which POV-Ray's pictures have too).
 double waveValue(double raw, double frequency, double phase, Wave wave, double exponent) {
-  double v = raw * frequency + phase;
-  if (v < 0 || v > 1) v -= std::floor(v);
+  double v = std::fmod(raw * frequency + phase, 1.00001);
+  if (v < 0) v -= std::floor(v);
   return shaped(v, wave, exponent);
 }
 

@@ -3,9 +3,11 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string_view>
 
 #include "raytrace/geometry/math.hpp"
+#include "raytrace/surface/noise.hpp"
 
 namespace rt {
 
@@ -26,10 +28,25 @@ class Pattern {
   virtual glm::dvec3 bump(const glm::dvec3&) const { return glm::dvec3(0); }
 };
 
-// What a pattern keyword may be followed by: `gradient <1, 0, 0>`.
+// How a continuous pattern's value is shaped before the map reads it (POV-Ray's wave modifiers).
+enum class Wave { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
+
+// The noise generator a pattern uses: its own `noise_generator`, else global_settings', which may come later
+// in the file than the pattern and so is read when the scene is drawn.
+struct NoiseChoice {
+  std::shared_ptr<const NoiseGenerator> scene;
+  std::optional<NoiseGenerator> own;
+  NoiseGenerator get() const { return own ? *own : scene ? *scene : NoiseGenerator::RangeCorrected; }
+};
+
+// What makes a pattern: the vector after its keyword (`gradient <1, 0, 0>`) and the pigment's modifiers that
+// change the pattern itself.
 struct PatternArgs {
   glm::dvec3 vector{0};
   bool hasVector = false;
+  Turbulence turbulence;  // the pigment's turbulence, octaves, omega and lambda
+  NoiseChoice noise;
+  double agateTurbulence = 1;
   double control0 = 1, control1 = 1;  // quilted's, written among the pattern's modifiers
 };
 
@@ -37,9 +54,14 @@ struct PatternKind {
   std::string_view name;
   bool needsVector;
   std::unique_ptr<Pattern> (*make)(const PatternArgs&);
+  Wave wave = Wave::Ramp;       // its wave when the pigment names none
+  bool ownTurbulence = false;   // it reads the turbulence itself, instead of being displaced by it
 };
 
 // The pattern kinds raytrace draws; nothing for any other name.
 const PatternKind* patternKind(std::string_view name);
+
+// A pattern of the kind, displaced by the turbulence unless the kind reads it itself.
+std::unique_ptr<Pattern> makePattern(const PatternKind& kind, const PatternArgs& args);
 
 }  // namespace rt

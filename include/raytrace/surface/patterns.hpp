@@ -7,14 +7,22 @@
 
 namespace rt {
 
+std::unique_ptr<Pattern> makeAgate(const PatternArgs&);
 std::unique_ptr<Pattern> makeBoxed(const PatternArgs&);
+std::unique_ptr<Pattern> makeBozo(const PatternArgs&);
 std::unique_ptr<Pattern> makeChecker(const PatternArgs&);
 std::unique_ptr<Pattern> makeCylindrical(const PatternArgs&);
+std::unique_ptr<Pattern> makeDents(const PatternArgs&);
 std::unique_ptr<Pattern> makeGradient(const PatternArgs&);
+std::unique_ptr<Pattern> makeGranite(const PatternArgs&);
+std::unique_ptr<Pattern> makeLeopard(const PatternArgs&);
+std::unique_ptr<Pattern> makeMarble(const PatternArgs&);
 std::unique_ptr<Pattern> makeOnion(const PatternArgs&);
 std::unique_ptr<Pattern> makePlanar(const PatternArgs&);
 std::unique_ptr<Pattern> makeQuilted(const PatternArgs&);
 std::unique_ptr<Pattern> makeRadial(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpherical(const PatternArgs&);
+std::unique_ptr<Pattern> makeWood(const PatternArgs&);
+std::unique_ptr<Pattern> makeWrinkles(const PatternArgs&);
 
 }  // namespace rt

@@ -24,9 +24,6 @@ struct MapEntry {
   std::shared_ptr<const Pigment> pigment;
 };
 
-// How a continuous pattern's value is shaped before the map reads it (POV-Ray's wave modifiers).
-enum class Wave { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
-
 // A continuous pattern's value after frequency and phase, wrapped into [0, 1] and shaped by the wave (POV-Ray
 // 3.7 manual, "Waveform"): what a colour map or a slope map reads.
 double waveValue(double raw, double frequency, double phase, Wave wave, double exponent);

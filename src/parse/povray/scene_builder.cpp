@@ -298,8 +298,8 @@ class Builder {
         if (m == "photons" || m == "radiosity") continue;
         if (m == "pigment" || m == "finish" || m == "normal" || m == "texture" || m == "material" ||
             m == "interior" || m == "layered texture") {
-          // A second texture block is a layer on top of the first.
-          if (m == "texture" && textureBlock) s.layers.emplace_back();
+          // A second texture block is a layer on top of the first, starting as the #default texture.
+          if (m == "texture" && textureBlock) s.layers.push_back(default_.layers.back());
           textureBlock = textureBlock || m == "texture";
           readSurfaceItem(*it.node, s, default_, refusals_);
           if (!textureFrom) textureFrom = o.transforms.size();
@@ -552,6 +552,7 @@ class Builder {
       }
     }
     sky->fromWorld = sky->fromWorld * glm::inverse(composeTransforms<double>(steps));
+    sky->filterTints = interpreter_.version() >= 3.7;  // measured: docs/povray-language.md, sky_sphere
     scene_.sky = sky;
   }
 
@@ -611,7 +612,10 @@ class Builder {
           ambientLight_ = colourOf(*v).rgb;
         } else if (w == "assumed_gamma" && v && v->type == Value::Type::Float) {
           assumedGamma_ = v->v[0];
-        } else if (w == "adc_bailout" || w == "number_of_waves" || w == "noise_generator" ||
+        } else if (w == "noise_generator" && v && v->type == Value::Type::Float) {
+          if (v->v[0] == 3) refuse(it.loc, "noise_generator 3");
+          *refusals_.sceneNoise = v->v[0] < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
+        } else if (w == "adc_bailout" || w == "number_of_waves" ||
                    w == "irid_wavelength" || w == "max_intersections" || w == "hf_gray_16") {
         } else {
           refuse(it.loc, w);

@@ -103,18 +103,77 @@ template <class Waved> bool readWave(const Node& n, size_t& i, Waved& p) {
   return true;
 }
 
-// quilted's control0 and control1, wherever they stand among the pattern's modifiers in n; the readers skip them.
-void readControls(const Node& n, PatternArgs& args) {
-  for (size_t i = 0; i < n.items.size(); ++i) {
-    const Item& it = n.items[i];
-    if (it.kind != Item::Kind::Keyword || (it.word != "control0" && it.word != "control1")) continue;
-    const Value* v = valueAfter(n, i);
-    if (!v || v->type != Value::Type::Float) throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a float");
-    (it.word == "control0" ? args.control0 : args.control1) = v->v[0];
-  }
-}
+// A pattern being read: its kind and what the pigment's modifiers set, made again with them once the block
+// is read, since the modifiers may follow the colour map.
+struct PatternDraft {
+  const PatternKind* kind = nullptr;
+  PatternArgs args;
+  bool modified = false;
 
-bool isControl(const Item& it) { return it.kind == Item::Kind::Keyword && (it.word == "control0" || it.word == "control1"); }
+  // The pattern of keyword n.items[i] (i moves past its vector), or nothing if the word names no pattern.
+  std::unique_ptr<Pattern> start(const Node& n, size_t& i, const Refusals& refusals) {
+    const Item& it = n.items[i];
+    const PatternKind* k = it.kind == Item::Kind::Keyword ? patternKind(it.word) : nullptr;
+    if (!k) return nullptr;
+    kind = k;
+    args = PatternArgs{};
+    args.noise.scene = refusals.sceneNoise;
+    if (k->needsVector) {
+      const Value* v = valueAfter(n, i);
+      if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a vector");
+      args.vector = vec3(*v);
+      args.hasVector = true;
+    }
+    return makePattern(*k, args);
+  }
+
+  // turbulence, octaves, omega, lambda, noise_generator, agate_turb, control0 and control1; false for any
+  // other item.
+  bool modifier(const Node& n, size_t& i, Refusals& refusals) {
+    const Item& it = n.items[i];
+    if (it.kind != Item::Kind::Keyword) return false;
+    const std::string_view w = it.word;
+    if (w != "turbulence" && w != "octaves" && w != "omega" && w != "lambda" && w != "noise_generator" &&
+        w != "agate_turb" && w != "control0" && w != "control1") {
+      return false;
+    }
+    const Value* v = valueAfter(n, i);
+    if (!v || !v->numeric() || (w != "turbulence" && v->type != Value::Type::Float)) {
+      throw ParseError(it.loc, "'" + std::string(w) + (w == "turbulence" ? "' needs a float or a vector" : "' needs a float"));
+    }
+    const double x = v->v[0];
+    Turbulence& t = args.turbulence;
+    if (w == "turbulence") {
+      t.amount = vec3(*v);
+    } else if (w == "octaves") {
+      t.octaves = std::clamp(int(x), 1, 10);  // POV-Ray's limits
+    } else if (w == "omega") {
+      t.omega = float(x);
+    } else if (w == "lambda") {
+      t.lambda = float(x);
+    } else if (w == "agate_turb") {
+      args.agateTurbulence = x;
+    } else if (w == "control0" || w == "control1") {
+      (w == "control0" ? args.control0 : args.control1) = x;
+    } else if (x == 3) {
+      refusals.refuse(it.loc, "noise_generator 3");
+    } else {
+      args.noise.own = x < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
+    }
+    modified = true;
+    return true;
+  }
+
+  // The pattern made again with the modifiers read after it.
+  void finish(std::shared_ptr<const Pattern>& pattern, const SourceLoc& at, Refusals& refusals) const {
+    if (!modified || !pattern) return;
+    if (!kind) {
+      refusals.refuse(at, "turbulence on a pattern of an earlier block");
+      return;
+    }
+    pattern = makePattern(*kind, args);
+  }
+};
 
 }  // namespace
 
@@ -173,7 +232,8 @@ void readMap(const Node& n, std::vector<MapEntry>& map, Refusals& refusals) {
   std::stable_sort(map.begin(), map.end(), [](const MapEntry& a, const MapEntry& b) { return a.value < b.value; });
 }
 
-void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals) {
+void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vector<TransformStep>& steps,
+                      Refusals& refusals) {
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     const bool blocks = p.pattern && p.pattern->blocks() > 0;
@@ -192,7 +252,7 @@ void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, R
       if (k == "pigment" && blocks && p.list.size() < size_t(p.pattern->blocks())) {
         p.list.push_back(nestedPigment(*it.node, refusals));
       } else if (k == "pigment") {
-        readPigment(*it.node, p, steps, refusals);  // an identifier, modified by what follows
+        readPigmentItems(*it.node, p, draft, steps, refusals);  // an identifier, modified by what follows
       } else if (k == "color_map" || k == "colour_map" || k == "pigment_map") {
         p.map.clear();
         readMap(*it.node, p.map, refusals);
@@ -206,27 +266,26 @@ void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, R
       continue;
     }
     const std::string_view w = it.word;
-    if (const PatternKind* kind = patternKind(w)) {
-      PatternArgs args;
-      if (kind->needsVector) {
-        const Value* v = valueAfter(n, i);
-        if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(w) + "' needs a vector");
-        args.vector = vec3(*v);
-        args.hasVector = true;
-      }
+    if (std::unique_ptr<Pattern> pattern = draft.start(n, i, refusals)) {
       const Rgbft keep = p.solid;
       p = Pigment{};
       p.solid = keep;
-      readControls(n, args);
-      p.pattern = kind->make(args);
+      p.pattern = std::move(pattern);
+      p.wave = draft.kind->wave;
       continue;
     }
-    if (w == "quick_color" || w == "quick_colour" || isControl(it)) {
+    if (w == "quick_color" || w == "quick_colour") {
       valueAfter(n, i);
-    } else if (!readWave(n, i, p)) {
+    } else if (!readWave(n, i, p) && !draft.modifier(n, i, refusals)) {
       refusals.refuse(it.loc, w);
     }
   }
+}
+
+void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals) {
+  PatternDraft draft;
+  readPigmentItems(n, p, draft, steps, refusals);
+  draft.finish(p.pattern, n.loc, refusals);
   if (p.pattern && p.pattern->blocks() == 0 && p.map.empty()) refusals.refuse(n.loc, "a pattern's default color_map");
   while (p.pattern && p.list.size() < size_t(p.pattern->blocks())) {
     p.list.push_back(solidPigment({p.pattern->defaultBlock(int(p.list.size())), 0, 0}));
@@ -286,10 +345,10 @@ void readFinish(const Node& n, PovFinish& f, Refusals& refusals) {
 }
 
 // slope_map entries `[value, <height, slope>]`, or a slope_map identifier.
-void readSlopeMap(const Node& n, std::vector<SlopeEntry>& slopes, Refusals& refusals) {
+void readSlopeMap(const Node& n, std::vector<SlopeEntry>& slopes) {
   for (const Item& it : n.items) {
     if (it.kind == Item::Kind::Node && it.node->keyword == "slope_map") {
-      readSlopeMap(*it.node, slopes, refusals);
+      readSlopeMap(*it.node, slopes);
       continue;
     }
     const std::vector<Item>* e = it.kind == Item::Kind::Node && it.node->keyword == "[" ? &it.node->items : nullptr;
@@ -304,17 +363,18 @@ void readSlopeMap(const Node& n, std::vector<SlopeEntry>& slopes, Refusals& refu
 }
 
 // `normal { [identifier] pattern [amount] modifiers… }` (POV-Ray 3.7 manual, "Normal").
-void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, Refusals& refusals) {
+void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::vector<TransformStep>& steps,
+                     Refusals& refusals) {
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     if (readTransform(n, i, steps, refusals)) continue;
     if (it.kind == Item::Kind::Node) {
       const std::string_view k = it.node->keyword;
       if (k == "normal" && !(normal.pattern && normal.pattern->blocks() > 0)) {
-        readNormal(*it.node, normal, steps, refusals);  // an identifier, modified by what follows
+        readNormalItems(*it.node, normal, draft, steps, refusals);  // an identifier, modified by what follows
       } else if (k == "slope_map") {
         normal.slopes.clear();
-        readSlopeMap(*it.node, normal.slopes, refusals);
+        readSlopeMap(*it.node, normal.slopes);
       } else {
         refusals.refuse(it, "normal");  // normal_map, a block pattern's list of normals
       }
@@ -325,16 +385,14 @@ void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps
       continue;
     }
     const std::string_view w = it.word;
-    if (const PatternKind* kind = patternKind(w)) {
-      PatternArgs args;
-      if (kind->needsVector) {
-        const Value* v = valueAfter(n, i);
-        if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(w) + "' needs a vector");
-        args.vector = vec3(*v);
-        args.hasVector = true;
-      }
-      readControls(n, args);
-      normal.pattern = kind->make(args);
+    // POV-Ray bends the normal by formulas of their own for these, not by their values' slope.
+    if (w == "bumps" || w == "dents" || w == "wrinkles" || w == "ripples" || w == "waves" || w == "facets") {
+      refusals.refuse(it.loc, w);
+      continue;
+    }
+    if (std::unique_ptr<Pattern> pattern = draft.start(n, i, refusals)) {
+      normal.pattern = std::move(pattern);
+      normal.wave = draft.kind->wave;
       const Value* amount = valueAfter(n, i);
       normal.amount = amount ? amount->v[0] : 0.5;
       continue;
@@ -343,15 +401,19 @@ void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps
       const Value* v = valueAfter(n, i);
       if (!v || v->type != Value::Type::Float) throw ParseError(it.loc, "'" + std::string(w) + "' needs a float");
       (w == "bump_size" ? normal.amount : normal.accuracy) = v->v[0];
-    } else if (isControl(it)) {
-      valueAfter(n, i);
     } else if (w == "no_bump_scale") {
       const Value* v = i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value ? valueAfter(n, i) : nullptr;
       normal.bumpScale = v && v->v[0] == 0;
-    } else if (!readWave(n, i, normal)) {
+    } else if (!readWave(n, i, normal) && !draft.modifier(n, i, refusals)) {
       refusals.refuse(it.loc, w);
     }
   }
+}
+
+void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, Refusals& refusals) {
+  PatternDraft draft;
+  readNormalItems(n, normal, draft, steps, refusals);
+  draft.finish(normal.pattern, n.loc, refusals);
 }
 
 FinishTerms finishTerms(const PovFinish& f, double ior) {
@@ -404,6 +466,7 @@ std::shared_ptr<const Texture> subTexture(const Node& n, const Surface& defaults
 std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Surface& defaults, Refusals& refusals) {
   auto tp = std::make_shared<TexturePattern>();
   Pigment& selector = tp->selector;
+  PatternDraft draft;
   std::vector<TransformStep> steps;
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
@@ -426,23 +489,14 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
         selector.map.push_back({e.node->items[0].value.v[0], solidPigment({Color(float(tp->textures.size())), 0, 0})});
         tp->textures.push_back(subTexture(body, defaults, refusals));
       }
-    } else if (it.kind == Item::Kind::Keyword && patternKind(it.word)) {
-      const PatternKind* kind = patternKind(it.word);
-      PatternArgs args;
-      if (kind->needsVector) {
-        const Value* v = valueAfter(n, i);
-        if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a vector");
-        args.vector = vec3(*v);
-        args.hasVector = true;
-      }
-      readControls(n, args);
-      selector.pattern = kind->make(args);
-    } else if (isControl(it)) {
-      valueAfter(n, i);
-    } else if (!readWave(n, i, selector)) {
+    } else if (std::unique_ptr<Pattern> pattern = draft.start(n, i, refusals)) {
+      selector.pattern = std::move(pattern);
+      selector.wave = draft.kind->wave;
+    } else if (!readWave(n, i, selector) && !draft.modifier(n, i, refusals)) {
       refusals.refuse(it, "texture");
     }
   }
+  draft.finish(selector.pattern, n.loc, refusals);
   const int blocks = selector.pattern ? selector.pattern->blocks() : 0;
   for (int b = 0; b < blocks; ++b) selector.list.push_back(solidPigment({Color(float(b)), 0, 0}));
   if (!selector.pattern) {
@@ -471,24 +525,27 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
   } else if (k == "texture" && texturePatternIn(n)) {
     top.pattern = readTexturePattern(n, defaults, refusals);
   } else if (k == "texture" || k == "material") {
+    // A transform moves every layer the block has read so far (a layered texture identifier's too), and the
+    // normals they have by then.
+    const size_t first = s.layers.size() - 1;
     for (size_t i = 0; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
-      std::vector<TransformStep> moved;
+      std::vector<TransformStep> steps;
       if (it.kind == Item::Kind::Node) {
         readSurfaceItem(*it.node, s, defaults, refusals);
-      } else if (readTransform(n, i, moved, refusals)) {
-        // A texture's transform moves its pigment, and its normal if it has one by then.
-        SurfaceLayer& layer = s.layers.back();
-        layer.steps.insert(layer.steps.end(), moved.begin(), moved.end());
-        if (layer.normal) layer.normalSteps.insert(layer.normalSteps.end(), moved.begin(), moved.end());
-      } else {
+      } else if (!readTransform(n, i, steps, refusals)) {
         refusals.refuse(it, k);
+      }
+      for (size_t l = first; l < s.layers.size(); ++l) {
+        SurfaceLayer& layer = s.layers[l];
+        layer.steps.insert(layer.steps.end(), steps.begin(), steps.end());
+        if (layer.normal) layer.normalSteps.insert(layer.normalSteps.end(), steps.begin(), steps.end());
       }
     }
   } else if (k == "layered texture") {
-    // Each layer starts as POV-Ray's default texture, on top of the ones before.
+    // Each layer starts as the #default texture, on top of the ones before.
     for (size_t i = 0; i < n.items.size(); ++i) {
-      if (i > 0) s.layers.emplace_back();
+      if (i > 0) s.layers.push_back(defaults.layers.back());
       readSurfaceItem(*n.items[i].node, s, defaults, refusals);
     }
   } else if (k == "interior") {

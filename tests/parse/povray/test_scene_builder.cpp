@@ -198,6 +198,48 @@ plane { y, 0 pigment { White } normal { quilted 0.7 scale 0.5 } }
         "scene.pov:3:46: error: a slope_map entry is [value, <height, slope>]");
 }
 
+TEST_CASE("povray scene: a transform after a layered texture moves every layer", "[povray]") {
+  const SceneDesc s = scene(R"(
+#declare Layers = texture { pigment { gradient x color_map { [0 Black] [1 White] } } }
+                  texture { pigment { gradient x color_map { [0 rgbt <1, 0, 0, 1>] [1 rgbt <1, 0, 0, 1>] } } }
+plane { y, 0 texture { Layers scale 4 } }
+)");
+  REQUIRE(s.objects.size() == 1);
+  // The bottom gradient scaled by 4 too: at x = 1 it reads 0.25 under the clear top layer.
+  const Material m = s.objects[0].texture->at(glm::dvec3(1, 0, 0));
+  CHECK(m.pigment.g == Approx(0.25f));
+}
+
+TEST_CASE("povray scene: each layer of a layered texture starts as the #default texture", "[povray]") {
+  const SceneDesc s = scene(R"(
+#default { finish { ambient 0.3 diffuse 0.9 } }
+plane { y, 0 texture { pigment { White } finish { diffuse 0.2 } } texture { pigment { rgb 0.5 } } }
+plane { y, 0 texture { pigment { White } finish { diffuse 0.2 } } translate x texture { pigment { rgb 0.5 } } }
+)");
+  REQUIRE(s.objects.size() == 2);
+  for (const ObjectDesc& o : s.objects) {
+    // The opaque top layer, with #default's diffuse 0.9 on its grey.
+    CHECK(o.texture->at(glm::dvec3(0)).diffuse == Color(0.45f));
+  }
+}
+
+TEST_CASE("povray scene: turbulence and its modifiers may follow the map; noise_generator 3 is refused", "[povray]") {
+  const SceneDesc s = scene(R"(
+#declare Grain = pigment { wood color_map { [0 Black] [1 White] } }
+plane { y, 0 pigment { Grain turbulence 0.5 octaves 3 } }
+plane { y, 0 pigment { Grain } }
+global_settings { noise_generator 1 }
+)");
+  REQUIRE(s.objects.size() == 2);
+  // Away from the z axis the turbulence bends the rings: the two planes differ there.
+  const glm::dvec3 p(0.3, 0, 0.2);
+  CHECK(s.objects[0].texture->at(p).pigment.r != Approx(s.objects[1].texture->at(p).pigment.r));
+  CHECK(failure("plane { y, 0 pigment { bozo noise_generator 3 color_map { [0 Red] [1 Blue] } } }\n") ==
+        "scene.pov:3:29: error: 'noise_generator 3' is not supported yet");
+  CHECK(failure("plane { y, 0 pigment { bozo octaves <1, 2, 3> color_map { [0 Red] [1 Blue] } } }\n") ==
+        "scene.pov:3:29: error: 'octaves' needs a float");
+}
+
 TEST_CASE("povray scene: min_extent, max_extent and trace ask the object; a macro's arguments may omit commas",
           "[povray]") {
   // What POV-Ray printed for the same lines.

@@ -14,9 +14,11 @@
 
 namespace rt::povray {
 
-// The first thing met that POV-Ray has and raytrace cannot draw yet; reading goes on, so that a real mistake
-// later in the file is still reported as one.
+// What reading one file's surfaces shares: the first thing met that POV-Ray has and raytrace cannot draw yet
+// (reading goes on, so that a real mistake later in the file is still reported as one), and the scene's noise
+// generator, which patterns read when drawn since global_settings may set it after them.
 struct Refusals {
+  std::shared_ptr<NoiseGenerator> sceneNoise = std::make_shared<NoiseGenerator>(NoiseGenerator::RangeCorrected);
   struct Unsupported {
     SourceLoc loc;
     std::string what;

@@ -1,0 +1,203 @@
+// POV-Ray 3.7's noise, turbulence and the patterns built on them, against values POV-Ray itself printed at
+// these points (#write of f_noise3d, vturbulence and pattern functions; docs/povray-noise.md tells how).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <iterator>
+
+#include "raytrace/surface/noise.hpp"
+#include "raytrace/surface/pattern.hpp"
+
+namespace rt {
+namespace {
+
+// Six points near the origin, four farther out, one beyond x = -10000 (where the lattice's shift by 10000
+// turns negative) and a lattice point.
+const glm::dvec3 kPoints[] = {
+    {-0.4762, 0.5977, 4.2421},
+    {-0.3435, 0.0784, 0.8738},
+    {-3.1534, 0.1191, 1.2988},
+    {2.9298, -4.0588, -1.966},
+    {-4.0933, 3.0964, 1.9344},
+    {-4.5812, 4.8219, 4.6476},
+    {18.4707, 13.8675, -41.1007},
+    {-58.1999, 3.4058, -52.8539},
+    {-37.175, -30.9668, -56.3901},
+    {-4.3279, -7.1363, 41.0913},
+    {-12345.678, 23.25, -0.5},
+    {3.0, -2.0, 7.0}};
+
+constexpr double kNoise1[] = {
+    0.4194049753959088, 0.5430105933239014, 0.9573299794957869, 0.508270654833117,
+    0.3921482629886519, 0.509347630039657, 0, 0.1126939455530191,
+    0.3926445378392746, 0.2109641629167835, 0.2803490205159974, 0.2998095};
+
+constexpr double kNoise2[] = {
+    0.4760541202190427, 0.5366030515457663, 0.7395598142008919, 0.5195854904896133,
+    0.4627022610122817, 0.5201130530625329, 0.2683549005792424, 0.3258099371923095,
+    0.4629453641361788, 0.3739481751006146, 0.4079367514154607, 0.41746958055069};
+
+const glm::dvec3 kVectorNoise[] = {
+    {-0.08059502460409119, 0.0384670354464601, -0.3397060767771825},
+    {0.0430105933239015, -0.6734663294729881, -0.1498906312458909},
+    {0.4573299794957869, 0.2587615784366099, 0.1612986540038585},
+    {0.008270654833116901, -0.1118565472776681, -0.5121758990176006},
+    {-0.1078517370113481, 0.3634754775575171, -0.0977643234264348},
+    {0.009347630039657001, 0.3220455096678675, 0.1467345645545375},
+    {-0.5045957431008119, -0.1011886632769768, 0.1406753100441715},
+    {-0.3873060544469809, -0.3877475708651417, 0.0528972344412267},
+    {-0.1073554621607255, -0.0789522294036227, -0.1685751525631102},
+    {-0.2890358370832165, -0.2805984696096853, -0.020437654233939},
+    {-0.2196509794840026, 0.008874410364360701, -0.0257449123687818},
+    {-0.2001905, 0.4806515, 0.3672005}};
+
+const glm::dvec3 kTurbulence[] = {
+    {0.1067461132289888, -0.0376348459082752, -0.3649162883365694},
+    {-0.0183023865351926, -0.4918505354203028, -0.3223129579422677},
+    {0.4373319588040852, 0.1264560481476157, 0.2184749079142646},
+    {0.1320737343308773, 0.0804092119458866, -0.4451392425344263},
+    {-0.2844708364867058, 0.662834395669617, -0.5046971230053569},
+    {-0.1694525886540149, 0.1861093293155211, -0.1244624989040223},
+    {-0.6468636000603525, -0.1635317399601235, 0.2290579153738975},
+    {0.0435373126300318, -0.1562033722226402, -0.0413606540395084},
+    {-0.3093917919828942, -0.453086495131805, -0.3166371884763443},
+    {-0.2726980811950493, -0.0433863758812957, -0.2213919354144842},
+    {-0.3965600465941918, -0.0622448367586849, 0.0715606096846981},
+    {-0.2686354843258842, 0.1216984149203268, 0.281160846396366}};
+
+// function { pattern { … } } at the same points, POV-Ray's default noise_generator 2 unless named.
+constexpr double kBozo[] = {
+    0.4760541202190427, 0.5366030515457663, 0.7395598142008919, 0.5195854904896133,
+    0.4627022610122817, 0.5201130530625329, 0.2683549005792424, 0.3258099371923095,
+    0.4629453641361788, 0.3739481751006146, 0.4079367514154607, 0.41746958055069};
+
+constexpr double kGranite[] = {
+    0.4825682729638164, 0.2203821904695763, 0.1623807698625863, 0.3187232108787209,
+    0.1275150640413209, 0.1732731505346611, 0.5904238505413811, 0.665039693687048,
+    0.6047377958576702, 0.2818066341288234, 0.306404120353357, 0.3111555158614887};
+
+constexpr double kWrinkles[] = {
+    0.4250457348714551, 0.6100300255039135, 0.7023374769373182, 0.5278436919082373,
+    0.4164143105812673, 0.5966561230342198, 0.1543506321529682, 0.4948756732460861,
+    0.3807619901198498, 0.2844281578516402, 0.4725334198814519, 0.3863157132383022};
+
+constexpr double kAgate[] = {
+    0.9880630220603375, 0.0024668026128942, 0.9534225384954652, 0.5453681281347057,
+    0.1485027627592082, 0.2312882318358961, 0.5282220357469594, 0.5970990346956887,
+    0.7820600211511316, 0.4083396550314772, 0.7384029384612356, 0.9762403514778989};
+
+constexpr double kGranite1[] = {
+    0.5292279588859343, 0.1981893985684925, 0.1905180404608252, 0.3540620364648274,
+    0.1246657658885556, 0.1924852603112909, 0.6082729793820058, 0.6858732187969514,
+    0.587792164242693, 0.3163809727286676, 0.3256320868015123, 0.2987703781249999};
+
+constexpr double kWrinkles1[] = {
+    0.3918642055577036, 0.5806381803978675, 0.6748571642563194, 0.496749874412258,
+    0.383012957571125, 0.5669873078737838, 0.1179036313552681, 0.4655921807156408,
+    0.3518805496308483, 0.248293569395205, 0.4402942095323497, 0.3522910633789062};
+
+constexpr double kBozoTurbulence[] = {
+    0.5239841533255235, 0.5334473865638821, 0.6614622641347889, 0.4936885476741441,
+    0.5299193502787857, 0.5377940295073642, 0.4916078398866357, 0.3926040807634713,
+    0.4874046147635586, 0.2507664193996071, 0.4124493479855202, 0.4385394395420849};
+
+constexpr double kWood[] = {
+    0.0498201455249294, 0.1168283490522974, 0.8344128767889032, 0.9444697525376777,
+    0.8936639723151099, 0.478281773925668, 0.0591593896967813, 0.0148464079537036,
+    0.0133288140964396, 0.4618925276097072, 0.9692630543690406, 0.547965888598398};
+
+constexpr double kMarble[] = {
+    0.09147030217047949, 0.332056937394937, 0.7476114227519033, 0.3858606395639348,
+    0.4344502408260125, 0.0534738543894409, 0.7350197054871925, 0.0025887440280745,
+    0.3903072817914879, 0.1706477185970354, 0.8887899850777434, 0.5496474850719362};
+
+constexpr double kDents[] = {
+    0.1078869672110173, 0.1545110038932262, 0.404501292838987, 0.1402720178502434,
+    0.09906149207920451, 0.1406997285841237, 0.0193254044496664, 0.0345854139774296,
+    0.0992177144396353, 0.0522918798344718, 0.0678857310590861, 0.072756953633555};
+
+constexpr double kLeopard[] = {
+    0.06883625639917031, 0.0287086460967569, 0.1329482782901657, 0.0007326285965715,
+    0.3576861273618027, 0.1112232563292849, 0.0804815527319311, 0.353351949855861,
+    0.1326239709527803, 0.0006137688898585, 0.058738803395015, 0.0013737109403033};
+
+constexpr double kExact = 1e-11;  // POV-Ray printed 16 decimals; the sums agree to the last few bits
+
+TEST_CASE("noise: both generators and the vector noise give POV-Ray's values", "[noise]") {
+  for (size_t i = 0; i < std::size(kPoints); ++i) {
+    INFO(i);
+    CHECK(noise(kPoints[i], NoiseGenerator::Original) == Approx(kNoise1[i]).margin(kExact));
+    CHECK(noise(kPoints[i], NoiseGenerator::RangeCorrected) == Approx(kNoise2[i]).margin(kExact));
+    const glm::dvec3 v = vectorNoise(kPoints[i]);
+    for (int c = 0; c < 3; ++c) CHECK(v[c] == Approx(kVectorNoise[i][c]).margin(kExact));
+  }
+}
+
+TEST_CASE("noise: turbulence with POV-Ray's single-precision omega and lambda", "[noise]") {
+  Turbulence t;
+  t.octaves = 4;
+  t.omega = 0.6f;
+  t.lambda = 2.3f;
+  for (size_t i = 0; i < std::size(kPoints); ++i) {
+    INFO(i);
+    const glm::dvec3 v = turbulentOffset(kPoints[i], t);
+    for (int c = 0; c < 3; ++c) CHECK(v[c] == Approx(kTurbulence[i][c]).margin(kExact));
+  }
+}
+
+void checkPattern(const char* name, const PatternArgs& args, const double* expected, double margin = kExact) {
+  const PatternKind* kind = patternKind(name);
+  REQUIRE(kind != nullptr);
+  const auto pattern = makePattern(*kind, args);
+  for (size_t i = 0; i < std::size(kPoints); ++i) {
+    INFO(name << " at point " << i);
+    // POV-Ray's pattern functions wrap the value as a ramp wave does.
+    double v = std::fmod(pattern->value(kPoints[i]), 1.00001);
+    if (v < 0) v -= std::floor(v);
+    CHECK(v == Approx(expected[i]).margin(margin));
+  }
+}
+
+TEST_CASE("noise patterns: bozo, granite, wrinkles, agate, dents and leopard", "[noise]") {
+  PatternArgs a;
+  checkPattern("bozo", a, kBozo);
+  checkPattern("spotted", a, kBozo);
+  checkPattern("bumps", a, kBozo);
+  checkPattern("dents", a, kDents);
+  checkPattern("leopard", a, kLeopard);
+  checkPattern("granite", a, kGranite);
+  checkPattern("wrinkles", a, kWrinkles);
+  a.agateTurbulence = 0.5;
+  checkPattern("agate", a, kAgate);
+  PatternArgs original;
+  original.noise.own = NoiseGenerator::Original;
+  checkPattern("granite", original, kGranite1);
+  checkPattern("wrinkles", original, kWrinkles1);
+}
+
+TEST_CASE("noise patterns: turbulence displaces bozo, and marble and wood take it their own ways", "[noise]") {
+  PatternArgs a;
+  a.turbulence.amount = {0.5, 0.2, 0.1};
+  checkPattern("bozo", a, kBozoTurbulence);
+  a.turbulence.amount = {0.5, 0.3, 0.2};
+  checkPattern("wood", a, kWood);
+  a.turbulence = Turbulence{};
+  a.turbulence.amount = glm::dvec3(0.5);
+  a.turbulence.octaves = 3;
+  a.turbulence.omega = 0.7f;
+  a.turbulence.lambda = 2.5f;
+  checkPattern("marble", a, kMarble);
+}
+
+TEST_CASE("noise: the scene's generator is read when the pattern is drawn", "[noise]") {
+  auto scene = std::make_shared<NoiseGenerator>(NoiseGenerator::RangeCorrected);
+  PatternArgs a;
+  a.noise.scene = scene;
+  const auto bozo = makePattern(*patternKind("bozo"), a);
+  CHECK(bozo->value(kPoints[0]) == Approx(kNoise2[0]).margin(kExact));
+  *scene = NoiseGenerator::Original;
+  CHECK(bozo->value(kPoints[0]) == Approx(kNoise1[0]).margin(kExact));
+}
+
+}  // namespace
+}  // namespace rt
