@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "raytrace/surface/patterns.hpp"
+
 namespace rt::povray {
 
 void Refusals::refuse(const Item& it, std::string_view otherwise) {
@@ -385,8 +387,9 @@ void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::ve
       continue;
     }
     const std::string_view w = it.word;
-    // POV-Ray bends the normal by formulas of their own for these, not by their values' slope.
-    if (w == "bumps" || w == "dents" || w == "wrinkles" || w == "ripples" || w == "waves" || w == "facets") {
+    // POV-Ray bends the normal by formulas of their own for these, not by their values' slope (bumps and dents:
+    // readNormal).
+    if (w == "wrinkles" || w == "ripples" || w == "waves" || w == "facets") {
       refusals.refuse(it.loc, w);
       continue;
     }
@@ -413,7 +416,13 @@ void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::ve
 void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, Refusals& refusals) {
   PatternDraft draft;
   readNormalItems(n, normal, draft, steps, refusals);
-  draft.finish(normal.pattern, n.loc, refusals);
+  const std::string_view kind = draft.kind ? draft.kind->name : "";
+  if (kind == "bumps" || kind == "dents") {
+    if (draft.modified) refusals.refuse(n.loc, "turbulence on a " + std::string(kind) + " normal");
+    normal.pattern = kind == "bumps" ? makeBumpsNormal(draft.args) : makeDentsNormal(draft.args);
+  } else {
+    draft.finish(normal.pattern, n.loc, refusals);
+  }
 }
 
 FinishTerms finishTerms(const PovFinish& f, double ior) {
