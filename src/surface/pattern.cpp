@@ -44,6 +44,10 @@ class Turbulent final : public Pattern {
   }
   int blocks() const override { return base_->blocks(); }
   Color defaultBlock(int i) const override { return base_->defaultBlock(i); }
+  bool hasBump() const override { return base_->hasBump(); }
+  glm::dvec3 bump(const glm::dvec3& p) const override {
+    return base_->bump(p + turbulentOffset(p, turbulence_) * turbulence_.amount);
+  }
 
  private:
   std::unique_ptr<Pattern> base_;

@@ -418,8 +418,8 @@ void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps
   readNormalItems(n, normal, draft, steps, refusals);
   const std::string_view kind = draft.kind ? draft.kind->name : "";
   if (kind == "bumps" || kind == "dents") {
-    if (draft.modified) refusals.refuse(n.loc, "turbulence on a " + std::string(kind) + " normal");
-    normal.pattern = kind == "bumps" ? makeBumpsNormal(draft.args) : makeDentsNormal(draft.args);
+    const PatternKind special{kind, false, kind == "bumps" ? makeBumpsNormal : makeDentsNormal};
+    normal.pattern = makePattern(special, draft.args);
   } else {
     draft.finish(normal.pattern, n.loc, refusals);
   }

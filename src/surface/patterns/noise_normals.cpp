@@ -1,6 +1,7 @@
 // bumps and dents as normals: POV-Ray bends the normal by its vector noise v(p) rather than by the slope of the
 // pigments' values (POV-Ray 3.7 manual, "Bumps", "Dents": "a specialized normal perturbation function"). Fitted
-// to POV-Ray's renders: bumps bends n to n + amount·v(p), dents to n + amount·noise(p)³·v(p).
+// to POV-Ray's renders: bumps bends n to n + amount·v(p), dents to n + amount·noise(p)³·v(p); turbulence moves p
+// first (makePattern).
 #include "raytrace/surface/patterns.hpp"
 
 namespace rt {

@@ -174,8 +174,9 @@ plane { y, 0 pigment { White } normal { quilted 0.7 scale 0.5 } }
 plane { y, 0 pigment { White } normal { bumps 1 } }
 plane { y, 0 pigment { White } normal { bumps 0.6 scale 0.3 } }
 plane { y, 0 pigment { White } normal { dents 1 } }
+plane { y, 0 pigment { White } normal { bumps 1 turbulence 0.5 } }
 )");
-  REQUIRE(s.objects.size() == 12);
+  REQUIRE(s.objects.size() == 13);
   const glm::dvec3 up(0, 1, 0), left(-1, 1, 0), right(1, 1, 0), p(0.5, 0, 0.45);
   CHECK(lit(s, 0, p, up) == Approx(0.9978).margin(1e-4));
   CHECK(lit(s, 0, p, left) == Approx(0.7526).margin(1e-4));
@@ -201,8 +202,8 @@ plane { y, 0 pigment { White } normal { dents 1 } }
   CHECK(lit(s, 11, {0.05, 0, 0.45}, up) == Approx(0.9992).margin(1e-4));
   CHECK(lit(s, 11, {0.05, 0, 0.45}, glm::dvec3(0, 1, 1)) == Approx(0.6777).margin(1e-4));
   CHECK(failure("plane { y, 0 normal { wrinkles 0.4 } }\n") == "scene.pov:3:23: error: 'wrinkles' is not supported yet");
-  CHECK(failure("plane { y, 0 normal { bumps 0.4 turbulence 1 } }\n") ==
-        "scene.pov:3:14: error: 'turbulence on a bumps normal' is not supported yet");
+  CHECK(lit(s, 12, {0.95, 0, 0.45}, up) == Approx(0.7177).margin(1e-4));
+  CHECK(lit(s, 12, {0.95, 0, 0.45}, right) == Approx(0.0908).margin(1e-4));
   CHECK(failure("plane { y, 0 normal { gradient x normal_map { [0 gradient y] } } }\n") ==
         "scene.pov:3:34: error: 'normal_map' is not supported yet");
   CHECK(failure("plane { y, 0 normal { gradient x slope_map { [0] } } }\n") ==
