@@ -263,16 +263,17 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
   if (options_.normals) return Color(hit.normal) * 0.5f + 0.5f;
 
   const Vec3<T> v = -ray.dir;
-  const Vec3<T> n = viewerSide(hit, ray);  // shading normal
+  const Vec3<T> side = viewerSide(hit, ray);
+  Vec3<T> n = side;  // the shading normal: the surface's, or bent by the texture's normal
   std::optional<Vec3<T>> refracted;
   Material textured;
-  const Material& m = hit.object->materialAt(hit.point, textured);
+  const Material& m = hit.object->materialAt(hit.point, textured, n);
   const Weights w = split(ray, hit, m, n, record, refracted);
   Color ambientLight(0);
   Local local;
   if (w.local > 0) {
-    local = direct(hit, m, n, v, record, shadows);
-    ambientLight = w.local * ambient(hit, m, n, path);
+    local = direct(hit, m, side, n, v, record, shadows);
+    ambientLight = w.local * ambient(hit, m, side, path);
   }
   local.diffuse *= w.local;
   local.specular *= w.local;
@@ -296,7 +297,8 @@ Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Material& m
   const float fresnel = options_.fresnel ? schlick(float(glm::dot(n, -ray.dir)), m.ior) : 0.0f;
   Weights w = weights(m, fresnel, conventions_.reflectionMixes);
   if (w.transmission > 0) {
-    refracted = refractDirection(ray.dir, hit.normal, m.ior);
+    // The outward normal as the shading normal bends it: hit.normal itself where nothing bends it.
+    refracted = refractDirection(ray.dir, glm::dot(ray.dir, hit.normal) <= T(0) ? n : -n, m.ior);
     if (!refracted) {  // total internal reflection: the transmitted share is reflected (§c.4)
       w.reflection += w.transmission;
       w.transmission = 0;
@@ -380,9 +382,10 @@ Color Tracer<T>::gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path
 }
 
 template <class T>
-typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m, const Vec3<T>& n,
-                                            const Vec3<T>& v, RayRecord* record,
+typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m, const Vec3<T>& side,
+                                            const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
                                             const std::optional<ShadowRay>* shadows) {
+  const bool bent = n != side;
   // Summed in locals, not in the returned struct: that one lives in the caller's memory, and each sum would
   // wait for the store before it.
   Color diffuse(0), specular(0);
@@ -393,7 +396,7 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m
     const ShadowRay* s = nullptr;
     if (shadows) {
       if (shadows[i]) s = &*shadows[i];
-    } else if (shadowRay(hit, n, light, own)) {
+    } else if (shadowRay(hit, side, light, own)) {
       if (filteredShadows_ && !light.shadowless) {
         lightColor = light.color * transmittance(own.ray, own.segment);
         own.occluded = lightColor == Color(0);
@@ -411,7 +414,9 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m
       const double distance = glm::length(toPoint);
       lightColor *= light.shape->at(toPoint / distance, distance);
     }
-    const float nl = std::min(s->nl, 1.0f);
+    // A bent normal turned away from the light takes none of it (the shadow ray leaves the true surface).
+    const float nl = std::min(bent ? float(glm::dot(n, s->l)) : s->nl, 1.0f);
+    if (bent && nl <= 0.0f) continue;
     diffuse += lightColor * m.diffuse * (m.brilliance == 1.0f ? nl : std::pow(nl, m.brilliance));
     if (m.specular == Color(0)) continue;  // a matte surface: no power to take
     const float factor = options_.brdf == Brdf::BlinnPhong ? m.lobe == Material::Lobe::Mirror

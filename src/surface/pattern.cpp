@@ -22,6 +22,7 @@ const PatternKind* patternKind(std::string_view name) {
       {"marble", false, makeMarble, kTriangle, true},
       {"onion", false, makeOnion},
       {"planar", false, makePlanar},
+      {"quilted", false, makeQuilted},
       {"radial", false, makeRadial},
       {"spherical", false, makeSpherical},
       {"spotted", false, makeBozo},
@@ -45,6 +46,10 @@ class Turbulent final : public Pattern {
   }
   int blocks() const override { return base_->blocks(); }
   Color defaultBlock(int i) const override { return base_->defaultBlock(i); }
+  bool hasBump() const override { return base_->hasBump(); }
+  glm::dvec3 bump(const glm::dvec3& p) const override {
+    return base_->bump(p + turbulentOffset(p, turbulence_) * turbulence_.amount);
+  }
 
  private:
   std::unique_ptr<Pattern> base_;

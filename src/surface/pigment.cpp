@@ -27,6 +27,14 @@ double shaped(double v, Wave wave, double exponent) {
 
 }  // namespace
 
+// frequency and phase, then the value wrapped as POV-Ray wraps it: modulo 1.00001, which keeps 1 itself where
+// the pattern reaches it (and shows as a slow drift far from the origin, which POV-Ray's pictures have too).
+double waveValue(double raw, double frequency, double phase, Wave wave, double exponent) {
+  double v = std::fmod(raw * frequency + phase, 1.00001);
+  if (v < 0) v -= std::floor(v);
+  return shaped(v, wave, exponent);
+}
+
 Rgbft Pigment::at(const glm::dvec3& p) const {
   if (!pattern && !average) return solid;
   const glm::dvec3 q = glm::dvec3(fromTexture * glm::dvec4(p, 1));
@@ -46,11 +54,7 @@ Rgbft Pigment::at(const glm::dvec3& p) const {
     const size_t i = std::min(size_t(raw), list.size() - 1);
     return list[i]->at(q);
   }
-  // frequency and phase, then the value wrapped as POV-Ray wraps it: modulo 1.00001, which keeps 1 itself where
-  // the pattern reaches it (and shows as a slow drift far from the origin, which POV-Ray's pictures have too).
-  double v = std::fmod(raw * frequency + phase, 1.00001);
-  if (v < 0) v -= std::floor(v);
-  v = shaped(v, wave, exponent);
+  const double v = waveValue(raw, frequency, phase, wave, exponent);
   if (map.empty()) return solid;
   if (v <= map.front().value) return map.front().pigment->at(q);
   if (v >= map.back().value) return map.back().pigment->at(q);

@@ -42,8 +42,12 @@ Texture bounded(Texture t) {
     b.brilliance = m.brilliance;
   };
   for (const TextureLayer& layer : t.layers) {
+    t.bumpy = t.bumpy || layer.normal;
     if (layer.pattern) {
-      for (const auto& sub : layer.pattern->textures) take(sub->bound);
+      for (const auto& sub : layer.pattern->textures) {
+        take(sub->bound);
+        t.bumpy = t.bumpy || sub->bumpy;
+      }
       continue;
     }
     anyColour(*layer.pigment, [&](const Rgbft& c) {
@@ -69,15 +73,32 @@ Material blend(const Material& a, const Material& b, float t) {
   return m;
 }
 
-// The texture a texture pattern gives at p.
-Material patterned(const TexturePattern& tp, const glm::dvec3& p) {
-  const glm::dvec3 q = glm::dvec3(tp.fromTexture * glm::dvec4(p, 1));
+// Which of a texture pattern's textures q (in the pattern's space) takes, and how far toward the next one.
+std::pair<size_t, float> entryAt(const TexturePattern& tp, const glm::dvec3& q) {
   const double v = tp.selector.at(q).rgb.r;
   const size_t last = tp.textures.size() - 1;
   const size_t lo = std::min(size_t(std::max(0.0, std::floor(v))), last);
-  const float t = float(v - double(lo));
+  return {lo, lo < last ? float(v - double(lo)) : 0.0f};
+}
+
+// The texture a texture pattern gives at p.
+Material patterned(const TexturePattern& tp, const glm::dvec3& p) {
+  const glm::dvec3 q = glm::dvec3(tp.fromTexture * glm::dvec4(p, 1));
+  const auto [lo, t] = entryAt(tp, q);
   const Material a = tp.textures[lo]->at(q);
-  return t > 0 && lo < last ? blend(a, tp.textures[lo + 1]->at(q), t) : a;
+  return t > 0 ? blend(a, tp.textures[lo + 1]->at(q), t) : a;
+}
+
+// The normal a texture pattern gives at p: its textures' bent normals, blended as their colours are.
+glm::dvec3 patternedNormal(const TexturePattern& tp, const glm::dvec3& p, const glm::dmat3& toTexture, const glm::dvec3& n) {
+  const glm::dvec3 q = glm::dvec3(tp.fromTexture * glm::dvec4(p, 1));
+  const glm::dmat3 toPattern = glm::dmat3(tp.fromTexture) * toTexture;
+  const auto bentBy = [&](const Texture& sub) {
+    return sub.bumpy ? sub.bentInSpace(glm::dvec3(sub.fromWorld * glm::dvec4(q, 1)), glm::dmat3(sub.fromWorld) * toPattern, n) : n;
+  };
+  const auto [lo, t] = entryAt(tp, q);
+  const glm::dvec3 a = bentBy(*tp.textures[lo]);
+  return t > 0 ? glm::normalize(a + (bentBy(*tp.textures[lo + 1]) - a) * double(t)) : a;
 }
 
 }  // namespace
@@ -119,6 +140,19 @@ Material Texture::inSpace(const glm::dvec3& p) const {
     m.reflection = top.reflection * cover + m.reflection * (c.filter + c.transmit);
   }
   return m;
+}
+
+// POV-Ray lights each layer with its own normal; one normal serves the whole stack here, the top layer's that
+// has one (docs/povray-language.md, "Normals").
+glm::dvec3 Texture::bentInSpace(const glm::dvec3& p, const glm::dmat3& toTexture, const glm::dvec3& n) const {
+  for (auto layer = layers.rbegin(); layer != layers.rend(); ++layer) {
+    if (layer->normal) return layer->normal->bent(n, p, toTexture);
+    if (layer->pattern && std::any_of(layer->pattern->textures.begin(), layer->pattern->textures.end(),
+                                      [](const auto& sub) { return sub->bumpy; })) {
+      return patternedNormal(*layer->pattern, p, toTexture, n);
+    }
+  }
+  return n;
 }
 
 }  // namespace rt

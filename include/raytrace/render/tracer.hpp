@@ -128,10 +128,11 @@ template <class T> class Tracer {
   // The sum of what `count` stratified rays bring back, their random numbers keyed 0 … count − 1 under the
   // path's key; batches_[1 + path.bounce] keeps the rays, their colours and distances until the next call.
   Color gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path, int count);
-  // Diffuse and specular light from every light the point sees (§c.1, §c.7), before weighting. `n` is the
-  // shading normal on the viewer's side, `v` the unit vector to the viewer.
-  Local direct(const Hit<T>& hit, const Material& m, const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
-               const std::optional<ShadowRay>* shadows);
+  // Diffuse and specular light from every light the point sees (§c.1, §c.7), before weighting. `side` is the
+  // surface's normal on the viewer's side, `n` the shading normal (side, or bent by a texture's normal), `v`
+  // the unit vector to the viewer.
+  Local direct(const Hit<T>& hit, const Material& m, const Vec3<T>& side, const Vec3<T>& n, const Vec3<T>& v,
+               RayRecord* record, const std::optional<ShadowRay>* shadows);
   // The reflected and refracted light, weighted and tinted (§c.3, §c.4, §c.6), traced refraction first as the
   // course prints them (§a.3).
   Color secondary(const Ray<T>& ray, const Hit<T>& hit, const Material& m, const Vec3<T>& n, const Weights& w,

@@ -82,6 +82,13 @@ template <class T> class Object {
     scratch = texture_->at(glm::dvec3(point));
     return scratch;
   }
+  // The same, and the shading normal `normal` bent where the texture has a normal.
+  const Material& materialAt(const Vec3<T>& point, Material& scratch, Vec3<T>& normal) const {
+    if (!texture_) return material_;
+    scratch = texture_->at(glm::dvec3(point));
+    if (texture_->bumpy) normal = Vec3<T>(texture_->bent(glm::dvec3(point), glm::dvec3(normal)));
+    return scratch;
+  }
   void setTexture(std::shared_ptr<const Texture> texture) { texture_ = std::move(texture); }
   // Calls f(material) for every material a hit on this object can report: its own, or a group's parts'.
   // A textured object reports its texture's bound.

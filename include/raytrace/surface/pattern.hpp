@@ -21,6 +21,11 @@ class Pattern {
   virtual int blocks() const { return 0; }
   // A block pattern's colour for block i when the file gives none (as r, g, b).
   virtual Color defaultBlock(int) const { return Color(0); }
+  // Whether the pattern bends a normal by a formula of its own (quilted; bumps and dents as normals) rather
+  // than by its value's slope; bump(p) is then the vector, in the pattern's space, that the normal is bent
+  // against per unit of the normal's amount (surface/normal.hpp).
+  virtual bool hasBump() const { return false; }
+  virtual glm::dvec3 bump(const glm::dvec3&) const { return glm::dvec3(0); }
 };
 
 // How a continuous pattern's value is shaped before the map reads it (POV-Ray's wave modifiers).
@@ -51,6 +56,7 @@ struct PatternArgs {
   NoiseChoice noise;
   double agateTurbulence = 1;
   CrackleArgs crackle;
+  double control0 = 1, control1 = 1;  // quilted's, written among the pattern's modifiers
 };
 
 struct PatternKind {

@@ -21,6 +21,10 @@ std::unique_ptr<Pattern> makeLeopard(const PatternArgs&);
 std::unique_ptr<Pattern> makeMarble(const PatternArgs&);
 std::unique_ptr<Pattern> makeOnion(const PatternArgs&);
 std::unique_ptr<Pattern> makePlanar(const PatternArgs&);
+std::unique_ptr<Pattern> makeQuilted(const PatternArgs&);
+// Normals only (surface/normal.hpp), not in patternKind(): bumps and dents as POV-Ray bends normals by them.
+std::unique_ptr<Pattern> makeBumpsNormal(const PatternArgs&);
+std::unique_ptr<Pattern> makeDentsNormal(const PatternArgs&);
 std::unique_ptr<Pattern> makeRadial(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpherical(const PatternArgs&);
 std::unique_ptr<Pattern> makeWood(const PatternArgs&);

@@ -24,6 +24,10 @@ struct MapEntry {
   std::shared_ptr<const Pigment> pigment;
 };
 
+// A continuous pattern's value after frequency and phase, wrapped into [0, 1] and shaped by the wave (POV-Ray
+// 3.7 manual, "Waveform"): what a colour map or a slope map reads.
+double waveValue(double raw, double frequency, double phase, Wave wave, double exponent);
+
 struct Pigment {
   Rgbft solid;                              // the colour when there is no pattern
   std::shared_ptr<const Pattern> pattern;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "raytrace/surface/material.hpp"
+#include "raytrace/surface/normal.hpp"
 #include "raytrace/surface/pigment.hpp"
 
 namespace rt {
@@ -35,20 +36,28 @@ struct TextureLayer {
   std::shared_ptr<const Pigment> pigment;
   FinishTerms finish;
   std::shared_ptr<const TexturePattern> pattern;  // when set, it gives the layer instead of pigment and finish
+  std::shared_ptr<const Normal> normal;            // none: the layer leaves the shading normal as it is
 };
 
 struct Texture {
   std::vector<TextureLayer> layers;  // the bottom one first, as written; each one above shows through its filter
   glm::dmat4 fromWorld{1};           // world space to texture space
   Material bound;                    // each term's largest value anywhere (bounded()), for the tracer's cut-off
+  bool bumpy = false;                // whether some layer bends the normal (bounded()): bent() does something
 
   // What shading reads at a world point of the surface.
   Material at(const glm::dvec3& point) const { return inSpace(glm::dvec3(fromWorld * glm::dvec4(point, 1))); }
   // The same at a point of texture space.
   Material inSpace(const glm::dvec3& p) const;
+  // The unit shading normal n at a world point, bent by the top layer that has a normal.
+  glm::dvec3 bent(const glm::dvec3& point, const glm::dvec3& n) const {
+    return bentInSpace(glm::dvec3(fromWorld * glm::dvec4(point, 1)), glm::dmat3(fromWorld), n);
+  }
+  // The same at a point of texture space; toTexture is the linear part of the map from world space to it.
+  glm::dvec3 bentInSpace(const glm::dvec3& p, const glm::dmat3& toTexture, const glm::dvec3& n) const;
 };
 
-// The texture with `bound` filled in: each term's largest over every colour its pigments can give. A blend
+// The texture with `bound` and `bumpy` filled in: each term's largest over every colour its pigments can give. A blend
 // or a layer mixes colours with weights summing to at most 1, so the largest of the colours bounds it.
 Texture bounded(Texture t);
 

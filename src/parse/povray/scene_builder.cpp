@@ -331,8 +331,8 @@ class Builder {
           continue;
         }
         if (m == "photons" || m == "radiosity") continue;
-        if (m == "pigment" || m == "finish" || m == "texture" || m == "material" || m == "interior" ||
-            m == "layered texture") {
+        if (m == "pigment" || m == "finish" || m == "normal" || m == "texture" || m == "material" ||
+            m == "interior" || m == "layered texture") {
           // A second texture block is a layer on top of the first, starting as the #default texture.
           if (m == "texture" && textureBlock) s.layers.push_back(default_.layers.back());
           textureBlock = textureBlock || m == "texture";

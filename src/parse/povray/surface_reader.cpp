@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "raytrace/surface/patterns.hpp"
+
 namespace rt::povray {
 
 void Refusals::refuse(const Item& it, std::string_view otherwise) {
@@ -91,8 +93,8 @@ std::shared_ptr<const Pigment> solidPigment(const Rgbft& c) {
 
 void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals);
 
-// frequency, phase and the wave types; false for any other item.
-bool readWave(const Node& n, size_t& i, Pigment& p) {
+// frequency, phase and the wave types of a pigment or a normal; false for any other item.
+template <class Waved> bool readWave(const Node& n, size_t& i, Waved& p) {
   const Item& it = n.items[i];
   if (it.kind != Item::Kind::Keyword) return false;
   const std::string_view w = it.word;
@@ -138,8 +140,8 @@ struct PatternDraft {
     return makePattern(*k, args);
   }
 
-  // turbulence, octaves, omega, lambda, noise_generator, agate_turb and crackle's form, metric, offset and
-  // solid; false for any other item.
+  // turbulence, octaves, omega, lambda, noise_generator, agate_turb, crackle's form, metric, offset and solid,
+  // and quilted's control0 and control1; false for any other item.
   bool modifier(const Node& n, size_t& i, Refusals& refusals) {
     const Item& it = n.items[i];
     if (it.kind != Item::Kind::Keyword) return false;
@@ -151,7 +153,7 @@ struct PatternDraft {
     }
     const bool vector = w == "turbulence" || w == "form";
     if (!vector && w != "octaves" && w != "omega" && w != "lambda" && w != "noise_generator" && w != "agate_turb" &&
-        w != "metric" && w != "offset") {
+        w != "metric" && w != "offset" && w != "control0" && w != "control1") {
       return false;
     }
     const Value* v = valueAfter(n, i);
@@ -177,6 +179,8 @@ struct PatternDraft {
       t.lambda = float(x);
     } else if (w == "agate_turb") {
       args.agateTurbulence = x;
+    } else if (w == "control0" || w == "control1") {
+      (w == "control0" ? args.control0 : args.control1) = x;
     } else if (x == 3) {
       refusals.refuse(it.loc, "noise_generator 3");
     } else {
@@ -376,6 +380,85 @@ void readFinish(const Node& n, PovFinish& f, Refusals& refusals) {
   }
 }
 
+// slope_map entries `[value, <height, slope>]`, or a slope_map identifier.
+void readSlopeMap(const Node& n, std::vector<SlopeEntry>& slopes) {
+  for (const Item& it : n.items) {
+    if (it.kind == Item::Kind::Node && it.node->keyword == "slope_map") {
+      readSlopeMap(*it.node, slopes);
+      continue;
+    }
+    const std::vector<Item>* e = it.kind == Item::Kind::Node && it.node->keyword == "[" ? &it.node->items : nullptr;
+    if (!e || e->size() != 2 || (*e)[0].kind != Item::Kind::Value || (*e)[0].value.type != Value::Type::Float ||
+        (*e)[1].kind != Item::Kind::Value || !(*e)[1].value.numeric()) {
+      throw ParseError(it.loc, "a slope_map entry is [value, <height, slope>]");
+    }
+    const glm::dvec3 hs = vec3((*e)[1].value);
+    slopes.push_back({(*e)[0].value.v[0], hs.x, hs.y});
+  }
+  std::stable_sort(slopes.begin(), slopes.end(), [](const SlopeEntry& a, const SlopeEntry& b) { return a.value < b.value; });
+}
+
+// `normal { [identifier] pattern [amount] modifiers… }` (POV-Ray 3.7 manual, "Normal").
+void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::vector<TransformStep>& steps,
+                     Refusals& refusals) {
+  for (size_t i = 0; i < n.items.size(); ++i) {
+    const Item& it = n.items[i];
+    if (readTransform(n, i, steps, refusals)) continue;
+    if (it.kind == Item::Kind::Node) {
+      const std::string_view k = it.node->keyword;
+      if (k == "normal" && !(normal.pattern && normal.pattern->blocks() > 0)) {
+        readNormalItems(*it.node, normal, draft, steps, refusals);  // an identifier, modified by what follows
+      } else if (k == "slope_map") {
+        normal.slopes.clear();
+        readSlopeMap(*it.node, normal.slopes);
+      } else {
+        refusals.refuse(it, "normal");  // normal_map, a block pattern's list of normals
+      }
+      continue;
+    }
+    if (it.kind != Item::Kind::Keyword) {
+      refusals.refuse(it, it.value.type == Value::Type::Function ? "function" : "a value here");
+      continue;
+    }
+    const std::string_view w = it.word;
+    // POV-Ray bends the normal by formulas of their own for these, not by their values' slope (bumps and dents:
+    // readNormal).
+    if (w == "wrinkles" || w == "ripples" || w == "waves" || w == "facets") {
+      refusals.refuse(it.loc, w);
+      continue;
+    }
+    if (std::unique_ptr<Pattern> pattern = draft.start(n, i, refusals)) {
+      normal.pattern = std::move(pattern);
+      normal.wave = draft.kind->wave;
+      const Value* amount = valueAfter(n, i);
+      normal.amount = amount ? amount->v[0] : 0.5;
+      continue;
+    }
+    if (w == "bump_size" || w == "accuracy") {
+      const Value* v = valueAfter(n, i);
+      if (!v || v->type != Value::Type::Float) throw ParseError(it.loc, "'" + std::string(w) + "' needs a float");
+      (w == "bump_size" ? normal.amount : normal.accuracy) = v->v[0];
+    } else if (w == "no_bump_scale") {
+      const Value* v = i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value ? valueAfter(n, i) : nullptr;
+      normal.bumpScale = v && v->v[0] == 0;
+    } else if (!readWave(n, i, normal) && !draft.modifier(n, i, refusals)) {
+      refusals.refuse(it.loc, w);
+    }
+  }
+}
+
+void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, Refusals& refusals) {
+  PatternDraft draft;
+  readNormalItems(n, normal, draft, steps, refusals);
+  const std::string_view kind = draft.kind ? draft.kind->name : "";
+  if (kind == "bumps" || kind == "dents") {
+    const PatternKind special{kind, false, kind == "bumps" ? makeBumpsNormal : makeDentsNormal};
+    normal.pattern = makePattern(special, draft.args);
+  } else {
+    draft.finish(normal.pattern, n.loc, refusals);
+  }
+}
+
 FinishTerms finishTerms(const PovFinish& f, double ior) {
   FinishTerms t;
   t.ambient = f.ambient;
@@ -404,7 +487,7 @@ std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals) 
 
 bool Surface::patterned() const {
   const Pigment& p = layers[0].pigment;
-  return layers.size() > 1 || p.pattern || p.average || layers[0].pattern;
+  return layers.size() > 1 || p.pattern || p.average || layers[0].pattern || layers[0].normal;
 }
 
 namespace {
@@ -480,10 +563,14 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
     readPigment(n, top.pigment, top.steps, refusals);
   } else if (k == "finish") {
     readFinish(n, top.finish, refusals);
+  } else if (k == "normal") {
+    if (!top.normal) top.normal.emplace();
+    readNormal(n, *top.normal, top.normalSteps, refusals);
   } else if (k == "texture" && texturePatternIn(n)) {
     top.pattern = readTexturePattern(n, defaults, refusals);
   } else if (k == "texture" || k == "material") {
-    // A transform moves every layer the block has read so far (a layered texture identifier's too).
+    // A transform moves every layer the block has read so far (a layered texture identifier's too), and the
+    // normals they have by then.
     const size_t first = s.layers.size() - 1;
     for (size_t i = 0; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
@@ -494,7 +581,9 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
         refusals.refuse(it, k);
       }
       for (size_t l = first; l < s.layers.size(); ++l) {
-        s.layers[l].steps.insert(s.layers[l].steps.end(), steps.begin(), steps.end());
+        SurfaceLayer& layer = s.layers[l];
+        layer.steps.insert(layer.steps.end(), steps.begin(), steps.end());
+        if (layer.normal) layer.normalSteps.insert(layer.normalSteps.end(), steps.begin(), steps.end());
       }
     }
   } else if (k == "layered texture") {
@@ -542,7 +631,12 @@ Texture makeTexture(const Surface& s, const std::vector<TransformStep>& after) {
   for (const SurfaceLayer& layer : s.layers) {
     auto p = std::make_shared<Pigment>(layer.pigment);
     p->fromTexture = glm::inverse(composeTransforms<double>(layer.steps));
-    t.layers.push_back({p, finishTerms(layer.finish, s.ior), layer.pattern});
+    std::shared_ptr<Normal> normal;
+    if (layer.normal && layer.normal->pattern) {
+      normal = std::make_shared<Normal>(*layer.normal);
+      normal->fromTexture = glm::inverse(composeTransforms<double>(layer.normalSteps));
+    }
+    t.layers.push_back({p, finishTerms(layer.finish, s.ior), layer.pattern, std::move(normal)});
   }
   t.fromWorld = glm::inverse(composeTransforms<double>(after));
   return t;

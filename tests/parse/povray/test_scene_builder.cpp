@@ -153,6 +153,63 @@ plane { y, 0 texture { gradient x texture_map { [0 texture { pigment { Black } }
   CHECK(mid.pigment.r == Approx(0.25f));
 }
 
+// n·l of a normal's bent normal on the plane y = 0 at a point, as POV-Ray lit it: a white matte plane under a
+// distant light, each value read once from POV-Ray's 16-bit render.
+double lit(const SceneDesc& s, size_t object, const glm::dvec3& point, const glm::dvec3& toLight) {
+  return glm::dot(s.objects[object].texture->bent(point, glm::dvec3(0, 1, 0)), glm::normalize(toLight));
+}
+
+TEST_CASE("povray scene: a normal bends the shading normal as POV-Ray's renders show", "[povray]") {
+  const SceneDesc s = scene(R"(
+#declare N = normal { gradient x 1 }
+plane { y, 0 pigment { White } normal { gradient x 0.5 } }
+plane { y, 0 pigment { White } normal { N scale <1, 0.5, 1> } }
+plane { y, 0 pigment { White } normal { N bump_size 2 } }
+plane { y, 0 pigment { White } normal { gradient x 1 scale 0.5 no_bump_scale } }
+plane { y, 0 texture { pigment { White } normal { gradient x 1 slope_map { [0 <0, 1>] [0.5 <0.5, 1>] [1 <1, 1>] } } } }
+plane { y, 0 texture { pigment { White } normal { N } scale 0.5 } }
+plane { y, 0 texture { checker texture { pigment { White } normal { gradient x 0.5 } } texture { pigment { White } } } }
+plane { y, 0 pigment { White } normal { quilted 1 control0 0 control1 0.5 } }
+plane { y, 0 pigment { White } normal { quilted 0.7 scale 0.5 } }
+plane { y, 0 pigment { White } normal { bumps 1 } }
+plane { y, 0 pigment { White } normal { bumps 0.6 scale 0.3 } }
+plane { y, 0 pigment { White } normal { dents 1 } }
+plane { y, 0 pigment { White } normal { bumps 1 turbulence 0.5 } }
+)");
+  REQUIRE(s.objects.size() == 13);
+  const glm::dvec3 up(0, 1, 0), left(-1, 1, 0), right(1, 1, 0), p(0.5, 0, 0.45);
+  CHECK(lit(s, 0, p, up) == Approx(0.9978).margin(1e-4));
+  CHECK(lit(s, 0, p, left) == Approx(0.7526).margin(1e-4));
+  CHECK(lit(s, 0, p, right) == Approx(0.6585).margin(1e-4));
+  CHECK(lit(s, 1, p, left) == Approx(0.7526).margin(1e-4));
+  CHECK(lit(s, 2, p, left) == Approx(0.8654).margin(1e-4));
+  CHECK(lit(s, 3, {0.25, 0, 0.45}, up) == Approx(0.9662).margin(1e-4));
+  CHECK(lit(s, 4, {0.95, 0, 0.45}, left) == Approx(0.8321).margin(1e-4));
+  CHECK(lit(s, 4, {0.75, 0, 0.45}, left) == Approx(0.7528).margin(1e-4));
+  CHECK(lit(s, 5, {0.35, 0, 0.45}, left) == Approx(0.7944).margin(1e-4));
+  // Across the wrap of the gradient at x = 0, where the pyramid's corners straddle it.
+  CHECK(lit(s, 5, {0.0025, 0, 0.45}, up) == Approx(0.6872).margin(1e-4));
+  CHECK(lit(s, 5, {0.0025, 0, 0.45}, right) == Approx(0.9996).margin(1e-4));
+  CHECK(lit(s, 5, {-0.0075, 0, 0.45}, right) == Approx(0.5979).margin(1e-4));
+  CHECK(lit(s, 6, {0.5, 0, 0.5}, left) == Approx(0.7526).margin(1e-4));
+  CHECK(lit(s, 6, {1.5, 0, 0.5}, left) == Approx(0.7071).margin(1e-4));
+  CHECK(lit(s, 7, {0.95, 0, 0.45}, right) == Approx(0.9169).margin(1e-4));
+  CHECK(lit(s, 8, {0.95, 0, 0.45}, right) == Approx(0.8657).margin(1e-4));
+  CHECK(lit(s, 9, {0.45, 0, 0.45}, up) == Approx(0.8757).margin(1e-4));
+  CHECK(lit(s, 9, {0.45, 0, 0.45}, right) == Approx(0.3279).margin(1e-4));
+  CHECK(lit(s, 10, {0.95, 0, 0.45}, up) == Approx(0.9934).margin(1e-4));
+  CHECK(lit(s, 10, {0.95, 0, 0.45}, right) == Approx(0.6567).margin(1e-4));
+  CHECK(lit(s, 11, {0.05, 0, 0.45}, up) == Approx(0.9992).margin(1e-4));
+  CHECK(lit(s, 11, {0.05, 0, 0.45}, glm::dvec3(0, 1, 1)) == Approx(0.6777).margin(1e-4));
+  CHECK(failure("plane { y, 0 normal { wrinkles 0.4 } }\n") == "scene.pov:3:23: error: 'wrinkles' is not supported yet");
+  CHECK(lit(s, 12, {0.95, 0, 0.45}, up) == Approx(0.7177).margin(1e-4));
+  CHECK(lit(s, 12, {0.95, 0, 0.45}, right) == Approx(0.0908).margin(1e-4));
+  CHECK(failure("plane { y, 0 normal { gradient x normal_map { [0 gradient y] } } }\n") ==
+        "scene.pov:3:34: error: 'normal_map' is not supported yet");
+  CHECK(failure("plane { y, 0 normal { gradient x slope_map { [0] } } }\n") ==
+        "scene.pov:3:46: error: a slope_map entry is [value, <height, slope>]");
+}
+
 TEST_CASE("povray scene: a transform after a layered texture moves every layer", "[povray]") {
   const SceneDesc s = scene(R"(
 #declare Layers = texture { pigment { gradient x color_map { [0 Black] [1 White] } } }

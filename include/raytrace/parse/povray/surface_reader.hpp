@@ -48,6 +48,8 @@ struct SurfaceLayer {
   std::vector<TransformStep> steps;      // the pigment's and texture's own transforms, in order
   PovFinish finish;
   std::shared_ptr<const TexturePattern> pattern;  // a pattern of whole textures instead
+  std::optional<Normal> normal;
+  std::vector<TransformStep> normalSteps;  // the normal's own transforms, then the texture's written after it
 };
 
 struct Surface {
@@ -59,7 +61,7 @@ struct Surface {
 // A pigment block on its own, its transforms folded into its fromTexture: a map's or a list's entry, a sky's layer.
 std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals);
 
-// pigment, finish, texture, material or interior into `s`; anything else is refused. A texture inside a
+// pigment, finish, normal, texture, material or interior into `s`; anything else is refused. A texture inside a
 // texture pattern starts as `defaults` (#default).
 void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusals& refusals);
 

@@ -1,0 +1,34 @@
+// POV-Ray's `normal { … }`: a pattern whose slope bends the shading normal at a hit, leaving the surface where
+// it is (docs/povray-language.md, "Normals").
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "raytrace/surface/pigment.hpp"
+
+namespace rt {
+
+// `[value, <height, slope>]` of a slope_map, in increasing values.
+struct SlopeEntry {
+  double value, height, slope;
+};
+
+struct Normal {
+  std::shared_ptr<const Pattern> pattern;
+  double amount = 0.5;      // the number after the pattern, or bump_size
+  double accuracy = 0.02;   // the distance of the sampled points from the hit
+  bool bumpScale = true;    // no_bump_scale clears it
+  std::vector<SlopeEntry> slopes;  // none: the height is the pattern's value
+  glm::dmat4 fromTexture{1};       // texture space to the pattern's own
+  double frequency = 1, phase = 0, exponent = 1;
+  Wave wave = Wave::Ramp;
+
+  // The unit normal n bent at p, a point of texture space; toTexture is the linear part of the map from world
+  // space to texture space.
+  glm::dvec3 bent(const glm::dvec3& n, const glm::dvec3& p, const glm::dmat3& toTexture) const;
+  // The bump's height at q, a point of the pattern's space.
+  double height(const glm::dvec3& q) const;
+};
+
+}  // namespace rt

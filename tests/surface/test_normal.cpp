@@ -1,0 +1,119 @@
+// Normals: a pattern's slope bends the shading normal; slope maps, bump sizes, and the bump scale under
+// transforms, against the analytic answers; a texture's top normal.
+#include <catch2/catch.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "raytrace/surface/patterns.hpp"
+#include "raytrace/surface/texture.hpp"
+
+namespace rt {
+namespace {
+
+Normal gradient(const glm::dvec3& v, double amount) {
+  Normal n;
+  n.pattern = makeGradient({v, true});
+  n.amount = amount;
+  return n;
+}
+
+void checkNear(const glm::dvec3& a, const glm::dvec3& b, double tolerance = 1e-12) {
+  CHECK(glm::length(a - b) == Approx(0).margin(tolerance));
+}
+
+const glm::dvec3 kUp(0, 1, 0);
+const glm::dvec3 kMiddle(0.5, 0, 0.5);  // away from the gradient's wrap at whole x
+
+TEST_CASE("normal: a gradient bends the normal against its slope by amount·2/15 per unit of slope", "[normal]") {
+  // The pyramid's estimate of a linear function's gradient is exact: the tilt is amount·2/15, measured on
+  // POV-Ray's renders (docs/povray-language.md, "Normals").
+  for (const double amount : {0.25, 0.5, 1.0, 7.5}) {
+    checkNear(gradient({1, 0, 0}, amount).bent(kUp, kMiddle, glm::dmat3(1)),
+              glm::normalize(glm::dvec3(-amount * 2 / 15, 1, 0)));
+  }
+  // Negative amounts invert the bumps.
+  checkNear(gradient({1, 0, 0}, -0.5).bent(kUp, kMiddle, glm::dmat3(1)), glm::normalize(glm::dvec3(1.0 / 15, 1, 0)));
+}
+
+TEST_CASE("normal: amount 0, and a slope along the normal itself, leave the normal as it is", "[normal]") {
+  CHECK(gradient({1, 0, 0}, 0).bent(kUp, kMiddle, glm::dmat3(1)) == kUp);
+  checkNear(gradient({0, 1, 0}, 3).bent(kUp, {0.5, 0.5, 0.5}, glm::dmat3(1)), kUp);
+}
+
+TEST_CASE("normal: accuracy does not change a linear slope", "[normal]") {
+  Normal n = gradient({1, 0, 0}, 1);
+  n.accuracy = 0.1;
+  checkNear(n.bent(kUp, kMiddle, glm::dmat3(1)), glm::normalize(glm::dvec3(-2.0 / 15, 1, 0)));
+}
+
+TEST_CASE("normal: scaling a normal scales its bumps' depth with them, unless no_bump_scale", "[normal]") {
+  const glm::dvec3 expected = glm::normalize(glm::dvec3(-2.0 / 15, 1, 0));
+  Normal n = gradient({1, 0, 0}, 1);
+  // scale 0.5: the slope doubles and the depth halves.
+  n.fromTexture = glm::scale(glm::dmat4(1), glm::dvec3(2));
+  checkNear(n.bent(kUp, {0.25, 0, 0.25}, glm::dmat3(1)), expected);
+  // The same scale on the object: the texture space's own map.
+  n.fromTexture = glm::dmat4(1);
+  checkNear(n.bent(kUp, {0.25, 0, 0.25}, glm::dmat3(2)), expected);
+  // no_bump_scale: the doubled slope.
+  n.bumpScale = false;
+  checkNear(n.bent(kUp, {0.25, 0, 0.25}, glm::dmat3(2)), glm::normalize(glm::dvec3(-4.0 / 15, 1, 0)));
+  // scale <1, 0.5, 1>: the same slope along x, half the depth along y.
+  n.bumpScale = true;
+  n.fromTexture = glm::scale(glm::dmat4(1), glm::dvec3(1, 2, 1));
+  checkNear(n.bent(kUp, kMiddle, glm::dmat3(1)), glm::normalize(glm::dvec3(-1.0 / 15, 1, 0)));
+}
+
+TEST_CASE("normal: a slope map's height is a cubic through its entries' heights and slopes", "[normal]") {
+  Normal n = gradient({1, 0, 0}, 1);
+  n.slopes = {{0, 0, 1}, {0.5, 0.5, 1}, {1, 1, 1}};
+  // In [0.5, 1], t = 0.5: the cubic with heights 0.5, 1 and slopes 1, 1 (per unit of t).
+  CHECK(n.height({0.75, 0, 0}) == Approx(0.5 * 0.5 + 0.125 + 0.5 * 1 - 0.125));
+  CHECK(n.height({0.5, 0, 0}) == 0.5);
+  CHECK(n.height({0, 0, 0}) == 0);
+  // A wave shapes the value before the map reads it.
+  n.slopes.clear();
+  n.wave = Wave::Triangle;
+  CHECK(n.height({0.75, 0, 0}) == 0.5);
+}
+
+TEST_CASE("normal: a texture bends by its top normal, in its own texture space; without one, not at all",
+          "[normal]") {
+  FinishTerms f;
+  Texture t;
+  auto white = std::make_shared<Pigment>();
+  t.layers.push_back({white, f, nullptr, std::make_shared<Normal>(gradient({1, 0, 0}, 0.5))});
+  t.layers.push_back({white, f, nullptr, std::make_shared<Normal>(gradient({0, 0, 1}, 0.5))});
+  t = bounded(t);
+  CHECK(t.bumpy);
+  checkNear(t.bent(kMiddle, kUp), glm::normalize(glm::dvec3(0, 1, -1.0 / 15)));
+  t.fromWorld = glm::translate(glm::dmat4(1), glm::dvec3(0, 0, 0.25));
+  checkNear(t.bent({0.5, 0, 0.5}, kUp), glm::normalize(glm::dvec3(0, 1, -1.0 / 15)));
+  Texture plain;
+  plain.layers.push_back({white, f, nullptr, nullptr});
+  CHECK_FALSE(bounded(plain).bumpy);
+}
+
+TEST_CASE("normal: quilted's value and bend, against POV-Ray's renders", "[normal]") {
+  // Pigment values read once from POV-Ray's 16-bit renders of `quilted color_map { [0 rgb 0] [1 rgb 1] }`.
+  PatternArgs args;
+  CHECK(makeQuilted(args)->value({0.025, 0.5, 0.5}) == Approx(0.1564).margin(1e-4));
+  args.control0 = 0;
+  args.control1 = 0;
+  CHECK(makeQuilted(args)->value({0.025, 0.1, 0.1}) == Approx(0.1978).margin(1e-4));
+  CHECK(makeQuilted(args)->value({1.025, -0.9, 2.1}) == Approx(0.1978).margin(1e-4));  // every unit cube alike
+  args.control0 = 1;
+  CHECK(makeQuilted(args)->value({0.025, 0.5, 0.5}) == Approx(0.0914).margin(1e-4));
+  // `normal { quilted 1 }` on the plane y = 0 at (0.95, 0, 0.45): n·l under lights straight up, along +x and
+  // along +z, from POV-Ray's renders.
+  Normal n;
+  n.pattern = makeQuilted({});
+  n.amount = 1;
+  const glm::dvec3 b = n.bent(kUp, {0.95, 0, 0.45}, glm::dmat3(1));
+  CHECK(b.y == Approx(0.6592).margin(1e-4));
+  CHECK(glm::dot(b, glm::normalize(glm::dvec3(1, 1, 0))) == Approx(0.9946).margin(1e-4));
+  CHECK(glm::dot(b, glm::normalize(glm::dvec3(0, 1, 1))) == Approx(0.4074).margin(1e-4));
+}
+
+}  // namespace
+}  // namespace rt
