@@ -37,6 +37,13 @@ template <class T> uint64_t pointKey(const Vec3<T>& point, size_t index) {
   return childKey(childKey(childKey(mix64(bits(point.x)), bits(point.y)), bits(point.z)), uint64_t(index));
 }
 
+// crand's darkening of light `index` at `point`: crand·u·C·light (SurfaceExtras::crand). Kept out of line: the
+// light loop of every other surface then pays only the test.
+template <class T>
+[[gnu::noinline]] Color grain(const Color& light, const Material& m, const Vec3<T>& point, size_t index) {
+  return light * m.pigment * (m.extras.crand * uniformPair(pointKey(point, index)).x);
+}
+
 // The largest factor a specular term can put on Lc·ks·C: 1 for Blinn-Phong (a clamped cosine to a power
 // ≥ 0); for Cook-Torrance D ≤ max(1/(πα²), α²/π), G ≤ 1, F ≤ 1 and the denominator is at least 4/16.
 float specularBound(const Material& m, Brdf brdf) {
@@ -429,7 +436,7 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m
     }
     const float nl = std::min(s->nl, 1.0f);
     diffuse += lightColor * m.diffuse * (m.brilliance == 1.0f ? nl : std::pow(nl, m.brilliance));
-    if (crand > 0) diffuse -= lightColor * m.pigment * (crand * uniformPair(pointKey(hit.point, i)).x);
+    if (__builtin_expect(crand > 0, 0)) diffuse -= grain(lightColor, m, hit.point, i);
     if (m.specular == Color(0)) continue;  // a matte surface: no power to take
     const float factor = options_.brdf == Brdf::BlinnPhong ? m.lobe == Material::Lobe::Mirror
                                                                  ? phongSpecular(n, v, s->l, m.exponent)
