@@ -96,14 +96,14 @@ float fresnelReflectance(float cosTheta, float ior) {
 }
 
 float variableReflection(const Material& m, float cosTheta) {
-  const SurfaceExtras& e = m.extras;
+  const SurfaceExtras& e = *m.extras;
   const float t = e.reflectionFresnel ? fresnelReflectance(cosTheta, m.ior)
                                       : std::pow(1 - std::clamp(cosTheta, 0.0f, 1.0f), e.reflectionFalloff);
   return e.reflectionMin + (m.reflection - e.reflectionMin) * t;
 }
 
 Color interiorFade(const Material& m, float distance) {
-  const SurfaceExtras& e = m.extras;
+  const SurfaceExtras& e = *m.extras;
   const float d = distance / e.fadeDistance;
   const float a = e.fadePower >= 1000 ? std::exp(-d) : 1 / (1 + std::pow(d, e.fadePower));
   return a + (1 - a) * e.fadeColor;

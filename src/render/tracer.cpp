@@ -41,7 +41,7 @@ template <class T> uint64_t pointKey(const Vec3<T>& point, size_t index) {
 // light loop of every other surface then pays only the test.
 template <class T>
 [[gnu::noinline]] Color grain(const Color& light, const Material& m, const Vec3<T>& point, size_t index) {
-  return light * m.pigment * (m.extras.crand * uniformPair(pointKey(point, index)).x);
+  return light * m.pigment * (m.extras->crand * uniformPair(pointKey(point, index)).x);
 }
 
 // The largest factor a specular term can put on Lc·ks·C: 1 for Blinn-Phong (a clamped cosine to a power
@@ -84,7 +84,7 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
             brightest(light.color) * (brightest(m.diffuse) + brightest(m.specular) * specularBound(m, options.brdf));
       }
       localMax = std::max(localMax, options.normals ? 1.0f : local);
-      const float reflection = std::max(m.reflection, m.extras.reflectionMin);
+      const float reflection = std::max(m.reflection, m.extras->reflectionMin);
       gain = std::max(gain, ((1 - m.filter) * reflection + m.filter) * std::max(1.0f, brightest(m.pigment)));
       filteredShadows_ = filteredShadows_ || (conventions_.filteredShadows && m.filter > 0);
     });
@@ -310,7 +310,7 @@ Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Material& m
                          RayRecord* record, std::optional<Vec3<T>>& refracted) const {
   const float fresnel = options_.fresnel ? schlick(float(glm::dot(n, -ray.dir)), m.ior) : 0.0f;
   Weights w = weights(m, fresnel, conventions_.reflectionMixes);
-  if (m.extras.reflectionFalloff > 0) {
+  if (m.extras->reflectionFalloff > 0) {
     Material varied = m;
     varied.reflection = variableReflection(m, float(glm::dot(n, -ray.dir)));
     w = weights(varied, fresnel, conventions_.reflectionMixes);
@@ -406,7 +406,7 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m
   // Summed in locals, not in the returned struct: that one lives in the caller's memory, and each sum would
   // wait for the store before it.
   Color diffuse(0), specular(0);
-  const float crand = m.extras.crand;
+  const float crand = m.extras->crand;
   for (size_t i = 0; i < scene_.lights().size(); ++i) {
     const Light<T>& light = scene_.lights()[i];
     Color lightColor = light.color;
@@ -460,7 +460,7 @@ template <class T> Color Tracer<T>::transmittance(const Ray<T>& ray, Interval<T>
     const Material& m = hit->object->materialAt(hit->point, textured);
     through *= m.filter * m.pigment;
     // Leaving an object with an interior fade: the light faded over its way inside, from the surface before.
-    if (m.extras.fadeDistance > 0 && glm::dot(ray.dir, hit->normal) > T(0)) {
+    if (m.extras->fadeDistance > 0 && glm::dot(ray.dir, hit->normal) > T(0)) {
       through *= interiorFade(m, float((hit->t - segment.min) * glm::length(ray.dir)));
     }
     if (through == Color(0)) return through;
@@ -491,7 +491,7 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
         trace(spawnRay(hit, *refracted, *scene_.arithmetic().offset), RayRecord::Kind::Refraction, child, sub);
     Color gathered = transmitTint * t.color;
     if (entering && options_.beers) gathered *= beerAttenuation(m.pigment, float(t.distance));
-    if (entering && m.extras.fadeDistance > 0) gathered *= interiorFade(m, float(t.distance));
+    if (entering && m.extras->fadeDistance > 0) gathered *= interiorFade(m, float(t.distance));
     refraction = w.transmission * gathered;
   }
   const Color reflectTint = conventions_.tintReflection ? m.pigment : Color(1);

@@ -2,8 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <mutex>
 
 namespace rt {
+
+const SurfaceExtras* keptExtras(const SurfaceExtras& extras) {
+  static std::mutex mutex;
+  static std::deque<SurfaceExtras> kept;  // a deque never moves what it holds
+  const std::lock_guard<std::mutex> lock(mutex);
+  return &kept.emplace_back(extras);
+}
 
 Material layerMaterial(const FinishTerms& f, const Rgbft& c) {
   Material m;
@@ -11,7 +20,7 @@ Material layerMaterial(const FinishTerms& f, const Rgbft& c) {
   const float through = c.filter + c.transmit;
   m.pigment = through > 0 ? (c.filter * c.rgb + Color(c.transmit)) / through : c.rgb;
   m.filter = through;
-  m.ambient = (f.ambient + f.emission) * c.rgb;
+  m.ambient = f.ambient * c.rgb;
   m.diffuse = f.diffuse * c.rgb;
   // POV-Ray's metallic highlight takes the pigment's colour; its empirical change toward white at grazing
   // angles is not modelled (docs/povray-language.md, "Textures").
@@ -36,7 +45,7 @@ Texture bounded(Texture t) {
     b.ambient = glm::max(b.ambient, m.ambient);
     b.diffuse = glm::max(b.diffuse, m.diffuse);
     b.specular = glm::max(b.specular, m.specular);
-    b.reflection = std::max({b.reflection, m.reflection, m.extras.reflectionMin});  // a variable reflection reaches either
+    b.reflection = std::max({b.reflection, m.reflection, m.extras->reflectionMin});  // a variable reflection reaches either
     b.roughness = m.roughness;
     b.exponent = m.exponent;
     b.ior = m.ior;

@@ -718,7 +718,7 @@ class Builder {
 // The texture with every layer's ambient term scaled, in the textures of its patterns too.
 Texture ambientScaled(Texture t, const Color& light) {
   for (TextureLayer& layer : t.layers) {
-    layer.finish.ambient *= light;
+    layer.finish.ambient = (layer.finish.ambient - layer.finish.emission) * light + layer.finish.emission;
     if (!layer.pattern) continue;
     auto pattern = std::make_shared<TexturePattern>(*layer.pattern);
     for (auto& sub : pattern->textures) sub = std::make_shared<const Texture>(ambientScaled(*sub, light));

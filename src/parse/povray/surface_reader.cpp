@@ -301,18 +301,20 @@ void readFinish(const Node& n, PovFinish& f, Refusals& refusals) {
 
 FinishTerms finishTerms(const PovFinish& f, const Surface& s) {
   FinishTerms t;
-  t.ambient = f.ambient;
+  t.ambient = f.ambient + f.emission;
   t.emission = f.emission;
-  t.extras.crand = float(f.crand);
+  SurfaceExtras extras;
+  extras.crand = float(f.crand);
   // Fresnel with a single value varies from 0 (POV-Ray: `reflection { 1 fresnel }` is a dielectric's mirror).
   if (f.reflectionMin || f.reflectionFresnel) {
-    t.extras.reflectionMin = float(f.reflectionMin.value_or(f.reflectionFresnel ? 0.0 : f.reflection));
-    t.extras.reflectionFalloff = float(f.reflectionFalloff);
-    t.extras.reflectionFresnel = f.reflectionFresnel;
+    extras.reflectionMin = float(f.reflectionMin.value_or(f.reflectionFresnel ? 0.0 : f.reflection));
+    extras.reflectionFalloff = float(f.reflectionFalloff);
+    extras.reflectionFresnel = f.reflectionFresnel;
   }
-  t.extras.fadeDistance = s.fadePower > 0 ? float(s.fadeDistance) : 0;  // both 0 by default: no fade
-  t.extras.fadePower = float(s.fadePower);
-  t.extras.fadeColor = s.fadeColor;
+  extras.fadeDistance = s.fadePower > 0 ? float(s.fadeDistance) : 0;  // both 0 by default: no fade
+  extras.fadePower = float(s.fadePower);
+  extras.fadeColor = s.fadeColor;
+  if (extras.any()) t.extras = keptExtras(extras);
   t.diffuse = float(f.diffuse);
   // POV-Ray's highlights are white; `specular` has exponent 1/roughness, `phong` its phong_size.
   t.specular = Color(float(f.specular > 0 ? f.specular : f.phong));

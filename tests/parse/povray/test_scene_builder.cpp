@@ -162,11 +162,11 @@ sphere { 0, 1 interior { fade_distance 2 } }
   CHECK(m.ambient.r == Approx(0.6f));  // (0.2·0.5 + 0.5)·C
   CHECK(m.ambient.g == Approx(0.3f));
   CHECK(m.ambient.b == Approx(0.15f));
-  CHECK(m.extras.fadeDistance == 2);
-  CHECK(m.extras.fadePower == 3);
-  CHECK(m.extras.fadeColor == Color(1, 0, 0));
-  CHECK(s.objects[1].material.extras.fadeDistance == 0);  // fade_power 0, its default: no fade
-  CHECK(scene("sphere { 0, 1 finish { crand 0.05 } }\n").objects[0].material.extras.crand == 0.05f);
+  CHECK(m.extras->fadeDistance == 2);
+  CHECK(m.extras->fadePower == 3);
+  CHECK(m.extras->fadeColor == Color(1, 0, 0));
+  CHECK(s.objects[1].material.extras->fadeDistance == 0);  // fade_power 0, its default: no fade
+  CHECK(scene("sphere { 0, 1 finish { crand 0.05 } }\n").objects[0].material.extras->crand == 0.05f);
 }
 
 TEST_CASE("povray scene: a reflection block: one value, two that vary with the angle, falloff and fresnel",
@@ -179,14 +179,14 @@ sphere { 0, 1 finish { reflection { 0.1, 1 fresnel on exponent 1 } } }
 )");
   REQUIRE(s.objects.size() == 4);
   CHECK(s.objects[0].material.reflection == 0.3f);
-  CHECK(s.objects[0].material.extras.reflectionFalloff == 0);  // constant
-  CHECK(s.objects[1].material.extras.reflectionMin == 0.2f);
+  CHECK(s.objects[0].material.extras->reflectionFalloff == 0);  // constant
+  CHECK(s.objects[1].material.extras->reflectionMin == 0.2f);
   CHECK(s.objects[1].material.reflection == 0.8f);
-  CHECK(s.objects[1].material.extras.reflectionFalloff == 3);
-  CHECK(s.objects[2].material.extras.reflectionFresnel);
-  CHECK(s.objects[2].material.extras.reflectionMin == 0);  // one value with fresnel: from 0 (POV-Ray's picture)
+  CHECK(s.objects[1].material.extras->reflectionFalloff == 3);
+  CHECK(s.objects[2].material.extras->reflectionFresnel);
+  CHECK(s.objects[2].material.extras->reflectionMin == 0);  // one value with fresnel: from 0 (POV-Ray's picture)
   CHECK(s.objects[2].material.ior == 1.5f);
-  CHECK(s.objects[3].material.extras.reflectionMin == 0.1f);
+  CHECK(s.objects[3].material.extras->reflectionMin == 0.1f);
   CHECK(failure("sphere { 0, 1 finish { reflection { 0.5 exponent 2 } } }\n") ==
         "scene.pov:3:41: error: 'exponent' is not supported yet");
   CHECK(failure("sphere { 0, 1 finish { reflection { 0.5 metallic } } }\n") ==
