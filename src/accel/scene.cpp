@@ -10,10 +10,20 @@ namespace rt {
 template <class T>
 Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy hierarchy, int threads)
     : desc_(desc), arithmetic_(arithmetic) {
-  shapes_.reserve(desc.lights.size());  // no reallocation: lights_ point into it
+  shapes_.reserve(desc.lights.size());  // no reallocation: lights_ point into them
+  areas_.reserve(desc.lights.size());
   for (const LightDesc& l : desc.lights) {
     const LightShape* shape = LightShape::needed(l) ? &shapes_.emplace_back(l) : nullptr;
-    lights_.push_back(Light<T>{Vec3<T>(l.position), l.color, shape, l.shadowless});
+    Light<T>& light = lights_.emplace_back();
+    light.position = Vec3<T>(l.position);
+    light.color = l.color;
+    light.shape = shape;
+    light.shadowless = l.shadowless;
+    if (l.area) light.area = &areas_.emplace_back(*l.area);
+    if (l.parallelTo && glm::length(l.position - *l.parallelTo) > 0) {
+      light.parallel = Vec3<T>(glm::normalize(l.position - *l.parallelTo));
+    }
+    light.sampled = light.area || light.parallel;
   }
   const bool course = arithmetic.tier == Tier::Course;
   const size_t n = desc.objects.size();

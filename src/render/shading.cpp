@@ -86,6 +86,29 @@ template <class T> std::optional<Vec3<T>> refractDirection(const Vec3<T>& d, con
   return glm::normalize(eta * d + (eta * cosIn - std::sqrt(k)) * facing);
 }
 
+float fresnelReflectance(float cosTheta, float ior) {
+  const float c = std::clamp(cosTheta, 0.0f, 1.0f);
+  const float g2 = ior * ior + c * c - 1;
+  if (g2 <= 0) return 1;
+  const float g = std::sqrt(g2);
+  const float a = (g - c) / (g + c), b = (c * (g + c) - 1) / (c * (g - c) + 1);
+  return 0.5f * a * a * (1 + b * b);
+}
+
+float variableReflection(const Material& m, float cosTheta) {
+  const SurfaceExtras& e = *m.extras;
+  const float t = e.reflectionFresnel ? fresnelReflectance(cosTheta, m.ior)
+                                      : std::pow(1 - std::clamp(cosTheta, 0.0f, 1.0f), e.reflectionFalloff);
+  return e.reflectionMin + (m.reflection - e.reflectionMin) * t;
+}
+
+Color interiorFade(const Material& m, float distance) {
+  const SurfaceExtras& e = *m.extras;
+  const float d = distance / e.fadeDistance;
+  const float a = e.fadePower >= 1000 ? std::exp(-d) : 1 / (1 + std::pow(d, e.fadePower));
+  return a + (1 - a) * e.fadeColor;
+}
+
 Color beerAttenuation(const Color& pigment, float distance) {
   Color kept(1.0f);
   for (int c = 0; c < 3; ++c) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 
@@ -24,6 +25,24 @@ constexpr uint64_t kReflectionBranch = uint64_t(1) << 40;
 constexpr uint64_t kRefractionBranch = kReflectionBranch + 1;
 
 float brightest(const Color& c) { return std::max(c.r, std::max(c.g, c.b)); }
+
+// The random-number key of what a point does with light `index` (an area light's jitter, crand): keyed by the
+// point itself, so a picture is the same for any threads and tiles.
+template <class T> uint64_t pointKey(const Vec3<T>& point, size_t index) {
+  const auto bits = [](T x) {
+    uint64_t b = 0;
+    std::memcpy(&b, &x, sizeof x);
+    return b;
+  };
+  return childKey(childKey(childKey(mix64(bits(point.x)), bits(point.y)), bits(point.z)), uint64_t(index));
+}
+
+// crand's darkening of light `index` at `point`: crand·u·C·light (SurfaceExtras::crand). Kept out of line: the
+// light loop of every other surface then pays only the test.
+template <class T>
+[[gnu::noinline]] Color grain(const Color& light, const Material& m, const Vec3<T>& point, size_t index) {
+  return light * m.pigment * (m.extras->crand * uniformPair(pointKey(point, index)).x);
+}
 
 // The largest factor a specular term can put on Lc·ks·C: 1 for Blinn-Phong (a clamped cosine to a power
 // ≥ 0); for Cook-Torrance D ≤ max(1/(πα²), α²/π), G ≤ 1, F ≤ 1 and the denominator is at least 4/16.
@@ -65,7 +84,8 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
             brightest(light.color) * (brightest(m.diffuse) + brightest(m.specular) * specularBound(m, options.brdf));
       }
       localMax = std::max(localMax, options.normals ? 1.0f : local);
-      gain = std::max(gain, ((1 - m.filter) * m.reflection + m.filter) * std::max(1.0f, brightest(m.pigment)));
+      const float reflection = std::max(m.reflection, m.extras->reflectionMin);
+      gain = std::max(gain, ((1 - m.filter) * reflection + m.filter) * std::max(1.0f, brightest(m.pigment)));
       filteredShadows_ = filteredShadows_ || (conventions_.filteredShadows && m.filter > 0);
     });
   }
@@ -180,6 +200,7 @@ template <class T> void Tracer<T>::traceBatch(Batch& batch, int count, RayRecord
     // The shadow rays of the packet's hits toward each light, asked together: shadows[i · lights + l]. Shadows
     // through transparent surfaces are followed one ray at a time instead (direct()).
     for (size_t l = 0; l < lights && !filteredShadows_; ++l) {
+      if (scene_.lights()[l].sampled) continue;  // direct() samples it for each hit
       Ray<T> query[kPacket];
       Interval<T> segments[kPacket];
       int index[kPacket], m = 0;
@@ -296,6 +317,11 @@ Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Material& m
                          RayRecord* record, std::optional<Vec3<T>>& refracted) const {
   const float fresnel = options_.fresnel ? schlick(float(glm::dot(n, -ray.dir)), m.ior) : 0.0f;
   Weights w = weights(m, fresnel, conventions_.reflectionMixes);
+  if (m.extras->reflectionFalloff > 0) {
+    Material varied = m;
+    varied.reflection = variableReflection(m, float(glm::dot(n, -ray.dir)));
+    w = weights(varied, fresnel, conventions_.reflectionMixes);
+  }
   if (w.transmission > 0) {
     // The outward normal as the shading normal bends it: hit.normal itself where nothing bends it.
     refracted = refractDirection(ray.dir, glm::dot(ray.dir, hit.normal) <= T(0) ? n : -n, m.ior);
@@ -389,12 +415,15 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m
   // Summed in locals, not in the returned struct: that one lives in the caller's memory, and each sum would
   // wait for the store before it.
   Color diffuse(0), specular(0);
+  const float crand = m.extras->crand;
   for (size_t i = 0; i < scene_.lights().size(); ++i) {
     const Light<T>& light = scene_.lights()[i];
     Color lightColor = light.color;
     ShadowRay own;
     const ShadowRay* s = nullptr;
-    if (shadows) {
+    if (light.sampled) {
+      if (sampledLight(hit, n, light, i, own, lightColor)) s = &own;
+    } else if (shadows) {
       if (shadows[i]) s = &*shadows[i];
     } else if (shadowRay(hit, side, light, own)) {
       if (filteredShadows_ && !light.shadowless) {
@@ -418,6 +447,7 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m
     const float nl = std::min(bent ? float(glm::dot(n, s->l)) : s->nl, 1.0f);
     if (bent && nl <= 0.0f) continue;
     diffuse += lightColor * m.diffuse * (m.brilliance == 1.0f ? nl : std::pow(nl, m.brilliance));
+    if (__builtin_expect(crand > 0, 0)) diffuse -= grain(lightColor, m, hit.point, i);
     if (m.specular == Color(0)) continue;  // a matte surface: no power to take
     const float factor = options_.brdf == Brdf::BlinnPhong ? m.lobe == Material::Lobe::Mirror
                                                                  ? phongSpecular(n, v, s->l, m.exponent)
@@ -440,6 +470,10 @@ template <class T> Color Tracer<T>::transmittance(const Ray<T>& ray, Interval<T>
     Material textured;
     const Material& m = hit->object->materialAt(hit->point, textured);
     through *= m.filter * m.pigment;
+    // Leaving an object with an interior fade: the light faded over its way inside, from the surface before.
+    if (m.extras->fadeDistance > 0 && glm::dot(ray.dir, hit->normal) > T(0)) {
+      through *= interiorFade(m, float((hit->t - segment.min) * glm::length(ray.dir)));
+    }
     if (through == Color(0)) return through;
     segment.min = hit->t;
   }
@@ -468,6 +502,7 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
         trace(spawnRay(hit, *refracted, *scene_.arithmetic().offset), RayRecord::Kind::Refraction, child, sub);
     Color gathered = transmitTint * t.color;
     if (entering && options_.beers) gathered *= beerAttenuation(m.pigment, float(t.distance));
+    if (entering && m.extras->fadeDistance > 0) gathered *= interiorFade(m, float(t.distance));
     refraction = w.transmission * gathered;
   }
   const Color reflectTint = conventions_.tintReflection ? m.pigment : Color(1);
@@ -499,6 +534,53 @@ bool Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& l
   spawnRayTo(hit, light.position, out.l, n, *scene_.arithmetic().offset, out.ray, out.segment);
   out.occluded = false;
   return out.nl > 0.0f;
+}
+
+template <class T>
+bool Tracer<T>::sampledLight(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, size_t index,
+                             ShadowRay& out, Color& lightColor) {
+  const OffsetPolicy offset = *scene_.arithmetic().offset;
+  // A parallel light shines along its direction from the plane through its position across it; a point beyond
+  // that plane is lit with no shadow (POV-Ray 3.7 manual, "Parallel Lights").
+  const auto target = [&](const Vec3<T>& at) {
+    return light.parallel ? hit.point + *light.parallel * glm::dot(at - hit.point, *light.parallel) : at;
+  };
+  out.l = light.parallel ? *light.parallel : glm::normalize(light.position - hit.point);
+  out.nl = float(glm::dot(n, out.l));
+  spawnRayTo(hit, target(light.position), out.l, n, offset, out.ray, out.segment);
+  out.occluded = false;
+  if (!(out.nl > 0.0f) || light.shadowless) return out.nl > 0.0f;
+  const bool beyond = light.parallel && !(glm::dot(light.position - hit.point, *light.parallel) > T(0));
+  // What reaches the point from `at` along a shadow ray: all, none, or through transparent surfaces.
+  const auto seen = [&](const Ray<T>& ray, const Interval<T>& segment) {
+    if (filteredShadows_) return transmittance(ray, segment);
+    ++counts_.shadow;
+    return scene_.occluded(ray, segment, &lastOccluder_[index]) ? Color(0) : Color(1);
+  };
+  Color share(1);
+  if (!light.area) {
+    if (!beyond) share = seen(out.ray, out.segment);
+  } else if (!beyond) {
+    const AreaLight& area = *light.area;
+    const glm::dvec3 center(light.position), point(hit.point);
+    glm::dvec3 a1, a2;
+    area.axesToward(center, point, a1, a2);
+    const uint64_t key = pointKey(hit.point, index);
+    share = area.share(
+        [&](int i, int j) {
+          const glm::vec2 jitter =
+              area.jitter ? uniformPair(childKey(key, uint64_t(j) * uint64_t(area.size1) + uint64_t(i))) : glm::vec2(0);
+          const Vec3<T> at = target(Vec3<T>(area.point(i, j, center, a1, a2, jitter)));
+          Ray<T> ray;
+          Interval<T> segment;
+          spawnRayTo(hit, at, glm::normalize(at - hit.point), n, offset, ray, segment);
+          return seen(ray, segment);
+        },
+        areaGrid_, areaKnown_);
+  }
+  lightColor *= share;
+  out.occluded = share == Color(0);
+  return true;
 }
 
 template class Tracer<float>;

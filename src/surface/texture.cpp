@@ -2,8 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <mutex>
 
 namespace rt {
+
+const SurfaceExtras* keptExtras(const SurfaceExtras& extras) {
+  static std::mutex mutex;
+  static std::deque<SurfaceExtras> kept;  // a deque never moves what it holds
+  const std::lock_guard<std::mutex> lock(mutex);
+  return &kept.emplace_back(extras);
+}
 
 Material layerMaterial(const FinishTerms& f, const Rgbft& c) {
   Material m;
@@ -22,6 +31,7 @@ Material layerMaterial(const FinishTerms& f, const Rgbft& c) {
   m.ior = f.ior;
   m.brilliance = f.brilliance;
   m.lobe = f.lobe;
+  m.extras = f.extras;
   return m;
 }
 
@@ -35,7 +45,7 @@ Texture bounded(Texture t) {
     b.ambient = glm::max(b.ambient, m.ambient);
     b.diffuse = glm::max(b.diffuse, m.diffuse);
     b.specular = glm::max(b.specular, m.specular);
-    b.reflection = std::max(b.reflection, m.reflection);
+    b.reflection = std::max({b.reflection, m.reflection, m.extras->reflectionMin});  // a variable reflection reaches either
     b.roughness = m.roughness;
     b.exponent = m.exponent;
     b.ior = m.ior;

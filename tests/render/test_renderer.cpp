@@ -6,6 +6,7 @@
 
 #include "raytrace/app/commands.hpp"
 #include "raytrace/util/error.hpp"
+#include "raytrace/parse/povray/scene_builder.hpp"
 #include "raytrace/parse/scene_file.hpp"
 #include "raytrace/render/renderer.hpp"
 #include "raytrace/render/tracer.hpp"
@@ -279,6 +280,84 @@ TEST_CASE("renderRgb8 holds the bytes of render()'s colours, on any number of th
       }
     }
   }
+}
+
+// A white plane under a linear area light of `points` points along x, 10 above, half hidden by a wall at
+// height 5 over x < 0; an orthographic camera looks straight down at `spot` on the plane.
+SceneDesc wallScene(const std::string& light, double spot) {
+  const std::string text = "#version 3.7;\n"
+      "camera { orthographic location <" + std::to_string(spot) + ", 20, 0> sky z look_at <" + std::to_string(spot) +
+      ", 0, 0> right 0.001*x up 0.001*z }\n"
+      "light_source { <0, 10, 0> rgb 1 " + light + " }\n"
+      "box { <-100, 4.9, -100>, <0, 5, 100> pigment { rgb 1 } }\n"
+      "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n";
+  return rt::povray::parsePovRay(text, "wall.pov", rt::povray::PovRayOptions{{}, 1, 1, false});
+}
+
+TEST_CASE("An area light lights a point by the share of its grid the point sees", "[render]") {
+  // At x = 0.5 the wall hides the light's point at x = −1 only: POV-Ray's share for 3 points is 0.75, lit from
+  // the centre (n·l = 10/√100.25).
+  const double nl = 10 / std::sqrt(100.25);
+  checkColor(centre(wallScene("area_light 2*x, 0*z, 3, 1", 0.5)), Color(float(0.75 * nl)), 1e-5);
+  // Six points, three of them hidden at x = 0.1: POV-Ray's share 0.5 (l = (−0.1, 10, 0)).
+  checkColor(centre(wallScene("area_light 2*x, 0*z, 6, 1", 0.1)), Color(float(0.5 * 10 / std::sqrt(100.01))), 1e-5);
+  // A parallel light straight down lights x = 0.5 with n·l = 1, where a point light 10 above x = 0 clears
+  // the wall. Aimed 1 down for 2 across, from (−39.5, 20) through (−19.5, 10), its rays to x = 0.5 run under the
+  // wall; from (0, 10) through (20, 0), they end at the plane through the light, below the wall.
+  checkColor(centre(wallScene("parallel point_at <0, 0, 0>", 0.5)), Color(1), 1e-5);
+  checkColor(centre(wallScene("", 0.5)), Color(float(10 / std::sqrt(100.25))), 1e-5);
+  checkColor(centre(wallScene("parallel point_at <20, 0, 0> translate <-39.5, 10, 0>", 0.5)), Color(0), 1e-5);
+  checkColor(centre(wallScene("parallel point_at <20, 0, 0>", 0.5)), Color(float(1 / std::sqrt(5))), 1e-5);
+}
+
+TEST_CASE("crand lowers each point's diffuse light by crand·u·C·light, u in [0, 1), whatever n·l", "[render]") {
+  // A wall of pigment 0.8 lit at n·l = 1 by a light of 0.5: ambient 0.08 + diffuse 0.5·0.5·0.8 = 0.28, less up
+  // to 0.4·0.5·0.8 = 0.16 (POV-Ray's picture: 0.1195 to 0.2789).
+  const std::string text = "#version 3.7;\n"
+      "camera { orthographic location <0, 0, -10> look_at 0 right 4*x up 4*y }\n"
+      "light_source { <0, 0, -1e6> rgb 0.5 }\n"
+      "plane { -z, 0 pigment { rgb 0.8 } finish { ambient 0.1 diffuse 0.5 crand 0.4 } }\n";
+  const SceneDesc scene = rt::povray::parsePovRay(text, "crand.pov", rt::povray::PovRayOptions{{}, 32, 32, false});
+  const Image image = render(scene, 32, 32, {});
+  float low = 1, high = 0;
+  for (int y = 0; y < 32; ++y) {
+    for (int x = 0; x < 32; ++x) {
+      low = std::min(low, image.at(x, y).r);
+      high = std::max(high, image.at(x, y).r);
+    }
+  }
+  CHECK(low >= 0.12f - 1e-5f);
+  CHECK(high <= 0.28f + 1e-5f);
+  CHECK(low < 0.13f);   // 1024 points: some u near 1, some near 0
+  CHECK(high > 0.27f);
+}
+
+TEST_CASE("A jittered area light gives the same picture on any threads, and pixel() agrees", "[render]") {
+  const std::string text = "#version 3.7;\n"
+      "camera { location <0, 3, -4> look_at 0 }\n"
+      "light_source { <2, 6, -2> rgb 1 area_light 2*x, 2*z, 5, 5 adaptive 1 jitter circular orient }\n"
+      "sphere { <0, 0.7, 0>, 0.7 pigment { rgb <1, 0.5, 0.2> } }\n"
+      "plane { y, 0 pigment { rgb 1 } }\n";
+  const SceneDesc scene = rt::povray::parsePovRay(text, "jitter.pov", rt::povray::PovRayOptions{{}, 45, 37, false});
+  RenderOptions options;
+  options.threads = 1;
+  const Image one = render(scene, 45, 37, options);
+  options.threads = 3;
+  const Image three = render(scene, 45, 37, options);
+  const Arithmetic arithmetic = chooseArithmetic(scene, options.arithmetic);
+  withPrecision(arithmetic.tier, [&](auto tag) {
+    using T = decltype(tag);
+    const Scene<T> s(scene, arithmetic);
+    const Camera<T> camera(scene.camera, 45, 37);
+    Tracer<T> tracer(s, options);
+    for (int y = 0; y < 37; ++y) {
+      for (int x = 0; x < 45; ++x) {
+        CAPTURE(x, y);
+        REQUIRE(one.at(x, y) == three.at(x, y));
+        REQUIRE(one.at(x, y) == tracer.pixel(camera, x, y));
+      }
+    }
+  });
 }
 
 TEST_CASE("Bad shading flags are reported with the accepted values", "[render]") {

@@ -157,6 +157,52 @@ TEST_CASE("Beer's law attenuates by the complement of the pigment", "[shading]")
   CHECK(far == Color(1.0f, 0.0f, 1.0f));
 }
 
+TEST_CASE("POV-Ray's interior fade: half at the fade distance, tinted by the fade colour", "[shading]") {
+  Material m;
+  SurfaceExtras e;
+  m.extras = &e;
+  e.fadeDistance = 1;
+  e.fadePower = 2;
+  e.fadeColor = Color(1.0f, 0.0f, 0.5f);
+  // Through 2 units: a = 1/(1 + 2²) = 0.2, and a + (1 − a)·fadeColor per channel (POV-Ray's picture of a slab
+  // 2 thick in front of a wall of 0.8 shows 0.8, 0.159, 0.479).
+  const Color slab = interiorFade(m, 2.0f);
+  CHECK_THAT(slab.r, WithinAbs(1.0, 1e-6));
+  CHECK_THAT(slab.g, WithinAbs(0.2, 1e-6));
+  CHECK_THAT(slab.b, WithinAbs(0.6, 1e-6));
+  CHECK_THAT(interiorFade(m, 1.0f).g, WithinAbs(0.5, 1e-6));
+  // A power of 1000 or more: exp(−d/fade_distance).
+  e.fadePower = 1000;
+  e.fadeDistance = 0.5f;
+  CHECK_THAT(interiorFade(m, 1.0f).g, WithinAbs(std::exp(-2.0), 1e-6));
+  CHECK(interiorFade(m, std::numeric_limits<float>::infinity()) == e.fadeColor);
+}
+
+TEST_CASE("POV-Ray's variable reflection: from its minimum to its maximum by the falloff, or by Fresnel",
+          "[shading]") {
+  Material m;
+  SurfaceExtras e;
+  m.extras = &e;
+  e.reflectionMin = 0.2f;
+  m.reflection = 0.8f;
+  e.reflectionFalloff = 1;
+  m.ior = 1.5f;
+  // POV-Ray's picture of a black mirror ball in a white sky, `reflection { 0.2, 0.8 }`: 0.266 at cos θ 0.892.
+  CHECK_THAT(variableReflection(m, 1.0f), WithinAbs(0.2, 1e-6));
+  CHECK_THAT(variableReflection(m, 0.892f), WithinAbs(0.2648, 1e-4));
+  CHECK_THAT(variableReflection(m, 0.0f), WithinAbs(0.8, 1e-6));
+  e.reflectionFalloff = 3;  // POV-Ray: 0.209 at cos θ 0.758
+  CHECK_THAT(variableReflection(m, 0.758f), WithinAbs(0.2 + 0.6 * std::pow(0.242, 3), 1e-5));
+  // Fresnel: ((n − 1)/(n + 1))² = 0.04 head-on at n = 1.5, 1 at grazing; `reflection { 0.1, 1 fresnel }` is
+  // 0.136 head-on in POV-Ray's picture.
+  CHECK_THAT(fresnelReflectance(1.0f, 1.5f), WithinAbs(0.04, 1e-6));
+  CHECK_THAT(fresnelReflectance(0.0f, 1.5f), WithinAbs(1.0, 1e-6));
+  e.reflectionFresnel = true;
+  e.reflectionMin = 0.1f;
+  m.reflection = 1;
+  CHECK_THAT(variableReflection(m, 1.0f), WithinAbs(0.136, 1e-6));
+}
+
 TEST_CASE("Shading terms stay finite for random unit vectors", "[shading]") {
   const unsigned seed = 473;
   CAPTURE(seed);

@@ -43,6 +43,25 @@ TEST_CASE("light shape: a spotlight's cone, its smooth edge and its tightness, a
   CHECK(spotAt(LightShape(defaults), 38.59) == Approx(0.456).margin(0.004));
 }
 
+TEST_CASE("light shape: a cylinder light's radius and falloff are distances from its axis", "[light]") {
+  LightDesc l;
+  l.position = {0, 10, 0};
+  l.spot = SpotDesc{{0, 0, 0}, 1, 2, 0, true};
+  const LightShape s(l);
+  // The point of the plane y = 0 at `x` from the axis.
+  const auto at = [&](double x) {
+    const glm::dvec3 d(x, -10, 0);
+    return s.at(glm::normalize(d), glm::length(d));
+  };
+  // POV-Ray: radius 1, falloff 2, a light 10 above the plane.
+  CHECK(at(0.5) == 1);
+  CHECK(at(1.55) == Approx(0.428).margin(0.004));
+  CHECK(at(1.85) == Approx(0.0602).margin(0.003));
+  CHECK(at(1.95) == Approx(0.0071).margin(0.002));
+  CHECK(at(2.05) == 0);
+  CHECK(s.at(glm::dvec3(0, 1, 0), 1) == 0);  // behind the light
+}
+
 TEST_CASE("light shape: fading halves the light at its distance and follows its power", "[light]") {
   LightDesc l;
   l.fadeDistance = 0.5;

@@ -9,6 +9,7 @@
 #include "raytrace/shapes/object.hpp"
 #include "raytrace/scene/arithmetic.hpp"
 #include "raytrace/scene/description.hpp"
+#include "raytrace/scene/area_light.hpp"
 #include "raytrace/scene/light_shape.hpp"
 
 namespace rt {
@@ -20,6 +21,10 @@ template <class T> struct Light {
   Color color;
   const LightShape* shape = nullptr;
   bool shadowless = false;  // casts no shadows: no shadow ray is traced toward it
+  // An area light or a parallel one (`sampled`) is lit by the tracer one hit at a time, not in packets.
+  bool sampled = false;
+  const AreaLight* area = nullptr;
+  std::optional<Vec3<T>> parallel;  // a parallel light's unit direction toward the light
 };
 
 template <class T> class Scene {
@@ -61,6 +66,7 @@ template <class T> class Scene {
   Arithmetic arithmetic_;
   std::vector<Light<T>> lights_;
   std::vector<LightShape> shapes_;  // lights_[i].shape points into it
+  std::vector<AreaLight> areas_;    // and lights_[i].area into this
   std::vector<std::unique_ptr<Object<T>>> objects_;
   std::vector<const Object<T>*> scanned_;  // tested one by one in file order: planes, or all without hierarchy
   std::optional<Bvh<T>> hierarchy_;

@@ -47,6 +47,20 @@ template <class T> std::optional<Vec3<T>> refractDirection(const Vec3<T>& d, con
 // pigment C, exp(−(1 − C)·0.15·distance).
 Color beerAttenuation(const Color& pigment, float distance);
 
+// POV-Ray's interior fade (SurfaceExtras::fadeDistance, POV-Ray 3.7 manual "Attenuation"): the fraction of each
+// channel left after `distance` inside, a + (1 − a)·fadeColor with a = 1/(1 + (distance/fadeDistance)^fadePower),
+// or a = exp(−distance/fadeDistance) for a fadePower of 1000 or more. An infinite path keeps fadeColor.
+Color interiorFade(const Material& m, float distance);
+
+// Fresnel's reflectance of unpolarized light at a dielectric of relative index `ior`, cos θ = cosTheta (the
+// exact formula, Cook and Torrance 1982, eq. 12 form): ½((g − c)/(g + c))²(1 + ((c(g + c) − 1)/(c(g − c) + 1))²)
+// with g = √(ior² + c² − 1); 1 where g is not real (total internal reflection).
+float fresnelReflectance(float cosTheta, float ior);
+
+// POV-Ray's variable reflection at cos θ between the normal and the direction to the viewer (Material's
+// reflection and SurfaceExtras' reflectionMin, reflectionFalloff, reflectionFresnel; POV-Ray 3.7 manual, "Specular Reflection").
+float variableReflection(const Material& m, float cosTheta);
+
 // How a hit's colour is split between its local shading and its two secondary rays (§c.5): local
 // (1−f)(1−k), reflection (1−f)k + fF, transmission f(1−F) for filter f, reflection k and Fresnel
 // reflectance F. When reflection does not mix (the .cli rule, cs3451 §A.4) local keeps (1−f) whole.

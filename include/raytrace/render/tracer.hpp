@@ -142,6 +142,11 @@ template <class T> class Tracer {
   // It is written into `out` in place: it is made for every hit and light, and a returned copy would stall
   // (docs/performance-notes.md, "Shadow rays built in place").
   bool shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, ShadowRay& out) const;
+  // The shadow ray toward a light the packets leave out (Light::sampled) as shadowRay() makes it, with the light
+  // that reaches the point multiplied into `lightColor`: an area light's share of its grid (AreaLight::share),
+  // a parallel light's along its direction. False when the light cannot light the point.
+  bool sampledLight(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, size_t index, ShadowRay& out,
+                    Color& lightColor);
   // Whether a secondary ray of accumulated weight `weight` at `depth` is worth tracing and its eye ray's tree
   // has room for it (docs/reference/stability.md F12); a ray it says yes to is counted against that room.
   bool matters(float weight, int depth);
@@ -164,6 +169,8 @@ template <class T> class Tracer {
   const IrradianceCache<T>* cache_ = nullptr;
   std::vector<IrradianceRecord<T>>* made_ = nullptr;
   std::vector<Vec3<T>> directions_;  // a record's gather directions
+  std::vector<Color> areaGrid_;      // an area light's grid, sampled (sampledLight)
+  std::vector<char> areaKnown_;
 };
 
 }  // namespace rt

@@ -2,6 +2,7 @@
 // Both scene languages (POV subset and .cli) produce this; Scene<T> (scene.hpp) is built from it.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +48,17 @@ struct CameraDesc {
 struct SpotDesc {
   glm::dvec3 pointAt{0};
   double radius = 30, falloff = 45, tightness = 0;  // degrees, degrees, exponent: POV-Ray's defaults
+  // POV-Ray's `cylinder` light: the same fringe across the distance from the axis, radius and falloff lengths.
+  bool cylinder = false;
+};
+
+// A POV-Ray area light (docs/povray-language.md, "Lights"): a size1 × size2 grid of points over the rectangle
+// spanned by the two axes about the light's position, sampled for its shadows.
+struct AreaDesc {
+  glm::dvec3 axis1{0}, axis2{0};
+  int size1 = 1, size2 = 1;
+  int adaptive = -1;  // the subdivisions before the adaptive phase; -1 (no `adaptive`): every point
+  bool jitter = false, circular = false, orient = false;
 };
 
 struct LightDesc {
@@ -54,6 +66,10 @@ struct LightDesc {
   Color color{1};
   // POV-Ray's light modifiers; a course light has none.
   std::optional<SpotDesc> spot;
+  // An area light's grid, and a `parallel` light's point_at (its rays all along one direction), held by pointer:
+  // the plain lights of a scene, a million in some, pay 16 bytes each for them.
+  std::shared_ptr<const AreaDesc> area;
+  std::shared_ptr<const glm::dvec3> parallelTo;
   double fadeDistance = 0, fadePower = 0;  // 0: no fading
   bool shadowless = false;
 };

@@ -15,6 +15,32 @@ struct Finish {
   double ior = 1;
 };
 
+// What POV-Ray adds to a surface beyond the course's terms, seldom used: a Material points to it, so that the
+// Materials of other surfaces (a textured one is made at every hit) stay as small and quick to make as before.
+struct SurfaceExtras {
+  // The interior's fade: light that travelled d inside is multiplied by a + (1 − a)·fadeColor with
+  // a = 1 / (1 + (d / fadeDistance)^fadePower) (POV-Ray 3.7 manual, "Attenuation"); fadeDistance 0: none.
+  float fadeDistance = 0, fadePower = 0;
+  Color fadeColor{0};
+  // Variable reflection (`reflection { min, max falloff F fresnel }`): reflectionMin facing the viewer up to
+  // the Material's `reflection` at grazing angles, by (1 − cos θ)^reflectionFalloff or by Fresnel's reflectance
+  // at its `ior` (variableReflection(), shading.hpp). reflectionFalloff 0: a constant `reflection`.
+  float reflectionMin = 0, reflectionFalloff = 0;
+  // crand: each light's diffuse term loses crand·u·C·light, u uniform in [0, 1) at each point (fitted to
+  // POV-Ray's pictures; its own u is random at each render, ours keyed by the point, the same at each).
+  float crand = 0;
+  bool reflectionFresnel = false;
+
+  // Whether any of them changes a picture.
+  bool any() const { return fadeDistance > 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0; }
+};
+
+// The extras of a surface that has none, which every Material points to until given others.
+inline const SurfaceExtras kNoExtras{};
+
+// A lasting copy of `extras` for Materials to point to (kept for the rest of the run; safe on any thread).
+const SurfaceExtras* keptExtras(const SurfaceExtras& extras);
+
 // What shading reads of a surface, in either scene language. Every object carries one, so it holds nothing
 // else: the finish as written stays in the scene's description (ObjectDesc).
 struct Material {
@@ -28,6 +54,7 @@ struct Material {
   float reflection = 0;  // POV `reflection`, .cli Krefl
   float ior = 1;
   float brilliance = 1;  // POV-Ray's brilliance: the diffuse term takes (n·l) to this power
+  const SurfaceExtras* extras = &kNoExtras;  // POV-Ray's interior fade, variable reflection and crand
   // The highlight's lobe: about the half vector (course, .cli, POV-Ray's `specular`) or about the mirror
   // direction (POV-Ray's `phong`).
   enum class Lobe : unsigned char { HalfVector, Mirror } lobe = Lobe::HalfVector;

@@ -13,12 +13,14 @@ namespace rt {
 
 // A finish's terms that scale the pigment's colour.
 struct FinishTerms {
-  Color ambient{0};  // POV-Ray's ambient times global_settings' ambient_light
+  Color ambient{0};  // POV-Ray's ambient times global_settings' ambient_light, plus its emission
+  Color emission{0};  // POV-Ray 3.7's emission, which ambient_light does not scale (scene_builder's ambientScaled)
   float diffuse = 0;
   Color specular{0};
   float metallic = 0;  // the highlight's share that takes the pigment's colour
   Material::Lobe lobe = Material::Lobe::HalfVector;
   float exponent = 0, roughness = 1, reflection = 0, ior = 1, brilliance = 1;
+  const SurfaceExtras* extras = &kNoExtras;
 };
 
 struct Texture;

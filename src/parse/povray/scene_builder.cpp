@@ -257,7 +257,9 @@ class Builder {
   // the object's transforms once they are known (object()).
   bool lightHere(const Item& it) {
     if (it.kind != Item::Kind::Node || it.node->keyword != "light_source") return false;
+    nestedLight_ = true;
     light(*it.node);
+    nestedLight_ = false;
     return true;
   }
 
@@ -540,11 +542,20 @@ class Builder {
     if (i < n.items.size() && n.items[i].kind == Item::Kind::Value) l.color = colourOf(n.items[i++].value).rgb;
     std::vector<TransformStep> steps;
     // The cone's values may come before `spotlight`, and mean nothing to a light that is not one.
-    bool isSpot = l.spot.has_value();
+    bool isSpot = l.spot.has_value(), parallel = l.parallelTo != nullptr;
     SpotDesc spot = l.spot.value_or(SpotDesc{});
+    if (l.parallelTo) spot.pointAt = *l.parallelTo;
+    std::optional<AreaDesc> area = l.area ? std::optional<AreaDesc>(*l.area) : std::nullopt;
+    std::optional<double> radius, falloff;
+    const Item* tightness = nullptr;
+    const Node* looksLike = nullptr;
     for (; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
       if (transformItem(n, i, steps)) continue;
+      if (it.kind == Item::Kind::Node && it.node->keyword == "looks_like") {
+        looksLike = it.node.get();
+        continue;
+      }
       if (it.kind != Item::Kind::Keyword) {
         refusals_.refuse(it, "light_source");
         continue;
@@ -554,29 +565,93 @@ class Builder {
         valueAfter(n, i);
       } else if (w == "shadowless") {
         l.shadowless = true;
-      } else if (w == "spotlight") {
+      } else if (w == "spotlight" || w == "cylinder") {
         isSpot = true;
+        spot.cylinder = w == "cylinder";
+      } else if (w == "parallel") {
+        parallel = true;
+      } else if (w == "area_light") {
+        area = areaLight(n, i, area.value_or(AreaDesc{}));
+      } else if ((w == "jitter" || w == "circular" || w == "orient") && area) {
+        (w == "jitter" ? area->jitter : w == "circular" ? area->circular : area->orient) = true;
+      } else if (w == "area_illumination") {
+        // POV-Ray's experimental lighting from each point of the grid; off, the light's centre lights.
+        const Value* v = valueAfter(n, i);
+        if (!v || v->v[0] != 0) refuse(it.loc, w);
       } else if (w == "point_at" || w == "radius" || w == "falloff" || w == "tightness" || w == "fade_distance" ||
-                 w == "fade_power") {
+                 w == "fade_power" || (w == "adaptive" && area)) {
         const Value* v = valueAfter(n, i);
         if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(w) + "' needs a value");
         if (w == "point_at") spot.pointAt = vec3(*v);
-        else if (w == "radius") spot.radius = v->v[0];
-        else if (w == "falloff") spot.falloff = v->v[0];
-        else if (w == "tightness") spot.tightness = v->v[0];
+        else if (w == "radius") radius = v->v[0];
+        else if (w == "falloff") falloff = v->v[0];
+        else if (w == "tightness") spot.tightness = v->v[0], tightness = &it;
         else if (w == "fade_distance") l.fadeDistance = v->v[0];
+        else if (w == "adaptive") area->adaptive = std::max(0, int(v->v[0]));
         else l.fadePower = v->v[0];
       } else {
         refuse(it.loc, w);
       }
     }
+    // A cylinder light's radius and falloff are lengths, 0.75 and 1 unless given (manual, "Cylindrical Lights").
+    spot.radius = radius.value_or(spot.cylinder && !l.spot ? 0.75 : spot.radius);
+    spot.falloff = falloff.value_or(spot.cylinder && !l.spot ? 1.0 : spot.falloff);
+    if (spot.cylinder && spot.tightness != 0 && tightness) refuse(tightness->loc, "a cylinder light's tightness");
     if (isSpot) l.spot = spot;
+    if (parallel) l.parallelTo = std::make_shared<const glm::dvec3>(spot.pointAt);
+    if (area) l.area = std::make_shared<const AreaDesc>(*area);
+    if (looksLike) lookLike(*looksLike, l.position, steps);
     moveLight(l, composeTransforms<double>(steps));
+  }
+
+  // `area_light <axis1>, <axis2>, size1, size2` after the word at i.
+  AreaDesc areaLight(const Node& n, size_t& i, AreaDesc area) {
+    const Item& word = n.items[i];
+    const Value* v[4];
+    for (const Value*& value : v) {
+      value = valueAfter(n, i);
+      if (!value || !value->numeric()) throw ParseError(word.loc, "'area_light' needs two axes and two sizes");
+    }
+    area.axis1 = vec3(*v[0]);
+    area.axis2 = vec3(*v[1]);
+    area.size1 = std::max(1, int(v[2]->v[0]));
+    area.size2 = std::max(1, int(v[3]->v[0]));
+    return area;
+  }
+
+  // A light's looks_like object: drawn about the light's position and moved with it, casting no shadow
+  // (POV-Ray 3.7 manual, "Looks_like"). A light inside an object would move it with that object: refused.
+  void lookLike(const Node& n, const glm::dvec3& position, const std::vector<TransformStep>& steps) {
+    if (nestedLight_) {
+      refuse(n.loc, "looks_like in a light inside an object");
+      return;
+    }
+    for (const Item& it : n.items) {
+      if (!isObject(it)) {
+        refuseItem(it, " in looks_like");
+        continue;
+      }
+      ObjectDesc o;
+      if (!object(*it.node, o)) continue;
+      std::vector<TransformStep> moves{{TransformStep::Kind::Translate, position}};
+      moves.insert(moves.end(), steps.begin(), steps.end());
+      o.transforms.insert(o.transforms.end(), moves.begin(), moves.end());
+      moveTextures(o, glm::inverse(composeTransforms<double>(moves)));
+      o.noShadow = true;
+      add(std::move(o), it.node->loc);
+    }
   }
 
   static void moveLight(LightDesc& l, const glm::dmat4& m) {
     l.position = glm::dvec3(m * glm::dvec4(l.position, 1));
     if (l.spot) l.spot->pointAt = glm::dvec3(m * glm::dvec4(l.spot->pointAt, 1));
+    if (l.parallelTo) l.parallelTo = std::make_shared<const glm::dvec3>(m * glm::dvec4(*l.parallelTo, 1));
+    if (l.area) {
+      AreaDesc a = *l.area;
+      a.axis1 = glm::dvec3(m * glm::dvec4(a.axis1, 0));
+      a.axis2 = glm::dvec3(m * glm::dvec4(a.axis2, 0));
+      l.area = std::make_shared<const AreaDesc>(a);
+    }
   }
 
   void skySphere(const Node& n) {
@@ -671,6 +746,7 @@ class Builder {
 
  public:
   Color ambientLight_{1};
+  bool nestedLight_ = false;  // reading a light inside an object
   std::optional<double> assumedGamma_;
 
  private:
@@ -694,7 +770,7 @@ class Builder {
 // The texture with every layer's ambient term scaled, in the textures of its patterns too.
 Texture ambientScaled(Texture t, const Color& light) {
   for (TextureLayer& layer : t.layers) {
-    layer.finish.ambient *= light;
+    layer.finish.ambient = (layer.finish.ambient - layer.finish.emission) * light + layer.finish.emission;
     if (!layer.pattern) continue;
     auto pattern = std::make_shared<TexturePattern>(*layer.pattern);
     for (auto& sub : pattern->textures) sub = std::make_shared<const Texture>(ambientScaled(*sub, light));

@@ -328,6 +328,32 @@ void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, R
   }
 }
 
+// `reflection { [min,] max [fresnel on] [falloff F] }` (POV-Ray 3.7 manual, "Specular Reflection"): one value
+// reflects the same at every angle, two vary from the first facing the viewer to the second at grazing angles.
+void readReflection(const Node& n, PovFinish& f, Refusals& refusals) {
+  std::vector<double> values;
+  for (size_t i = 0; i < n.items.size(); ++i) {
+    const Item& r = n.items[i];
+    if (r.kind == Item::Kind::Value && r.value.numeric()) {
+      values.push_back(colourOf(r.value).rgb.r);
+      continue;
+    }
+    const Value* v = r.kind == Item::Kind::Keyword ? valueAfter(n, i) : nullptr;
+    if (r.kind == Item::Kind::Keyword && r.word == "fresnel") {
+      f.reflectionFresnel = !v || v->v[0] != 0;
+    } else if (r.kind == Item::Kind::Keyword && r.word == "falloff" && v && v->numeric()) {
+      f.reflectionFalloff = v->v[0];
+    } else if (r.kind == Item::Kind::Keyword && r.word == "exponent" && v && v->numeric() && v->v[0] == 1) {
+      continue;  // POV-Ray's default: reflected light as it is
+    } else {
+      refusals.refuse(r, "reflection");
+    }
+  }
+  if (values.empty()) return;
+  f.reflection = values.back();
+  f.reflectionMin = values.size() > 1 ? std::optional<double>(values.front()) : std::nullopt;
+}
+
 void readFinish(const Node& n, PovFinish& f, Refusals& refusals) {
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
@@ -336,10 +362,7 @@ void readFinish(const Node& n, PovFinish& f, Refusals& refusals) {
       continue;
     }
     if (it.kind == Item::Kind::Node && it.node->keyword == "reflection") {
-      for (const Item& r : it.node->items) {
-        if (r.kind == Item::Kind::Value && r.value.numeric()) f.reflection = colourOf(r.value).rgb.r;
-        else refusals.refuse(r, "reflection");
-      }
+      readReflection(*it.node, f, refusals);
       continue;
     }
     if (it.kind != Item::Kind::Keyword) {
@@ -360,6 +383,10 @@ void readFinish(const Node& n, PovFinish& f, Refusals& refusals) {
     const double x = v->v[0];
     if (w == "ambient") {
       f.ambient = colourOf(*v).rgb;
+    } else if (w == "crand") {
+      f.crand = x;
+    } else if (w == "emission") {
+      f.emission = colourOf(*v).rgb;
     } else if (w == "diffuse") {
       f.diffuse = x;
     } else if (w == "phong") {
@@ -372,6 +399,7 @@ void readFinish(const Node& n, PovFinish& f, Refusals& refusals) {
       f.roughness = x;
     } else if (w == "reflection") {
       f.reflection = x;
+      f.reflectionMin.reset();
     } else if (w == "brilliance") {
       f.brilliance = x;
     } else {
@@ -459,16 +487,29 @@ void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps
   }
 }
 
-FinishTerms finishTerms(const PovFinish& f, double ior) {
+FinishTerms finishTerms(const PovFinish& f, const Surface& s) {
   FinishTerms t;
-  t.ambient = f.ambient;
+  t.ambient = f.ambient + f.emission;
+  t.emission = f.emission;
+  SurfaceExtras extras;
+  extras.crand = float(f.crand);
+  // Fresnel with a single value varies from 0 (POV-Ray: `reflection { 1 fresnel }` is a dielectric's mirror).
+  if (f.reflectionMin || f.reflectionFresnel) {
+    extras.reflectionMin = float(f.reflectionMin.value_or(f.reflectionFresnel ? 0.0 : f.reflection));
+    extras.reflectionFalloff = float(f.reflectionFalloff);
+    extras.reflectionFresnel = f.reflectionFresnel;
+  }
+  extras.fadeDistance = s.fadePower > 0 ? float(s.fadeDistance) : 0;  // both 0 by default: no fade
+  extras.fadePower = float(s.fadePower);
+  extras.fadeColor = s.fadeColor;
+  if (extras.any()) t.extras = keptExtras(extras);
   t.diffuse = float(f.diffuse);
   // POV-Ray's highlights are white; `specular` has exponent 1/roughness, `phong` its phong_size.
   t.specular = Color(float(f.specular > 0 ? f.specular : f.phong));
   t.exponent = float(f.specular > 0 ? 1 / f.roughness : f.phongSize);
   t.roughness = float(f.roughness);
   t.reflection = float(f.reflection);
-  t.ior = float(ior);
+  t.ior = float(s.ior);
   t.brilliance = float(f.brilliance);
   t.metallic = float(f.metallic);
   t.lobe = f.specular > 0 ? Material::Lobe::HalfVector : Material::Lobe::Mirror;
@@ -485,9 +526,12 @@ std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals) 
   return p;
 }
 
+// An emission needs a Texture too: ambient_light scales a constant material's whole ambient term, and a
+// texture's ambient alone (scene_builder's scaleAmbient).
 bool Surface::patterned() const {
-  const Pigment& p = layers[0].pigment;
-  return layers.size() > 1 || p.pattern || p.average || layers[0].pattern || layers[0].normal;
+  const SurfaceLayer& l = layers[0];
+  return layers.size() > 1 || l.pigment.pattern || l.pigment.average || l.pattern || l.normal ||
+         l.finish.emission != Color(0);
 }
 
 namespace {
@@ -595,9 +639,13 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
   } else if (k == "interior") {
     for (size_t i = 0; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
-      const Value* v = it.kind == Item::Kind::Keyword && it.word == "ior" ? valueAfter(n, i) : nullptr;
-      if (v && v->type == Value::Type::Float) {
-        s.ior = v->v[0];
+      const bool known = it.kind == Item::Kind::Keyword && (it.word == "ior" || it.word == "fade_distance" ||
+                                                            it.word == "fade_power" || it.word == "fade_color");
+      const Value* v = known ? valueAfter(n, i) : nullptr;
+      if (v && v->numeric() && it.word == "fade_color") {
+        s.fadeColor = colourOf(*v).rgb;
+      } else if (v && v->type == Value::Type::Float) {
+        (it.word == "ior" ? s.ior : it.word == "fade_distance" ? s.fadeDistance : s.fadePower) = v->v[0];
       } else if (it.kind == Item::Kind::Node && it.node->keyword == "interior") {
         readSurfaceItem(*it.node, s, defaults, refusals);
       } else {
@@ -611,7 +659,7 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
 
 Material constantMaterial(const Surface& s) {
   const SurfaceLayer& top = s.layers.back();
-  return layerMaterial(finishTerms(top.finish, s.ior), top.pigment.solid);
+  return layerMaterial(finishTerms(top.finish, s), top.pigment.solid);
 }
 
 Finish writtenFinish(const Surface& s) {
@@ -636,7 +684,7 @@ Texture makeTexture(const Surface& s, const std::vector<TransformStep>& after) {
       normal = std::make_shared<Normal>(*layer.normal);
       normal->fromTexture = glm::inverse(composeTransforms<double>(layer.normalSteps));
     }
-    t.layers.push_back({p, finishTerms(layer.finish, s.ior), layer.pattern, std::move(normal)});
+    t.layers.push_back({p, finishTerms(layer.finish, s), layer.pattern, std::move(normal)});
   }
   t.fromWorld = glm::inverse(composeTransforms<double>(after));
   return t;

@@ -106,6 +106,93 @@ light_source { Lamp rotate 90*z }
   CHECK(s.lights[2].color == Color(1, 0, 0));
 }
 
+TEST_CASE("povray scene: area, parallel and cylinder lights; looks_like draws its object at the light", "[povray]") {
+  const SceneDesc s = scene(R"(
+light_source { <0, 10, 0> White area_light 2*x, 2*z, 5, 3 adaptive 1 jitter circular orient rotate 90*y }
+light_source { <0, 10, 0> White parallel point_at <0, 0, 1> translate x }
+light_source { <0, 10, 0> White cylinder point_at 0 radius 2 }
+light_source { <0, 5, 0> White looks_like { sphere { 0, 1 } } translate x }
+)");
+  REQUIRE(s.lights.size() == 4);
+  REQUIRE(s.lights[0].area);
+  const AreaDesc& a = *s.lights[0].area;
+  CHECK(a.axis1.x == Approx(0).margin(1e-12));  // turned with the light: 2x becomes −2z
+  CHECK(a.axis1.z == Approx(-2));
+  CHECK(a.axis2.x == Approx(2));
+  CHECK(a.size1 == 5);
+  CHECK(a.size2 == 3);
+  CHECK(a.adaptive == 1);
+  CHECK((a.jitter && a.circular && a.orient));
+  CHECK_FALSE(s.lights[1].area);
+  REQUIRE(s.lights[1].parallelTo);
+  CHECK(*s.lights[1].parallelTo == glm::dvec3(1, 0, 1));
+  CHECK_FALSE(s.lights[1].spot);
+  REQUIRE(s.lights[2].spot);
+  CHECK(s.lights[2].spot->cylinder);
+  CHECK(s.lights[2].spot->radius == 2);
+  CHECK(s.lights[2].spot->falloff == 1);  // a cylinder light's default
+  REQUIRE(s.objects.size() == 1);  // the looks_like sphere, about the light and moved with it, casting no shadow
+  CHECK(s.objects[0].noShadow);
+  CHECK(glm::dvec3(s.objects[0].worldFromObject() * glm::dvec4(0, 0, 0, 1)) == glm::dvec3(1, 5, 0));
+  CHECK(s.lights[3].position == glm::dvec3(1, 5, 0));
+}
+
+TEST_CASE("povray scene: light modifiers that are not drawn yet are refused where they are written", "[povray]") {
+  CHECK(failure("light_source { 0, White area_light x, z, 2, 2 area_illumination }\n") ==
+        "scene.pov:3:47: error: 'area_illumination' is not supported yet");
+  CHECK(failure("light_source { 0, White cylinder tightness 3 }\n") ==
+        "scene.pov:3:34: error: 'a cylinder light's tightness' is not supported yet");
+  CHECK(failure("union { sphere { 0, 1 } light_source { 0, White looks_like { sphere { 0, 1 } } } }\n") ==
+        "scene.pov:3:49: error: 'looks_like in a light inside an object' is not supported yet");
+  CHECK(failure("light_source { 0, White area_light x, z, 2 }\n") ==
+        "scene.pov:3:25: error: 'area_light' needs two axes and two sizes");
+}
+
+TEST_CASE("povray scene: a finish's emission is added to its ambient, which alone ambient_light scales; an "
+          "interior's fade", "[povray]") {
+  const SceneDesc s = scene(R"(
+global_settings { ambient_light 0.5 }
+sphere { 0, 1 pigment { rgb <1, 0.5, 0.25> } finish { ambient 0.2 emission 0.5 }
+         interior { fade_distance 2 fade_power 3 fade_color <1, 0, 0> } }
+sphere { 0, 1 interior { fade_distance 2 } }
+)");
+  REQUIRE(s.objects.size() == 2);
+  REQUIRE(s.objects[0].texture);
+  const Material m = s.objects[0].texture->at(glm::dvec3(0));
+  CHECK(m.ambient.r == Approx(0.6f));  // (0.2·0.5 + 0.5)·C
+  CHECK(m.ambient.g == Approx(0.3f));
+  CHECK(m.ambient.b == Approx(0.15f));
+  CHECK(m.extras->fadeDistance == 2);
+  CHECK(m.extras->fadePower == 3);
+  CHECK(m.extras->fadeColor == Color(1, 0, 0));
+  CHECK(s.objects[1].material.extras->fadeDistance == 0);  // fade_power 0, its default: no fade
+  CHECK(scene("sphere { 0, 1 finish { crand 0.05 } }\n").objects[0].material.extras->crand == 0.05f);
+}
+
+TEST_CASE("povray scene: a reflection block: one value, two that vary with the angle, falloff and fresnel",
+          "[povray]") {
+  const SceneDesc s = scene(R"(
+sphere { 0, 1 finish { reflection { 0.3 } } }
+sphere { 0, 1 finish { reflection { 0.2, 0.8 falloff 3 } } }
+sphere { 0, 1 finish { reflection { 1 fresnel } } interior { ior 1.5 } }
+sphere { 0, 1 finish { reflection { 0.1, 1 fresnel on exponent 1 } } }
+)");
+  REQUIRE(s.objects.size() == 4);
+  CHECK(s.objects[0].material.reflection == 0.3f);
+  CHECK(s.objects[0].material.extras->reflectionFalloff == 0);  // constant
+  CHECK(s.objects[1].material.extras->reflectionMin == 0.2f);
+  CHECK(s.objects[1].material.reflection == 0.8f);
+  CHECK(s.objects[1].material.extras->reflectionFalloff == 3);
+  CHECK(s.objects[2].material.extras->reflectionFresnel);
+  CHECK(s.objects[2].material.extras->reflectionMin == 0);  // one value with fresnel: from 0 (POV-Ray's picture)
+  CHECK(s.objects[2].material.ior == 1.5f);
+  CHECK(s.objects[3].material.extras->reflectionMin == 0.1f);
+  CHECK(failure("sphere { 0, 1 finish { reflection { 0.5 exponent 2 } } }\n") ==
+        "scene.pov:3:41: error: 'exponent' is not supported yet");
+  CHECK(failure("sphere { 0, 1 finish { reflection { 0.5 metallic } } }\n") ==
+        "scene.pov:3:41: error: 'metallic' is not supported yet");
+}
+
 TEST_CASE("povray scene: textures take the transforms after them, at every level, and pass to CSG children",
           "[povray]") {
   const SceneDesc s = scene(R"(

@@ -40,6 +40,12 @@ bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, 
 // A finish with POV-Ray 3.7's defaults.
 struct PovFinish {
   Color ambient{0.1f};
+  Color emission{0};
+  double crand = 0;
+  // A reflection block's minimum (unset: `reflection` at every angle), falloff and fresnel (Material).
+  std::optional<double> reflectionMin;
+  double reflectionFalloff = 1;
+  bool reflectionFresnel = false;
   double diffuse = 0.6, phong = 0, phongSize = 40, specular = 0, roughness = 0.05, reflection = 0, brilliance = 1, metallic = 0;
 };
 
@@ -55,6 +61,8 @@ struct SurfaceLayer {
 struct Surface {
   std::vector<SurfaceLayer> layers{1};  // the bottom layer first
   double ior = 1;
+  double fadeDistance = 0, fadePower = 0;  // the interior's fade (Material)
+  Color fadeColor{0};
   bool patterned() const;  // whether some layer's colour varies, or there are layers: a Texture is needed
 };
 
