@@ -12,6 +12,7 @@ const PatternKind* patternKind(std::string_view name) {
       {"bozo", false, makeBozo},
       {"checker", false, makeChecker},
       {"cylindrical", false, makeCylindrical},
+      {"function", false, makeFunctionPattern},
       {"gradient", true, makeGradient},
       {"granite", false, makeGranite},
       {"marble", false, makeMarble, kTriangle, true},

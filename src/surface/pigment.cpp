@@ -27,6 +27,20 @@ double shaped(double v, Wave wave, double exponent) {
 
 }  // namespace
 
+// frequency and phase, then the value wrapped as POV-Ray wraps it: modulo 1.00001, which keeps 1 itself where
+// the pattern reaches it (and shows as a slow drift far from the origin, which POV-Ray's pictures have too).
+double Pigment::wrapped(double raw) const {
+  double v = std::fmod(raw * frequency + phase, 1.00001);
+  if (v < 0) v -= std::floor(v);
+  return shaped(v, wave, exponent);
+}
+
+double Pigment::value(const glm::dvec3& p) const {
+  if (!pattern) return 0;
+  const double raw = pattern->value(glm::dvec3(fromTexture * glm::dvec4(p, 1)));
+  return pattern->blocks() > 0 ? raw : wrapped(raw);
+}
+
 Rgbft Pigment::at(const glm::dvec3& p) const {
   if (!pattern) return solid;
   const glm::dvec3 q = glm::dvec3(fromTexture * glm::dvec4(p, 1));
@@ -35,11 +49,7 @@ Rgbft Pigment::at(const glm::dvec3& p) const {
     const size_t i = std::min(size_t(raw), list.size() - 1);
     return list[i]->at(q);
   }
-  // frequency and phase, then the value wrapped as POV-Ray wraps it: modulo 1.00001, which keeps 1 itself where
-  // the pattern reaches it (and shows as a slow drift far from the origin, which POV-Ray's pictures have too).
-  double v = std::fmod(raw * frequency + phase, 1.00001);
-  if (v < 0) v -= std::floor(v);
-  v = shaped(v, wave, exponent);
+  const double v = wrapped(raw);
   if (map.empty()) return solid;
   if (v <= map.front().value) return map.front().pigment->at(q);
   if (v >= map.back().value) return map.back().pigment->at(q);

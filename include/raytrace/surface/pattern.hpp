@@ -11,6 +11,8 @@
 
 namespace rt {
 
+class Function;
+
 class Pattern {
  public:
   virtual ~Pattern() = default;
@@ -42,6 +44,7 @@ struct PatternArgs {
   Turbulence turbulence;  // the pigment's turbulence, octaves, omega and lambda
   NoiseChoice noise;
   double agateTurbulence = 1;
+  std::shared_ptr<const Function> function;  // the function pattern's
 };
 
 struct PatternKind {

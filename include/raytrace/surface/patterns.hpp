@@ -12,6 +12,7 @@ std::unique_ptr<Pattern> makeBoxed(const PatternArgs&);
 std::unique_ptr<Pattern> makeBozo(const PatternArgs&);
 std::unique_ptr<Pattern> makeChecker(const PatternArgs&);
 std::unique_ptr<Pattern> makeCylindrical(const PatternArgs&);
+std::unique_ptr<Pattern> makeFunctionPattern(const PatternArgs&);
 std::unique_ptr<Pattern> makeGradient(const PatternArgs&);
 std::unique_ptr<Pattern> makeGranite(const PatternArgs&);
 std::unique_ptr<Pattern> makeMarble(const PatternArgs&);

@@ -36,6 +36,12 @@ struct Pigment {
   Wave wave = Wave::Ramp;
 
   Rgbft at(const glm::dvec3& p) const;  // p in texture space
+  // The pattern's value at p after frequency, phase, POV-Ray's wrapping and the wave: what the map reads, and
+  // what a pattern function (`function { pattern { … } }`) returns; a block pattern's block. 0 without a pattern.
+  double value(const glm::dvec3& p) const;
+
+ private:
+  double wrapped(double raw) const;
 };
 
 // Whether some colour the pigment can give (its solid colour, or any of its map's or list's) satisfies `pred`.

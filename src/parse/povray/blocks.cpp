@@ -123,7 +123,8 @@ void Interpreter::arrayInitialiser(ArrayValue& a, size_t dim, size_t& index) {
   next();
 }
 
-// `function { … }` or `function(a, b) { … }`: the tokens are kept to be evaluated when called.
+// `function { … }` or `function(a, b) { … }`: compiled, and its tokens kept, to be read again when called if
+// it did not compile.
 Value Interpreter::functionValue(const SourceLoc& at) {
   auto f = std::make_shared<FunctionDef>();
   if (peek().is("(")) {
@@ -143,6 +144,23 @@ Value Interpreter::functionValue(const SourceLoc& at) {
   }
   expect("{", "to begin the function");
   f->body.name = frames_.back().file->name;
+  const bool pattern = peek().isWord("pattern");
+  const Frame& frame = frames_.back();
+  if (pattern && frame.file->tokens[frame.pos + 1].is("{")) {
+    SourceLoc patternAt;
+    next(&patternAt);
+    next();
+    const std::shared_ptr<const Node> node = block("pattern", patternAt, "}");
+    expect("}", "to end the function");
+    f->body.tokens.push_back(Token{});
+    f->why = "pattern in a function";
+    f->whyAt = patternAt;
+    if (options_.patternFunction) options_.patternFunction(*node, *f);
+    Value v;
+    v.type = Value::Type::Function;
+    v.ref = f;
+    return v;
+  }
   int depth = 1;
   for (;;) {
     const Token& t = peek();
@@ -153,6 +171,10 @@ Value Interpreter::functionValue(const SourceLoc& at) {
   }
   next();
   f->body.tokens.push_back(Token{});
+  compileFunction(f->params, f->body, [this](std::string_view name) -> const Value* {
+    const Slot* slot = find(name);
+    return slot ? &slot->value : nullptr;
+  }, *f);
   Value v;
   v.type = Value::Type::Function;
   v.ref = f;
