@@ -11,7 +11,8 @@ Color SkySphere::at(const glm::dvec3& dir, const Color& background) const {
   // Each layer over the ones below it, as a texture's layers (Texture::at).
   for (const auto& layer : layers) {
     const Rgbft top = layer->at(p);
-    c = top.rgb * (1 - top.filter - top.transmit) + c * (top.filter * top.rgb + Color(top.transmit));
+    const Color through = filterTints ? top.filter * top.rgb + Color(top.transmit) : Color(top.filter + top.transmit);
+    c = top.rgb * (1 - top.filter - top.transmit) + c * through;
   }
   return c;
 }

@@ -72,5 +72,25 @@ TEST_CASE("environment: the sky's layers cover the ones below where they are opa
   CHECK(sky.bound() == Color(1));
 }
 
+TEST_CASE("sky_sphere: before POV-Ray 3.7 a layer's filter passes the layers below untinted", "[environment]") {
+  // Values POV-Ray 3.7 wrote (in linear light) for rgbf <1, 0, 0, 0.5> over rgb <0.2, 0.4, 1>.
+  auto bottom = std::make_shared<Pigment>();
+  bottom->solid = {Color(0.2f, 0.4f, 1), 0, 0};
+  auto top = std::make_shared<Pigment>();
+  top->solid = {Color(1, 0, 0), 0.5f, 0};
+  SkySphere sky;
+  sky.layers = {bottom, top};
+  sky.filterTints = false;  // #version 3.6
+  const Color old = sky.at(glm::dvec3(0, 0, 1), Color(0));
+  CHECK(old.r == Approx(0.6f));
+  CHECK(old.g == Approx(0.2f));
+  CHECK(old.b == Approx(0.5f));
+  sky.filterTints = true;  // #version 3.7: the filtered share takes the layer's red
+  const Color now = sky.at(glm::dvec3(0, 0, 1), Color(0));
+  CHECK(now.r == Approx(0.6f));
+  CHECK(now.g == Approx(0.0f));
+  CHECK(now.b == Approx(0.0f));
+}
+
 }  // namespace
 }  // namespace rt

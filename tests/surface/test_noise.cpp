@@ -111,6 +111,16 @@ constexpr double kMarble[] = {
     0.4344502408260125, 0.0534738543894409, 0.7350197054871925, 0.0025887440280745,
     0.3903072817914879, 0.1706477185970354, 0.8887899850777434, 0.5496474850719362};
 
+constexpr double kDents[] = {
+    0.1078869672110173, 0.1545110038932262, 0.404501292838987, 0.1402720178502434,
+    0.09906149207920451, 0.1406997285841237, 0.0193254044496664, 0.0345854139774296,
+    0.0992177144396353, 0.0522918798344718, 0.0678857310590861, 0.072756953633555};
+
+constexpr double kLeopard[] = {
+    0.06883625639917031, 0.0287086460967569, 0.1329482782901657, 0.0007326285965715,
+    0.3576861273618027, 0.1112232563292849, 0.0804815527319311, 0.353351949855861,
+    0.1326239709527803, 0.0006137688898585, 0.058738803395015, 0.0013737109403033};
+
 constexpr double kExact = 1e-11;  // POV-Ray printed 16 decimals; the sums agree to the last few bits
 
 TEST_CASE("noise: both generators and the vector noise give POV-Ray's values", "[noise]") {
@@ -148,10 +158,13 @@ void checkPattern(const char* name, const PatternArgs& args, const double* expec
   }
 }
 
-TEST_CASE("noise patterns: bozo, granite, wrinkles and agate", "[noise]") {
+TEST_CASE("noise patterns: bozo, granite, wrinkles, agate, dents and leopard", "[noise]") {
   PatternArgs a;
   checkPattern("bozo", a, kBozo);
   checkPattern("spotted", a, kBozo);
+  checkPattern("bumps", a, kBozo);
+  checkPattern("dents", a, kDents);
+  checkPattern("leopard", a, kLeopard);
   checkPattern("granite", a, kGranite);
   checkPattern("wrinkles", a, kWrinkles);
   a.agateTurbulence = 0.5;

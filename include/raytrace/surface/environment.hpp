@@ -13,6 +13,7 @@ namespace rt {
 struct SkySphere {
   std::vector<std::shared_ptr<const Pigment>> layers;  // the bottom one first
   glm::dmat4 fromWorld{1};                             // undoes the sky's rotations
+  bool filterTints = true;  // false for scenes before POV-Ray 3.7, whose skies let filtered light through untinted
 
   // The sky in the unit direction `dir`, over `background` where every layer lets it through.
   Color at(const glm::dvec3& dir, const Color& background) const;

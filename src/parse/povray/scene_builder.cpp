@@ -323,8 +323,8 @@ class Builder {
         if (m == "photons" || m == "radiosity") continue;
         if (m == "pigment" || m == "finish" || m == "texture" || m == "material" || m == "interior" ||
             m == "layered texture") {
-          // A second texture block is a layer on top of the first.
-          if (m == "texture" && textureBlock) s.layers.emplace_back();
+          // A second texture block is a layer on top of the first, starting as the #default texture.
+          if (m == "texture" && textureBlock) s.layers.push_back(default_.layers.back());
           textureBlock = textureBlock || m == "texture";
           readSurfaceItem(*it.node, s, default_, refusals_);
           if (!textureFrom) textureFrom = o.transforms.size();
@@ -577,6 +577,7 @@ class Builder {
       }
     }
     sky->fromWorld = sky->fromWorld * glm::inverse(composeTransforms<double>(steps));
+    sky->filterTints = interpreter_.version() >= 3.7;  // measured: docs/povray-language.md, sky_sphere
     scene_.sky = sky;
   }
 

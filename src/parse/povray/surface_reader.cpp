@@ -483,9 +483,9 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
       }
     }
   } else if (k == "layered texture") {
-    // Each layer starts as POV-Ray's default texture, on top of the ones before.
+    // Each layer starts as the #default texture, on top of the ones before.
     for (size_t i = 0; i < n.items.size(); ++i) {
-      if (i > 0) s.layers.emplace_back();
+      if (i > 0) s.layers.push_back(defaults.layers.back());
       readSurfaceItem(*n.items[i].node, s, defaults, refusals);
     }
   } else if (k == "interior") {

@@ -165,6 +165,19 @@ plane { y, 0 texture { Layers scale 4 } }
   CHECK(m.pigment.g == Approx(0.25f));
 }
 
+TEST_CASE("povray scene: each layer of a layered texture starts as the #default texture", "[povray]") {
+  const SceneDesc s = scene(R"(
+#default { finish { ambient 0.3 diffuse 0.9 } }
+plane { y, 0 texture { pigment { White } finish { diffuse 0.2 } } texture { pigment { rgb 0.5 } } }
+plane { y, 0 texture { pigment { White } finish { diffuse 0.2 } } translate x texture { pigment { rgb 0.5 } } }
+)");
+  REQUIRE(s.objects.size() == 2);
+  for (const ObjectDesc& o : s.objects) {
+    // The opaque top layer, with #default's diffuse 0.9 on its grey.
+    CHECK(o.texture->at(glm::dvec3(0)).diffuse == Color(0.45f));
+  }
+}
+
 TEST_CASE("povray scene: turbulence and its modifiers may follow the map; noise_generator 3 is refused", "[povray]") {
   const SceneDesc s = scene(R"(
 #declare Grain = pigment { wood color_map { [0 Black] [1 White] } }
