@@ -171,7 +171,16 @@ Value Interpreter::functionValue(const SourceLoc& at) {
   }
   next();
   f->body.tokens.push_back(Token{});
-  compileFunction(f->params, f->body, [this](std::string_view name) -> const Value* {
+  // The frame's constants (clock, image_width …) are the function's too.
+  Value constant;
+  compileFunction(f->params, f->body, [this, &at, &constant](std::string_view name) -> const Value* {
+    static constexpr std::string_view kConstants[] = {"clock", "clock_delta", "clock_on", "frame_number",
+                                                      "initial_clock", "final_clock", "initial_frame", "final_frame",
+                                                      "image_width", "image_height", "version"};
+    if (std::find(std::begin(kConstants), std::end(kConstants), name) != std::end(kConstants)) {
+      constant = builtin(name, at);
+      return &constant;
+    }
     const Slot* slot = find(name);
     return slot ? &slot->value : nullptr;
   }, *f);

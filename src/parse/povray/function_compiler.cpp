@@ -192,7 +192,7 @@ class Compiler {
         return;
       }
     }
-    if (const Value* v = t.keyword ? nullptr : lookup_(w)) {
+    if (const Value* v = lookup_(w)) {
       identifier(*v, t);
       return;
     }
