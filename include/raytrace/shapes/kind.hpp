@@ -61,6 +61,8 @@ struct ObjectBuild {
 //   bool block(std::string_view word, F read);   `word { … }` next: read(reader of its items) (a blob's parts)
 //   std::vector<TransformStep> transforms();     the transforms that come next
 //   std::string string(const char* what);   std::string findFont(const std::string& name);  ("" if nowhere)
+//   bool function(std::shared_ptr<const Function>& into);   a `function { … }` next: its compiled form (null,
+//                                           and refused, if it did not compile) (an isosurface's)
 // The course language has no strings, keywords inside a shape or blocks: its parser refuses the calls for them.
 // A template parameter rather than a base class: the parser's calls stay inline in its per-object loop.
 
