@@ -27,14 +27,14 @@ std::shared_ptr<const Function> planeFunction() {
   return std::make_shared<Function>(std::vector<Function::Instr>{{Op::Param, 1}}, 3, 1);
 }
 
-std::unique_ptr<Object<double>> isosurface(const IsosurfaceDesc& d) {
-  return d.make<double>(ObjectBuild{kMaterial, 1, SphereMethod::Auto, false});
+std::unique_ptr<Object<double>> isosurface(const IsosurfaceParams& p) {
+  return IsosurfaceDesc{std::make_shared<const IsosurfaceParams>(p)}.make<double>(ObjectBuild{kMaterial, 1, SphereMethod::Auto, false});
 }
 
 }  // namespace
 
 TEST_CASE("an isosurface of the sphere function is the unit sphere: hits and normals of random rays", "[isosurface]") {
-  IsosurfaceDesc d;
+  IsosurfaceParams d;
   d.function = sphereFunction();
   d.min = glm::dvec3(-2);
   d.max = glm::dvec3(2);
@@ -69,7 +69,7 @@ TEST_CASE("an isosurface of the sphere function is the unit sphere: hits and nor
 }
 
 TEST_CASE("an isosurface shows its container where it cuts the solid, unless open", "[isosurface]") {
-  IsosurfaceDesc d;
+  IsosurfaceParams d;
   d.function = planeFunction();
   const auto closed = isosurface(d);
   // Below y = 0 the ray enters the box inside the solid: the box's face.
@@ -95,7 +95,7 @@ TEST_CASE("an isosurface shows its container where it cuts the solid, unless ope
 }
 
 TEST_CASE("an isosurface in a sphere container is cut by the sphere", "[isosurface]") {
-  IsosurfaceDesc d;
+  IsosurfaceParams d;
   d.function = planeFunction();
   d.sphere = true;
   d.center = {0, 0, 0};
@@ -112,7 +112,7 @@ TEST_CASE("an isosurface in a sphere container is cut by the sphere", "[isosurfa
 TEST_CASE("an isosurface whose max_gradient is too low misses the surface, as POV-Ray's does", "[isosurface]") {
   // 100·y² − 1 is negative for |y| < 0.1; along this ray its slope reaches 12, and with the default
   // max_gradient 1.1 the values at the ends of the ray's stretch in the box (5.25 both) rule out a crossing.
-  IsosurfaceDesc d;
+  IsosurfaceParams d;
   d.function = std::make_shared<Function>(
       std::vector<Function::Instr>{{Op::Param, 1}, {Op::Param, 1}, {Op::Mul}, {Op::Const, 0, 100}, {Op::Mul},
                                    {Op::Const, 0, 1}, {Op::Sub}},

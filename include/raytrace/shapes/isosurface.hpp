@@ -18,7 +18,7 @@ template <class T> class Isosurface;
 // surface shows where it cuts the solid unless the isosurface is `open`. The root search subdivides the ray's
 // stretch in the container until a piece is shorter than `accuracy`, skipping a piece where max_gradient
 // shows the function cannot reach the threshold (docs/shapes.md).
-struct IsosurfaceDesc {
+struct IsosurfaceParams {
   std::shared_ptr<const Function> function;
   double threshold = 0, accuracy = 0.001, maxGradient = 1.1;
   bool open = false;
@@ -26,13 +26,19 @@ struct IsosurfaceDesc {
   glm::dvec3 min{-1}, max{1};                  // the box's corners
   glm::dvec3 center{0};                        // the sphere's centre and radius
   double radius = 1;
+};
+
+// The description holds its parameters behind a pointer: every object's description is as large as the largest
+// kind's, and an isosurface's would make the description of every triangle of a mesh larger.
+struct IsosurfaceDesc {
+  std::shared_ptr<const IsosurfaceParams> params;
 
   static bool named(std::string_view word) { return word == "isosurface"; }
   static const char* name() { return "Isosurface"; }
   static constexpr bool kFloatErrorBound = false;  // an iterative root, computed in double
 
   template <class Reader> static IsosurfaceDesc read(Reader& r, std::string_view) {
-    IsosurfaceDesc d;
+    IsosurfaceParams d;
     const SourceLoc at = r.here();
     bool hasFunction = false;
     for (;;) {
@@ -68,28 +74,30 @@ struct IsosurfaceDesc {
       }
     }
     if (!hasFunction) throw ParseError(at, "an isosurface needs a function");
-    return d;
+    return {std::make_shared<const IsosurfaceParams>(std::move(d))};
   }
-  double smallestFeature() const { return accuracy; }
+  double smallestFeature() const { return params->accuracy; }
   Ball boundingBall() const {
-    return sphere ? Ball{center, radius} : Ball{(min + max) / 2.0, glm::length(max - min) / 2};
+    const IsosurfaceParams& p = *params;
+    return p.sphere ? Ball{p.center, p.radius} : Ball{(p.min + p.max) / 2.0, glm::length(p.max - p.min) / 2};
   }
   FlatFaces flatFaces() const { return {}; }  // computed in double (kFloatErrorBound): no offset to check
   void describe(std::ostream& out) const {
-    out << "- Threshold: " << fixed4(threshold) << "\n- Accuracy: " << fixed4(accuracy)
-        << "\n- Max gradient: " << fixed4(maxGradient) << "\n";
-    if (sphere) out << "- Contained by sphere: " << braces(center) << " " << fixed4(radius) << "\n";
-    else out << "- Contained by box: " << braces(min) << " " << braces(max) << "\n";
+    const IsosurfaceParams& p = *params;
+    out << "- Threshold: " << fixed4(p.threshold) << "\n- Accuracy: " << fixed4(p.accuracy)
+        << "\n- Max gradient: " << fixed4(p.maxGradient) << "\n";
+    if (p.sphere) out << "- Contained by sphere: " << braces(p.center) << " " << fixed4(p.radius) << "\n";
+    else out << "- Contained by box: " << braces(p.min) << " " << braces(p.max) << "\n";
   }
   template <class T> std::unique_ptr<Object<T>> make(const ObjectBuild& b) const {
-    return std::make_unique<Isosurface<T>>(*this, b.material, b.id);
+    return std::make_unique<Isosurface<T>>(*params, b.material, b.id);
   }
 };
 
 // Computed in double whatever T is.
 template <class T> class Isosurface final : public Object<T> {
  public:
-  Isosurface(const IsosurfaceDesc& d, const Material& material, int id) : Object<T>(material, id), d_(d) {}
+  Isosurface(const IsosurfaceParams& d, const Material& material, int id) : Object<T>(material, id), d_(d) {}
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
   std::optional<Aabb<T>> bounds() const override;
@@ -102,7 +110,7 @@ template <class T> class Isosurface final : public Object<T> {
   bool inContainer(const glm::dvec3& p) const;
   glm::dvec3 gradient(const glm::dvec3& p) const;
 
-  IsosurfaceDesc d_;
+  IsosurfaceParams d_;
 };
 
 }  // namespace rt
