@@ -238,6 +238,9 @@ class PovParser {
   bool keyword(std::string_view) const { throw povRayOnly(); }
   std::string string(const char*) const { throw povRayOnly(); }
   std::string findFont(const std::string&) const { throw povRayOnly(); }
+  std::string findFile(const std::string&) const { throw povRayOnly(); }
+  bool functionNext() const { throw povRayOnly(); }
+  template <class S> bool texture(S&, const void*&) const { throw povRayOnly(); }
   template <class F> bool block(std::string_view, F&&) const { throw povRayOnly(); }
   bool function(std::shared_ptr<const Function>&) const { throw povRayOnly(); }
   std::vector<TransformStep> transforms() const { throw povRayOnly(); }

@@ -117,7 +117,13 @@ Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRec
     }
   }
   gathers_ = nullptr;
-  return sum / float(n * n);
+  return finished(sum / float(n * n));
+}
+
+template <class T> Color Tracer<T>::finished(const Color& c) const {
+  if (conventions_.gamma == 1) return c;
+  const float g = conventions_.gamma;
+  return {std::pow(std::max(c.r, 0.0f), g), std::pow(std::max(c.g, 0.0f), g), std::pow(std::max(c.b, 0.0f), g)};
 }
 
 template <class T> const Color* Tracer<T>::tile(const Camera<T>& camera, int x0, int y0, int x1, int y1) {
@@ -153,7 +159,7 @@ template <class T> const Color* Tracer<T>::tile(const Camera<T>& camera, int x0,
   for (size_t p = 0, next = 0; p < pixels; ++p) {
     Color sum(0);
     for (int s = 0; s < n * n; ++s) sum += colors[next++];
-    colors[p] = sum / float(n * n);
+    colors[p] = finished(sum / float(n * n));
   }
   return colors.data();
 }

@@ -81,7 +81,15 @@ template <class T> Lathe<T>::Lathe(const LatheDesc& desc, const Material& materi
       segments_(desc.segments()),
       method_(desc.sturm ? RootMethod::Sturm : RootMethod::Auto),
       bounds_(desc.bounds()),
-      probe_(1e-7 * glm::length(bounds_.max - bounds_.min)) {}
+      probe_(1e-7 * glm::length(bounds_.max - bounds_.min)) {
+  const double slack = probe_;  // rounding of the bounds and of the ray's distance
+  for (const Segment2& seg : segments_) {
+    glm::dvec2 lo, hi;
+    segmentBounds({seg}, lo, hi);
+    const double r0 = lo.x > 0 ? lo.x - slack : 0, r1 = std::max(-lo.x, hi.x) + slack;
+    rings_.push_back({lo.y - slack, hi.y + slack, r0 > 0 ? r0 * r0 : 0, r1 * r1});
+  }
+}
 
 template <class T> bool Lathe<T>::inside(const Vec3<T>& point) const {
   const glm::dvec3 p(point);
@@ -112,7 +120,9 @@ template <class T> std::optional<Hit<T>> Lathe<T>::intersect(const Ray<T>& ray, 
     normal = n;
   };
   double roots[6], ts[2];
-  for (const Segment2& seg : segments_) {
+  for (size_t index = 0; index < segments_.size(); ++index) {
+    const Segment2& seg = segments_[index];
+    if (rings_[index].missedBy(o, d, double(range.min), best)) continue;
     if (level) {
       const int n = realRoots(seg.combination(0, 1, -o.y), -kEndSlack, 1 + kEndSlack, roots, 3, method_);
       for (int i = 0; i < n; ++i) {

@@ -88,7 +88,13 @@ template <class T> Prism<T>::Prism(const PrismDesc& desc, const Material& materi
       top_(std::max(desc.height1, desc.height2)),
       method_(desc.sturm ? RootMethod::Sturm : RootMethod::Auto),
       bounds_(desc.bounds()),
-      probe_(1e-7 * glm::length(bounds_.max - bounds_.min)) {}
+      probe_(1e-7 * glm::length(bounds_.max - bounds_.min)) {
+  for (const Segment2& seg : outline_) {
+    glm::dvec2 lo, hi;
+    segmentBounds({seg}, lo, hi);
+    boxes_.push_back({lo - glm::dvec2(probe_), hi + glm::dvec2(probe_)});
+  }
+}
 
 template <class T> bool Prism<T>::covers(const glm::dvec3& p) const {
   if (conic_ && p.y == 0) return false;
@@ -111,8 +117,31 @@ template <class T> std::optional<Hit<T>> Prism<T>::intersect(const Ray<T>& ray, 
   const double a = conic_ ? m.x : -d.z, b = conic_ ? m.z : d.x, k = conic_ ? m.y : d.z * o.x - d.x * o.z;
   double best = double(range.max);
   glm::dvec3 normal(0);
+  // A linear sweep's wall is met only where the ray is between the end heights, inside a segment's box.
+  double t0 = double(range.min), t1 = best;
+  if (d.y != 0) {
+    const double ta = (bottom_ - o.y) / d.y, tb = (top_ - o.y) / d.y;
+    t0 = std::max(t0, std::min(ta, tb));
+    t1 = std::min(t1, std::max(ta, tb));
+  }
+  const auto missed = [&](const std::array<glm::dvec2, 2>& box) {
+    if (conic_) return false;
+    double lo = t0, hi = t1;
+    for (int axis = 0; axis < 2; ++axis) {
+      if (d2[axis] == 0) {
+        if (o2[axis] < box[0][axis] || o2[axis] > box[1][axis]) return true;
+        continue;
+      }
+      const double ta = (box[0][axis] - o2[axis]) / d2[axis], tb = (box[1][axis] - o2[axis]) / d2[axis];
+      lo = std::max(lo, std::min(ta, tb));
+      hi = std::min(hi, std::max(ta, tb));
+    }
+    return !(lo <= hi);
+  };
   double roots[3];
-  for (const Segment2& seg : outline_) {
+  for (size_t index = 0; index < outline_.size(); ++index) {
+    const Segment2& seg = outline_[index];
+    if (missed(boxes_[index])) continue;
     const int n = realRoots(seg.combination(a, b, k), -kEndSlack, 1 + kEndSlack, roots, 3, method_);
     for (int i = 0; i < n; ++i) {
       const glm::dvec2 q = seg.at(roots[i]);

@@ -88,6 +88,19 @@ template <class T> Sor<T>::Sor(const SorDesc& desc, const Material& material, in
       method_(desc.sturm ? RootMethod::Sturm : RootMethod::Auto),
       bounds_(desc.bounds()) {
   for (size_t j = 1; j + 1 < desc.points.size(); ++j) heights_.push_back(desc.points[j].y);
+  const double slack = 1e-7 * glm::length(bounds_.max - bounds_.min);  // rounding of the bounds and the ray
+  for (size_t j = 0; j < r2_.size(); ++j) {
+    // f's least and greatest on [0, 1]: at the ends or where its slope is 0.
+    double turns[3];
+    const int n = realRoots(r2_[j].derivative(), 0, 1, turns, 3);
+    double lo = std::min(r2_[j](0), r2_[j](1)), hi = std::max(r2_[j](0), r2_[j](1));
+    for (int i = 0; i < n; ++i) {
+      lo = std::min(lo, r2_[j](turns[i]));
+      hi = std::max(hi, r2_[j](turns[i]));
+    }
+    const double r0 = std::sqrt(std::max(lo, 0.0)) - slack, r1 = std::sqrt(std::max(hi, 0.0)) + slack;
+    rings_.push_back({heights_[j] - slack, heights_[j + 1] + slack, r0 > 0 ? r0 * r0 : 0, r1 * r1});
+  }
 }
 
 template <class T> bool Sor<T>::inside(const Vec3<T>& point) const {
@@ -108,6 +121,7 @@ template <class T> std::optional<Hit<T>> Sor<T>::intersect(const Ray<T>& ray, In
   distance.c = {o.x * o.x + o.z * o.z, 2 * (o.x * d.x + o.z * d.z), d.x * d.x + d.z * d.z};
   double roots[3];
   for (size_t j = 0; j < r2_.size(); ++j) {
+    if (rings_[j].missedBy(o, d, double(range.min), best)) continue;
     const double h0 = heights_[j], span = heights_[j + 1] - h0;
     double lo = double(range.min), hi = best;
     if (d.y != 0) {

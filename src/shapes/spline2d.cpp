@@ -76,4 +76,22 @@ void segmentBounds(const std::vector<Segment2>& segments, glm::dvec2& lo, glm::d
   }
 }
 
+bool Ring::missedBy(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1) const {
+  if (d.y != 0) {
+    const double a = (y0 - o.y) / d.y, b = (y1 - o.y) / d.y;
+    t0 = std::max(t0, std::min(a, b));
+    t1 = std::min(t1, std::max(a, b));
+  } else if (o.y < y0 || o.y > y1) {
+    return true;
+  }
+  if (!(t0 <= t1)) return true;
+  const auto distance2 = [&](double t) {
+    const double x = o.x + t * d.x, z = o.z + t * d.z;
+    return x * x + z * z;
+  };
+  const double across = d.x * d.x + d.z * d.z;
+  const double nearest = across > 0 ? std::clamp(-(o.x * d.x + o.z * d.z) / across, t0, t1) : t0;
+  return distance2(nearest) > r1 || std::max(distance2(t0), distance2(t1)) < r0;
+}
+
 }  // namespace rt

@@ -42,8 +42,19 @@ double Pigment::value(const glm::dvec3& p) const {
 }
 
 Rgbft Pigment::at(const glm::dvec3& p) const {
-  if (!pattern) return solid;
+  if (!pattern && !average) return solid;
   const glm::dvec3 q = glm::dvec3(fromTexture * glm::dvec4(p, 1));
+  if (average) {
+    Rgbft sum;
+    double weights = 0;
+    for (const MapEntry& e : map) {
+      const Rgbft c = e.pigment->at(q);
+      const float w = float(e.value);
+      sum = {sum.rgb + w * c.rgb, sum.filter + w * c.filter, sum.transmit + w * c.transmit};
+      weights += e.value;
+    }
+    return weights > 0 ? mix(Rgbft{}, sum, float(1 / weights)) : solid;
+  }
   const double raw = pattern->value(q);
   if (pattern->blocks() > 0) {
     const size_t i = std::min(size_t(raw), list.size() - 1);

@@ -4,6 +4,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "raytrace/parse/pov_parser.hpp"
+#include "raytrace/parse/povray/scene_builder.hpp"
 #include "raytrace/geometry/transform.hpp"
 
 using namespace rt;
@@ -66,4 +67,28 @@ TEST_CASE("transform: the float composition is the course reference's, bit for b
   }
   // Not the double matrix rounded: the float products round differently.
   CHECK(got != glm::mat4(composeTransforms<double>(parsed(kChain).transforms)));
+}
+
+TEST_CASE("transform: POV-Ray's matrix takes (x, y, z) to x·row 0 + y·row 1 + z·row 2 + row 3", "[transform]") {
+  const auto pov = [](const std::string& body) {
+    return povray::parsePovRay("#version 3.7;\n" + body, "scene.pov", povray::PovRayOptions{{}, 320, 240, false});
+  };
+  // A shear of y into x, then a move: the manual's §3.3.1.12.4 layout.
+  const SceneDesc s = pov("sphere { 0, 1 translate z matrix <1,0,0, 0.5,1,0, 0,0,2, 1,2,3> }\n");
+  const ObjectDesc& o = s.objects.at(0);
+  REQUIRE(o.transforms.size() == 2);
+  CHECK(o.transforms[1].kind == TransformStep::Kind::Matrix);
+  const glm::dmat4 m = o.worldFromObject();
+  CHECK(glm::dvec3(m * glm::dvec4(0, 1, 0, 1)) == glm::dvec3(1.5, 3, 5));  // (0, 1, 1) sheared, then moved
+  CHECK(glm::dvec3(m * glm::dvec4(1, 0, 0, 1)) == glm::dvec3(2, 2, 5));
+  // In a pigment and a camera too, where every transform is read.
+  CHECK_NOTHROW(pov("camera { location -5*z look_at 0 matrix <1,0,0, 0,1,0, 0,0,1, 0,1,0> }\n"
+                    "plane { y, 0 pigment { checker matrix <2,0,0, 0,2,0, 0,0,2, 0,0,0> } }\n"));
+  std::string message;
+  try {
+    pov("sphere { 0, 1 matrix <1, 2, 3> }\n");
+  } catch (const Error& e) {
+    message = e.what();
+  }
+  CHECK(message == "scene.pov:2:22: error: 'matrix' needs 12 numbers, found 3");
 }

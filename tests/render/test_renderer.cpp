@@ -359,3 +359,16 @@ TEST_CASE("The depth bomb with -gi: one eye sample costs at most 2^20 rays, gath
   CHECK(bounced <= kSampleRays);
   CHECK(bounced > kSampleRays / 2);
 }
+
+TEST_CASE("A scene's gamma raises each pixel's colour before it is written, in render() and pixel() alike",
+          "[render]") {
+  SceneDesc scene = emptyScene();
+  scene.lights.push_back({{0, 4, 0}, Color(1)});
+  add(scene, SphereDesc{{0, 0, -5}, 1}, pov(kPigment, 1.0f, 0.0f));
+  scene.conventions.gamma = 2.2f;
+  const Color expected(1.0f, std::pow(0.5f, 2.2f), std::pow(0.25f, 2.2f));
+  checkColor(centre(scene), expected);
+  const Scene<double> built(scene, chooseArithmetic(scene));
+  Tracer<double> tracer(built, RenderOptions{});
+  checkColor(tracer.pixel(Camera<double>(scene.camera, 1, 1), 0, 0), expected);
+}

@@ -103,3 +103,14 @@ TEST_CASE("lathe: bad input stops at the number of points, with what is wrong", 
   CHECK(povFailure("lathe { 2, <1, 0>, <1, 1>, <1, 2> pigment { rgb 1 } }") ==
         "scene.pov:2:28: error: more lathe points than the 2 its count gives");
 }
+
+TEST_CASE("lathe: a segment's ring passes over only the rays that cannot meet it", "[lathe]") {
+  const Ring ring{0, 1, 1, 4};  // heights 0 to 1, radii 1 to 2 (squared: 1 to 4)
+  CHECK_FALSE(ring.missedBy({3, 0.5, 0}, {-1, 0, 0}, 0, 10));  // level, through the wall toward the axis
+  CHECK(ring.missedBy({3, 2, 0}, {-1, 0, 0}, 0, 10));          // level, above it
+  CHECK(ring.missedBy({0, 5, 0}, {0, -1, 0}, 0, 10));          // down the axis: always inside the hole
+  CHECK(ring.missedBy({3, 5, 0}, {0, -1, 0}, 0, 10));          // down at radius 3: always outside
+  CHECK_FALSE(ring.missedBy({1.5, 5, 0}, {0, -1, 0}, 0, 10));  // down through the ring
+  CHECK(ring.missedBy({3, 0.5, 0}, {-1, 0, 0}, 0, 0.5));       // stops at radius 2.5, short of the wall
+  CHECK_FALSE(ring.missedBy({3, -1, 0}, {-1, 1, 0}, 0, 10));   // climbs into it from below
+}

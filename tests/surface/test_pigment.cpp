@@ -84,5 +84,15 @@ TEST_CASE("pigment: a block pattern picks its list's pigments, which its transfo
   CHECK_FALSE(anyColour(p, [](const Rgbft& c) { return c.transmit > 0; }));
 }
 
+TEST_CASE("pigment: average mixes its map's pigments, each weighted by its entry's value", "[pigment]") {
+  Pigment p;
+  p.average = true;
+  p.map = {{1, solid(Color(1, 0, 0))}, {3, solid(Color(0, 0, 1))}};
+  const Rgbft c = p.at(glm::dvec3(0.3, 7, -2));
+  CHECK(c.rgb.r == Approx(0.25f));
+  CHECK(c.rgb.g == 0);
+  CHECK(c.rgb.b == Approx(0.75f));
+}
+
 }  // namespace
 }  // namespace rt

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -13,8 +15,11 @@
 namespace rt {
 
 struct TransformStep {
-  enum class Kind { Translate, Scale, Rotate } kind;
+  enum class Kind { Translate, Scale, Rotate, Matrix } kind;
   glm::dvec3 v;  // the offset, the scale factors, or the rotation angles about x, y and z in degrees
+  // POV-Ray's `matrix <m00, m01, m02, …, m30, m31, m32>` (Matrix only): the point (x, y, z) goes to
+  // (x·m00 + y·m10 + z·m20 + m30, x·m01 + …), the manual's §3.3.1.12.4. Shared, so other steps stay small.
+  std::shared_ptr<const std::array<double, 12>> matrix = nullptr;
 };
 
 // M = step_n ⋯ step_1: each step multiplies on the left, in T arithmetic, the way the course's reference
@@ -43,6 +48,15 @@ glm::mat<4, 4, T, glm::defaultp> composeTransforms(const std::vector<TransformSt
         r = glm::rotate(identity, glm::radians(v.y), V3(0, 1, 0)) * r;
         r = glm::rotate(identity, glm::radians(v.x), V3(1, 0, 0)) * r;
         m = r * m;
+        break;
+      }
+      case TransformStep::Kind::Matrix: {
+        // Column i of the 4×4 matrix holds the manual's row i: glm's [column][row].
+        M4 g = identity;
+        for (int i = 0; i < 4; ++i) {
+          for (int j = 0; j < 3; ++j) g[i][j] = T((*s.matrix)[size_t(i * 3 + j)]);
+        }
+        m = g * m;
         break;
       }
     }

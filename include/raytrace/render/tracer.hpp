@@ -58,6 +58,9 @@ template <class T> class Tracer {
   }
 
  private:
+  // A pixel's average as it is written: raised to the scene's gamma (Conventions::gamma).
+  Color finished(const Color& c) const;
+
   struct Traced {
     Color color;
     T distance;  // to the hit, +∞ on a miss (Beer's law needs it)

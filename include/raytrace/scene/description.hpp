@@ -64,6 +64,9 @@ struct Conventions {
   Color background{0};
   // course: round(c·255); .cli: (int)(c·255); POV-Ray 3.7 with assumed_gamma 1: round(sRGB(c)·255)
   enum class ToByte { Round, Truncate, Srgb } toByte = ToByte::Round;
+  // POV-Ray's assumed_gamma other than 1: each pixel's colour c becomes c^gamma before it is written (so that
+  // sRGB(c^gamma) are its bytes, as POV-Ray's pictures show).
+  float gamma = 1;
   bool clampEachBounce = false;  // .cli clamps every shade() result to [0,1] before it is weighted
   bool reflectionMixes = true;   // course: local·(1−f)(1−k) + k·C·reflected; .cli: local + k·reflected
   bool tintReflection = true;    // course multiplies reflected light by the pigment (§c.3)

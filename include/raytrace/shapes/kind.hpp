@@ -61,6 +61,10 @@ struct ObjectBuild {
 //   bool block(std::string_view word, F read);   `word { … }` next: read(reader of its items) (a blob's parts)
 //   std::vector<TransformStep> transforms();     the transforms that come next
 //   std::string string(const char* what);   std::string findFont(const std::string& name);  ("" if nowhere)
+//   std::string findFile(const std::string& name);   where an include file of that name is ("" if nowhere)
+//   bool functionNext() const;              whether a function comes next (`function { … }`)
+//   bool texture(FaceSurface& s, const void*& source);   a `texture { … }` next: its surface, and the syntax
+//                                           it was read from (the same for two uses of one declared texture)
 //   bool function(std::shared_ptr<const Function>& into);   a `function { … }` next: its compiled form (null,
 //                                           and refused, if it did not compile) (an isosurface's)
 // The course language has no strings, keywords inside a shape or blocks: its parser refuses the calls for them.

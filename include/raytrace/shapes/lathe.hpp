@@ -59,7 +59,7 @@ struct LatheDesc {
 
 // Each segment (R(s), Y(s)) met by a ray: with t = (Y(s) − o.y)/d.y, the ray's squared distance from the axis equals
 // R(s)², a polynomial of degree up to 6 in s; a level ray meets Y(s) = o.y instead, a cubic, and then a quadratic in t.
-// Computed in double whatever T is.
+// Computed in double whatever T is. A segment is solved only for rays that pass through the ring around it.
 template <class T> class Lathe final : public Object<T> {
  public:
   Lathe(const LatheDesc& desc, const Material& material, int id);
@@ -71,6 +71,7 @@ template <class T> class Lathe final : public Object<T> {
 
  private:
   std::vector<Segment2> segments_;
+  std::vector<Ring> rings_;  // one per segment
   RootMethod method_;
   Aabb<double> bounds_;
   double probe_;  // how far off the surface a point is tested, to turn the normal outward

@@ -92,6 +92,7 @@ template <class T> class Prism final : public Object<T> {
   bool covers(const glm::dvec3& p) const;
 
   std::vector<Segment2> outline_;
+  std::vector<std::array<glm::dvec2, 2>> boxes_;  // each segment's box in (x, z), to pass over the rays that miss it
   bool conic_, open_;
   double bottom_, top_;
   RootMethod method_;

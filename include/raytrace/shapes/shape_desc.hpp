@@ -20,8 +20,10 @@
 #include "raytrace/shapes/disc.hpp"
 #include "raytrace/shapes/isosurface.hpp"
 #include "raytrace/shapes/lathe.hpp"
+#include "raytrace/shapes/mesh.hpp"
 #include "raytrace/shapes/plane.hpp"
 #include "raytrace/shapes/poly.hpp"
+#include "raytrace/shapes/polygon.hpp"
 #include "raytrace/shapes/prism.hpp"
 #include "raytrace/shapes/quadric.hpp"
 #include "raytrace/shapes/sor.hpp"
@@ -37,7 +39,7 @@ namespace rt {
 
 using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc, CsgDesc, TorusDesc,
                                QuadricDesc, PolyDesc, TextDesc, PrismDesc, LatheDesc, SorDesc, DiscDesc,
-                               SuperellipsoidDesc, BlobDesc, IsosurfaceDesc>;
+                               SuperellipsoidDesc, BlobDesc, MeshDesc, PolygonDesc, IsosurfaceDesc>;
 
 struct ClipDesc;
 

@@ -72,6 +72,7 @@ template <class T> class Sor final : public Object<T> {
  private:
   std::vector<double> heights_;  // the segments' ends: heights_[j] to heights_[j + 1]
   std::vector<Polynomial> r2_;   // SorDesc::radiusSquared()
+  std::vector<Ring> rings_;      // what each segment sweeps, to pass over the rays that miss it
   bool open_;
   RootMethod method_;
   Aabb<double> bounds_;

@@ -59,6 +59,15 @@ int crossingsRight(const std::vector<Segment2>& segments, glm::dvec2 p);
 // The smallest box around the segments: their ends and where a coordinate turns.
 void segmentBounds(const std::vector<Segment2>& segments, glm::dvec2& lo, glm::dvec2& hi);
 
+// The ring a piece of a surface of revolution about the y axis sweeps: its heights and its squared distances
+// from the axis. A ray that misses it need not be solved against the piece.
+struct Ring {
+  double y0, y1, r0, r1;
+  // Whether o + t·d for t in [t0, t1] stays out of the ring: never at its heights, or there always nearer the
+  // axis or always farther (the squared distance from the axis is convex in t).
+  bool missedBy(const glm::dvec3& o, const glm::dvec3& d, double t0, double t1) const;
+};
+
 // What a shape's read() (shapes/kind.hpp) takes for a spline: `N, <u, v>, …`, the points' first two coordinates; `at`
 // is where N was, for the messages about the count.
 struct SplinePoints {

@@ -34,6 +34,7 @@ struct Pigment {
   glm::dmat4 fromTexture{1};
   double frequency = 1, phase = 0, exponent = 1;
   Wave wave = Wave::Ramp;
+  bool average = false;  // `average`: the map's pigments mixed, each weighted by its entry's value
 
   Rgbft at(const glm::dvec3& p) const;  // p in texture space
   // The pattern's value at p after frequency, phase, POV-Ray's wrapping and the wave: what the map reads, and
@@ -46,7 +47,7 @@ struct Pigment {
 
 // Whether some colour the pigment can give (its solid colour, or any of its map's or list's) satisfies `pred`.
 template <class F> bool anyColour(const Pigment& p, const F& pred) {
-  if ((!p.pattern || (p.map.empty() && p.list.empty())) && pred(p.solid)) return true;
+  if ((!(p.pattern || p.average) || (p.map.empty() && p.list.empty())) && pred(p.solid)) return true;
   for (const MapEntry& e : p.map) {
     if (anyColour(*e.pigment, pred)) return true;
   }

@@ -13,9 +13,12 @@ namespace {
 // The most elements an array may have: a typo in a size should be a message, not an exhausted memory.
 constexpr double kMaxArrayElements = 1e8;
 
-// Where POV-Ray reads a polynomial's coefficients: first in a cubic or a quartic, after the order in a poly.
-bool coefficientsHere(std::string_view keyword, size_t itemsBefore) {
-  return ((keyword == "cubic" || keyword == "quartic") && itemsBefore == 0) || (keyword == "poly" && itemsBefore == 1);
+// Where POV-Ray reads a list longer than a vector: a polynomial's coefficients, first in a cubic or a quartic, after
+// the order in a poly; and the twelve numbers after `matrix`.
+bool coefficientsHere(std::string_view keyword, const std::vector<Item>& before) {
+  const size_t n = before.size();
+  if (n > 0 && before.back().kind == Item::Kind::Keyword && before.back().word == "matrix") return true;
+  return ((keyword == "cubic" || keyword == "quartic") && n == 0) || (keyword == "poly" && n == 1);
 }
 
 }  // namespace
@@ -221,7 +224,7 @@ std::shared_ptr<const Node> Interpreter::block(std::string_view keyword, const S
       // A text's font selector (`internal 1`), not the built-in function of that name.
       item.word = next().text;
       item.kind = Item::Kind::Keyword;
-    } else if (t.is("<") && coefficientsHere(keyword, node->items.size())) {
+    } else if (t.is("<") && coefficientsHere(keyword, node->items)) {
       item.kind = Item::Kind::Value;
       item.value = coefficientList(item.loc);
     } else if (startsExpression(t)) {

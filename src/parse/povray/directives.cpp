@@ -215,8 +215,6 @@ void Interpreter::includeDirective(const SourceLoc& at) {
   pushFile(name.s, *texts_.back(), &at);
 }
 
-// Where #include and #read find a file: as named if absolute, else in the scene's folder, the -L folders and
-// the standard include library, in that order; "" if nowhere.
 std::string Interpreter::findFile(const std::string& name) const {
   if (!name.empty() && name[0] == '/') return isFile(name) ? name : "";
   std::vector<std::string> folders{sceneFolder_};

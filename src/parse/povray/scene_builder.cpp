@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <unordered_map>
+#include <utility>
 
 #include "raytrace/parse/povray/interpreter.hpp"
 #include "raytrace/parse/povray/surface_reader.hpp"
@@ -23,6 +24,11 @@ template <class K> struct HasSturm<K, std::void_t<decltype(std::declval<K&>().st
 class Builder {
  public:
   Builder(SceneDesc& scene, const Interpreter& interpreter) : scene_(scene), interpreter_(interpreter) {}
+
+  void statement(const std::shared_ptr<const Node>& n) {
+    statementNode_ = n;
+    statement(*n);
+  }
 
   void statement(const Node& n) {
     const std::string_view k = n.keyword;
@@ -89,11 +95,13 @@ class Builder {
     auto& made = asked_[n.get()];
     if (!made.object) {
       made.node = n;
+      const auto statement = std::exchange(statementNode_, n);
       const size_t lights = scene_.lights.size();
       ObjectDesc o;
       // What follows would build on a wrong answer: a refusal is reported now.
       if (!object(*n, o) || refusals_.first) finish();
       scene_.lights.resize(lights);
+      statementNode_ = statement;
       made.object = makeObject<double>(o, SphereMethod::Robust, 0, false);
     }
     return *made.object;
@@ -196,6 +204,22 @@ class Builder {
       return s;
     }
     std::string findFont(const std::string& name) const { return b_.interpreter_.findFont(name); }
+    std::string findFile(const std::string& name) const { return b_.interpreter_.findFile(name); }
+    bool functionNext() const {
+      return i_ < n_.items.size() && n_.items[i_].kind == Item::Kind::Value && n_.items[i_].value.type == Value::Type::Function;
+    }
+    // A mesh triangle's texture, in the mesh's space (moveTextures() moves it with the mesh).
+    bool texture(FaceSurface& out, const void*& source) {
+      if (i_ >= n_.items.size() || n_.items[i_].kind != Item::Kind::Node || n_.items[i_].node->keyword != "texture") return false;
+      const Node& t = *n_.items[i_++].node;
+      // `texture { T }` holds T's own tree: two triangles naming T share one surface.
+      source = t.items.size() == 1 && t.items[0].kind == Item::Kind::Node ? static_cast<const void*>(t.items[0].node.get()) : &t;
+      Surface s = b_.default_;
+      readSurfaceItem(t, s, b_.default_, b_.refusals_);
+      out.material = constantMaterial(s);
+      out.texture = s.patterned() ? std::make_shared<const Texture>(bounded(makeTexture(s, {}))) : nullptr;
+      return true;
+    }
     // `word { … }` next: read(reader) reads its items; what it leaves is refused.
     template <class F> bool block(std::string_view word, F&& read) {
       if (i_ >= n_.items.size() || n_.items[i_].kind != Item::Kind::Node || n_.items[i_].node->keyword != word) return false;
@@ -248,8 +272,7 @@ class Builder {
   // Whether an item is an object: a shape of ours, or one of POV-Ray's that is refused when read.
   static bool isObject(const Item& it) {
     static constexpr std::string_view kPovObjects[] = {
-        "bicubic_patch", "height_field", "julia_fractal", "light_group", "mesh", "mesh2", "object",
-        "ovus", "parametric", "polygon", "polynomial", "smooth_triangle", "sphere_sweep"};
+        "julia_fractal", "light_group", "object", "ovus", "parametric", "polynomial", "sphere_sweep"};
     if (it.kind != Item::Kind::Node) return false;
     const std::string_view k = it.node->keyword;
     return isShapeKeyword(k) || std::find(std::begin(kPovObjects), std::end(kPovObjects), k) != std::end(kPovObjects);
@@ -280,7 +303,19 @@ class Builder {
       ItemReader reader(*this, n, i);
       // A union of light sources alone, which POV-Ray allows to move them together.
       const bool lightsAlone = k == "union" && std::none_of(n.items.begin(), n.items.end(), isObject);
-      std::optional<ShapeDesc> shape = lightsAlone ? ShapeDesc(CsgDesc{}) : readShape(k, reader);
+      std::optional<ShapeDesc> shape;
+      // A mesh read before (`object { MyMesh }` again) is the same triangles, shared (shapes/triangle_mesh).
+      if (const auto read = meshesRead_.empty() ? meshesRead_.end() : meshesRead_.find(&n); read != meshesRead_.end()) {
+        shape = read->second.first;
+        i = read->second.second;
+      } else {
+        shape = lightsAlone ? ShapeDesc(CsgDesc{}) : readShape(k, reader);
+        if (shape && std::holds_alternative<MeshDesc>(*shape)) {
+          meshesRead_.emplace(&n, std::make_pair(*shape, i));
+          // The statement holds the node: its address names no other node while the map has it.
+          if (heldNodes_.empty() || heldNodes_.back() != statementNode_) heldNodes_.push_back(statementNode_);
+        }
+      }
       if (!shape) {
         refuse(n.loc, k);
         return false;
@@ -390,6 +425,14 @@ class Builder {
     }
     if (auto* csg = std::get_if<CsgDesc>(&o.shape)) {
       for (ObjectDesc& child : csg->children) moveTextures(child, undo);
+    }
+    if (auto* mesh = std::get_if<MeshDesc>(&o.shape)) {
+      for (FaceSurface& face : mesh->surfaces) {
+        if (!face.texture) continue;
+        auto t = std::make_shared<Texture>(*face.texture);
+        t->fromWorld = t->fromWorld * undo;
+        face.texture = t;
+      }
     }
   }
 
@@ -666,6 +709,11 @@ class Builder {
     std::unique_ptr<Object<double>> object;
   };
   std::unordered_map<const Node*, Asked> asked_;
+  // The meshes read, by their node, with the item after what their read took; the statements that hold
+  // those nodes; the statement being read.
+  std::unordered_map<const Node*, std::pair<ShapeDesc, size_t>> meshesRead_;
+  std::vector<std::shared_ptr<const Node>> heldNodes_;
+  std::shared_ptr<const Node> statementNode_;
 };
 
 // The texture with every layer's ambient term scaled, in the textures of its patterns too.
@@ -686,6 +734,12 @@ void scaleAmbient(ObjectDesc& o, const Color& light) {
   if (o.texture) o.texture = std::make_shared<const Texture>(ambientScaled(*o.texture, light));
   if (auto* csg = std::get_if<CsgDesc>(&o.shape)) {
     for (ObjectDesc& child : csg->children) scaleAmbient(child, light);
+  }
+  if (auto* mesh = std::get_if<MeshDesc>(&o.shape)) {
+    for (FaceSurface& face : mesh->surfaces) {
+      face.material.ambient *= light;
+      if (face.texture) face.texture = std::make_shared<const Texture>(ambientScaled(*face.texture, light));
+    }
   }
 }
 
@@ -721,14 +775,17 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   }
   Builder builder(scene, interpreter);
   builderOf = &builder;
-  interpreter.run(path, text, [&](const std::shared_ptr<const Node>& n) { builder.statement(*n); },
+  interpreter.run(path, text, [&](const std::shared_ptr<const Node>& n) { builder.statement(n); },
                   [&](const std::shared_ptr<const Node>& n) { builder.defaults(*n); });
   builder.finish();
-  // POV-Ray 3.7 works in linear light and writes sRGB when assumed_gamma is 1, which is its default from
-  // #version 3.7 on; an older scene, or another gamma (mostly 2.2), has its colours written as they are
+  // POV-Ray 3.7 writes the sRGB of each pixel's colour raised to assumed_gamma, which is 1 by default from
+  // #version 3.7 on; an older scene without assumed_gamma has its colours written as they are
   // (docs/povray-language.md, "Gamma").
   const double gamma = builder.assumedGamma_.value_or(interpreter.version() >= 3.7 ? 1.0 : 0.0);
-  if (gamma == 1.0) scene.conventions.toByte = Conventions::ToByte::Srgb;
+  if (gamma > 0) {
+    scene.conventions.toByte = Conventions::ToByte::Srgb;
+    scene.conventions.gamma = float(gamma);
+  }
   for (ObjectDesc& o : scene.objects) scaleAmbient(o, builder.ambientLight_);
   scene.dataFiles = interpreter.takeDataFiles();
   return scene;

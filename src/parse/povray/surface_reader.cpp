@@ -49,8 +49,19 @@ bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, 
   }
   if (w != "translate" && w != "rotate" && w != "scale" && w != "matrix") return false;
   const Value* v = valueAfter(n, i);
-  if (w == "matrix" || !v) {
+  if (!v) {
     refusals.refuse(it.loc, w);
+    return true;
+  }
+  if (w == "matrix") {
+    const auto* list = dynamic_cast<const CoefficientList*>(v->ref.get());
+    if (!list || list->values.size() != 12) {
+      throw ParseError(n.items[i].loc, "'matrix' needs 12 numbers, found " +
+                                           std::to_string(list ? list->values.size() : size_t(v->size)));
+    }
+    auto m = std::make_shared<std::array<double, 12>>();
+    std::copy(list->values.begin(), list->values.end(), m->begin());
+    steps.push_back({TransformStep::Kind::Matrix, glm::dvec3(0), std::move(m)});
     return true;
   }
   glm::dvec3 a = vec3(*v);
@@ -283,6 +294,12 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
     }
     if (isFunction(it)) {
       continue;  // refused by draft.start
+    } else if (w == "average") {
+      const Rgbft keep = p.solid;
+      p = Pigment{};
+      p.solid = keep;
+      p.average = true;
+      draft = PatternDraft{};
     } else if (w == "quick_color" || w == "quick_colour") {
       valueAfter(n, i);
     } else if (!readWave(n, i, p) && !draft.modifier(n, i, refusals)) {
@@ -295,7 +312,9 @@ void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, R
   PatternDraft draft;
   readPigmentItems(n, p, draft, steps, refusals);
   draft.finish(p.pattern, n.loc, refusals);
-  if (p.pattern && p.pattern->blocks() == 0 && p.map.empty()) refusals.refuse(n.loc, "a pattern's default color_map");
+  // Without a map a continuous pattern is drawn as a grey ramp, black at 0 and white at 1 (measured).
+  if (p.average && p.map.empty()) throw ParseError(n.loc, "'average' needs a pigment_map");
+  if (p.pattern && p.pattern->blocks() == 0 && p.map.empty()) p.map = {{0, solidPigment({})}, {1, solidPigment({Color(1), 0, 0})}};
   while (p.pattern && p.list.size() < size_t(p.pattern->blocks())) {
     p.list.push_back(solidPigment({p.pattern->defaultBlock(int(p.list.size())), 0, 0}));
   }
@@ -390,7 +409,10 @@ std::shared_ptr<const Pigment> patternPigment(const Node& n, Refusals& refusals)
   return p;
 }
 
-bool Surface::patterned() const { return layers.size() > 1 || layers[0].pigment.pattern || layers[0].pattern; }
+bool Surface::patterned() const {
+  const Pigment& p = layers[0].pigment;
+  return layers.size() > 1 || p.pattern || p.average || layers[0].pattern;
+}
 
 namespace {
 

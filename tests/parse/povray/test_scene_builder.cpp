@@ -189,6 +189,9 @@ global_settings { noise_generator 1 }
   // Away from the z axis the turbulence bends the rings: the two planes differ there.
   const glm::dvec3 p(0.3, 0, 0.2);
   CHECK(s.objects[0].texture->at(p).pigment.r != Approx(s.objects[1].texture->at(p).pigment.r));
+  // No map: a grey ramp.
+  const SceneDesc ramp = scene("plane { y, 0 pigment { gradient x } }\n");
+  CHECK(ramp.objects[0].texture->at(glm::dvec3(0.25, 0, 0)).pigment == Color(0.25f));
   CHECK(failure("plane { y, 0 pigment { bozo noise_generator 3 color_map { [0 Red] [1 Blue] } } }\n") ==
         "scene.pov:3:29: error: 'noise_generator 3' is not supported yet");
   CHECK(failure("plane { y, 0 pigment { bozo octaves <1, 2, 3> color_map { [0 Red] [1 Blue] } } }\n") ==

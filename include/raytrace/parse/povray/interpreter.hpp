@@ -68,6 +68,9 @@ class Interpreter {
   // Where a text object's font file is: where an include file would be, else in the folder Debian's
   // fonts-povray installs; as named, else with .ttf added (as POV-Ray does); "" if nowhere.
   std::string findFont(const std::string& name) const;
+  // Where #include, #read and a height field's image find a file: as named if absolute, else in the scene's
+  // folder, the -L folders and the standard include library, in that order; "" if nowhere.
+  std::string findFile(const std::string& name) const;
 
  private:
   struct Slot;
@@ -126,7 +129,6 @@ class Interpreter {
   void breakDirective(const SourceLoc& at);
   std::string_view skipTo(bool stopAtElse, bool stopAtCase);
   void pushFile(const std::string& path, std::string_view text, const SourceLoc* from);
-  std::string findFile(const std::string& name) const;
   void undefine(std::string_view id);
 
   // File input and output (file_io.cpp).
