@@ -234,7 +234,7 @@ class PovParser {
   bool valueNext() const { return peek().kind == Token::Kind::Number || isPunct(peek(), '<'); }
   ObjectDesc object() { return readObject(next()); }
   // The course language has no strings, keywords or blocks in a shape, and so no text, prism, lathe, sor or
-  // blob: the first of these their read() calls stops it.
+  // blob or isosurface: the first of these their read() calls stops it.
   bool keyword(std::string_view) const { throw povRayOnly(); }
   std::string string(const char*) const { throw povRayOnly(); }
   std::string findFont(const std::string&) const { throw povRayOnly(); }
@@ -242,6 +242,7 @@ class PovParser {
   bool functionNext() const { throw povRayOnly(); }
   template <class S> bool texture(S&, const void*&) const { throw povRayOnly(); }
   template <class F> bool block(std::string_view, F&&) const { throw povRayOnly(); }
+  bool function(std::shared_ptr<const Function>&) const { throw povRayOnly(); }
   std::vector<TransformStep> transforms() const { throw povRayOnly(); }
   ParseError povRayOnly() const {
     return ParseError(here(), "'" + std::string(kind_) + "' is read only in POV-Ray 3.7 scenes");

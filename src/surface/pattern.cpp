@@ -16,6 +16,7 @@ const PatternKind* patternKind(std::string_view name) {
       {"crackle", false, makeCrackle},
       {"cylindrical", false, makeCylindrical},
       {"dents", false, makeDents},
+      {"function", false, makeFunctionPattern},
       {"gradient", true, makeGradient},
       {"granite", false, makeGranite},
       {"leopard", false, makeLeopard},

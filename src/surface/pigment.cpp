@@ -35,6 +35,12 @@ double waveValue(double raw, double frequency, double phase, Wave wave, double e
   return shaped(v, wave, exponent);
 }
 
+double Pigment::value(const glm::dvec3& p) const {
+  if (!pattern) return 0;
+  const double raw = pattern->value(glm::dvec3(fromTexture * glm::dvec4(p, 1)));
+  return pattern->blocks() > 0 ? raw : waveValue(raw, frequency, phase, wave, exponent);
+}
+
 Rgbft Pigment::at(const glm::dvec3& p) const {
   if (!pattern && !average) return solid;
   const glm::dvec3 q = glm::dvec3(fromTexture * glm::dvec4(p, 1));

@@ -65,6 +65,8 @@ struct ObjectBuild {
 //   bool functionNext() const;              whether a function comes next (`function { … }`)
 //   bool texture(FaceSurface& s, const void*& source);   a `texture { … }` next: its surface, and the syntax
 //                                           it was read from (the same for two uses of one declared texture)
+//   bool function(std::shared_ptr<const Function>& into);   a `function { … }` next: its compiled form (null,
+//                                           and refused, if it did not compile) (an isosurface's)
 // The course language has no strings, keywords inside a shape or blocks: its parser refuses the calls for them.
 // A template parameter rather than a base class: the parser's calls stay inline in its per-object loop.
 

@@ -18,6 +18,7 @@
 #include "raytrace/shapes/csg.hpp"
 #include "raytrace/shapes/cylinder.hpp"
 #include "raytrace/shapes/disc.hpp"
+#include "raytrace/shapes/isosurface.hpp"
 #include "raytrace/shapes/lathe.hpp"
 #include "raytrace/shapes/mesh.hpp"
 #include "raytrace/shapes/plane.hpp"
@@ -38,7 +39,7 @@ namespace rt {
 
 using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc, CsgDesc, TorusDesc,
                                QuadricDesc, PolyDesc, TextDesc, PrismDesc, LatheDesc, SorDesc, DiscDesc,
-                               SuperellipsoidDesc, BlobDesc, MeshDesc, PolygonDesc>;
+                               SuperellipsoidDesc, BlobDesc, MeshDesc, PolygonDesc, IsosurfaceDesc>;
 
 struct ClipDesc;
 

@@ -11,6 +11,8 @@
 
 namespace rt {
 
+class Function;
+
 class Pattern {
  public:
   virtual ~Pattern() = default;
@@ -57,6 +59,7 @@ struct PatternArgs {
   double agateTurbulence = 1;
   CrackleArgs crackle;
   double control0 = 1, control1 = 1;  // quilted's, written among the pattern's modifiers
+  std::shared_ptr<const Function> function;  // the function pattern's
 };
 
 struct PatternKind {

@@ -15,6 +15,7 @@ std::unique_ptr<Pattern> makeChecker(const PatternArgs&);
 std::unique_ptr<Pattern> makeCrackle(const PatternArgs&);
 std::unique_ptr<Pattern> makeCylindrical(const PatternArgs&);
 std::unique_ptr<Pattern> makeDents(const PatternArgs&);
+std::unique_ptr<Pattern> makeFunctionPattern(const PatternArgs&);
 std::unique_ptr<Pattern> makeGradient(const PatternArgs&);
 std::unique_ptr<Pattern> makeGranite(const PatternArgs&);
 std::unique_ptr<Pattern> makeLeopard(const PatternArgs&);

@@ -41,6 +41,9 @@ struct Pigment {
   bool average = false;  // `average`: the map's pigments mixed, each weighted by its entry's value
 
   Rgbft at(const glm::dvec3& p) const;  // p in texture space
+  // The pattern's value at p after frequency, phase, POV-Ray's wrapping and the wave: what the map reads, and
+  // what a pattern function (`function { pattern { … } }`) returns; a block pattern's block. 0 without a pattern.
+  double value(const glm::dvec3& p) const;
 };
 
 // Whether some colour the pigment can give (its solid colour, or any of its map's or list's) satisfies `pred`.

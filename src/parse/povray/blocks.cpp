@@ -126,7 +126,8 @@ void Interpreter::arrayInitialiser(ArrayValue& a, size_t dim, size_t& index) {
   next();
 }
 
-// `function { … }` or `function(a, b) { … }`: the tokens are kept to be evaluated when called.
+// `function { … }` or `function(a, b) { … }`: compiled, and its tokens kept, to be read again when called if
+// it did not compile.
 Value Interpreter::functionValue(const SourceLoc& at) {
   auto f = std::make_shared<FunctionDef>();
   if (peek().is("(")) {
@@ -146,6 +147,23 @@ Value Interpreter::functionValue(const SourceLoc& at) {
   }
   expect("{", "to begin the function");
   f->body.name = frames_.back().file->name;
+  const bool pattern = peek().isWord("pattern");
+  const Frame& frame = frames_.back();
+  if (pattern && frame.file->tokens[frame.pos + 1].is("{")) {
+    SourceLoc patternAt;
+    next(&patternAt);
+    next();
+    const std::shared_ptr<const Node> node = block("pattern", patternAt, "}");
+    expect("}", "to end the function");
+    f->body.tokens.push_back(Token{});
+    f->why = "pattern in a function";
+    f->whyAt = patternAt;
+    if (options_.patternFunction) options_.patternFunction(*node, *f);
+    Value v;
+    v.type = Value::Type::Function;
+    v.ref = f;
+    return v;
+  }
   int depth = 1;
   for (;;) {
     const Token& t = peek();
@@ -156,6 +174,19 @@ Value Interpreter::functionValue(const SourceLoc& at) {
   }
   next();
   f->body.tokens.push_back(Token{});
+  // The frame's constants (clock, image_width …) are the function's too.
+  Value constant;
+  compileFunction(f->params, f->body, [this, &at, &constant](std::string_view name) -> const Value* {
+    static constexpr std::string_view kConstants[] = {"clock", "clock_delta", "clock_on", "frame_number",
+                                                      "initial_clock", "final_clock", "initial_frame", "final_frame",
+                                                      "image_width", "image_height", "version"};
+    if (std::find(std::begin(kConstants), std::end(kConstants), name) != std::end(kConstants)) {
+      constant = builtin(name, at);
+      return &constant;
+    }
+    const Slot* slot = find(name);
+    return slot ? &slot->value : nullptr;
+  }, *f);
   Value v;
   v.type = Value::Type::Function;
   v.ref = f;

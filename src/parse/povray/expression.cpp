@@ -366,10 +366,20 @@ Value Interpreter::identifierValue(const Token& t, const SourceLoc& at) {
 
 Value Interpreter::callFunction(const FunctionDef& f, std::string_view name, const SourceLoc& at) {
   const std::vector<Value> args = arguments(at);
-  if (args.size() > f.params.size()) {
-    fail(at, "function '" + std::string(name) + "' takes " + std::to_string(f.params.size()) + " arguments, found " +
+  const size_t params = f.compiled ? f.compiled->params() : f.params.size();
+  if (args.size() > params) {
+    fail(at, "function '" + std::string(name) + "' takes " + std::to_string(params) + " arguments, found " +
                  std::to_string(args.size()));
   }
+  if (f.compiled) {
+    double a[Function::kMaxParams];
+    for (size_t i = 0; i < args.size(); ++i) {
+      if (args[i].type != Value::Type::Float) fail(at, "function arguments must be floats");
+      a[i] = args[i].v[0];
+    }
+    return Value::number((*f.compiled)(a, args.size()));
+  }
+  if (f.body.tokens.size() == 1) fail(f.whyAt, "'" + f.why + "' is not supported yet");  // nothing to read again
   if (macroDepth_ >= 400) fail(at, "function calls nested too deep");
   Scope scope;
   // Parameters without an argument are 0, as POV-Ray's x, y and z are for a one-argument call.

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "raytrace/parse/povray/interpreter.hpp"
+#include "raytrace/surface/function.hpp"
 
 namespace rt::povray {
 
@@ -34,10 +35,15 @@ struct Interpreter::MacroDef : Shared {
   std::vector<std::string_view> params;
 };
 
-struct Interpreter::FunctionDef : Shared {
+struct Interpreter::FunctionDef : FunctionValue {
   std::vector<std::string_view> params;  // x, y, z when none are written
   TokenFile body;                        // the tokens between the braces, then End
 };
+
+// Compiles a function's body (function_compiler.cpp) into `into.compiled`, or says in `into.why` what it could
+// not compile. `lookup` finds the identifiers declared where the function is: their values are taken now.
+void compileFunction(const std::vector<std::string_view>& params, const TokenFile& body,
+                     const std::function<const Value*(std::string_view)>& lookup, FunctionValue& into);
 
 // A file #fopen opened: to read, its text, tokens and the next one's place (all freed when it is closed, so a
 // loop that reopens a file takes no more memory); to write, its index in dataFiles_.

@@ -74,6 +74,21 @@ class Builder {
     return std::array<InterpreterOptions::Vec, 2>{{{p.x, p.y, p.z}, {normal.x, normal.y, normal.z}}};
   }
 
+  // A pattern function's compiled form: the pattern's value at (x, y, z), read with the scene's noise generator.
+  void patternFunction(const Node& pattern, FunctionValue& into) {
+    Refusals own;
+    own.sceneNoise = refusals_.sceneNoise;
+    const std::shared_ptr<const Pigment> p = patternPigment(pattern, own);
+    if (own.first) {
+      into.why = own.first->what;
+      into.whyAt = own.first->loc;
+      return;
+    }
+    using Op = Function::Op;
+    into.compiled = std::make_shared<Function>(
+        std::vector<Function::Instr>{{Op::Param, 0}, {Op::Param, 1}, {Op::Param, 2}, {Op::Pattern, 0, 0, nullptr, p}}, 3, 3);
+  }
+
   // The runtime object of a declared object, made once: scenes call trace() in loops. Its light sources are
   // not part of the scene, and a refused part is reported once the file is read.
   const Object<double>& runtimeObject(const std::shared_ptr<const Node>& n) {
@@ -215,6 +230,16 @@ class Builder {
       for (; j < inner.items.size(); ++j) b_.refuseItem(inner.items[j], "a " + std::string(n_.keyword) + "'s " + std::string(word));
       return true;
     }
+    // A `function { … }` next: true, with `into` its compiled form, or null (and refused) if it did not compile.
+    bool function(std::shared_ptr<const Function>& into) {
+      if (i_ >= n_.items.size() || n_.items[i_].kind != Item::Kind::Value || n_.items[i_].value.type != Value::Type::Function) {
+        return false;
+      }
+      const auto& f = static_cast<const FunctionValue&>(*n_.items[i_++].value.ref);
+      into = f.compiled;
+      if (!into) b_.refuse(f.whyAt, f.why);
+      return true;
+    }
     std::vector<TransformStep> transforms() {
       std::vector<TransformStep> steps;
       while (i_ < n_.items.size() && b_.transformItem(n_, i_, steps)) ++i_;
@@ -247,7 +272,7 @@ class Builder {
   // Whether an item is an object: a shape of ours, or one of POV-Ray's that is refused when read.
   static bool isObject(const Item& it) {
     static constexpr std::string_view kPovObjects[] = {
-        "isosurface", "julia_fractal", "light_group", "object", "ovus", "parametric", "polynomial", "sphere_sweep"};
+        "julia_fractal", "light_group", "object", "ovus", "parametric", "polynomial", "sphere_sweep"};
     if (it.kind != Item::Kind::Node) return false;
     const std::string_view k = it.node->keyword;
     return isShapeKeyword(k) || std::find(std::begin(kPovObjects), std::end(kPovObjects), k) != std::end(kPovObjects);
@@ -818,6 +843,7 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   io.extent = [&builderOf](const std::shared_ptr<const Node>& n) { return builderOf->extent(n); };
   io.trace = [&builderOf](const std::shared_ptr<const Node>& n, const InterpreterOptions::Vec& start,
                           const InterpreterOptions::Vec& dir) { return builderOf->trace(n, start, dir); };
+  io.patternFunction = [&builderOf](const Node& pattern, FunctionValue& into) { builderOf->patternFunction(pattern, into); };
   Interpreter interpreter(io);
   for (const std::string& d : options.declares) {
     const size_t eq = d.find('=');

@@ -116,6 +116,8 @@ template <class Waved> bool readWave(const Node& n, size_t& i, Waved& p) {
   return true;
 }
 
+bool isFunction(const Item& it) { return it.kind == Item::Kind::Value && it.value.type == Value::Type::Function; }
+
 // A pattern being read: its kind and what the pigment's modifiers set, made again with them once the block
 // is read, since the modifiers may follow the colour map.
 struct PatternDraft {
@@ -123,14 +125,22 @@ struct PatternDraft {
   PatternArgs args;
   bool modified = false;
 
-  // The pattern of keyword n.items[i] (i moves past its vector), or nothing if the word names no pattern.
-  std::unique_ptr<Pattern> start(const Node& n, size_t& i, const Refusals& refusals) {
+  // The pattern of keyword n.items[i] (i moves past its vector), or of a `function { … }` value; nothing if the
+  // item names no pattern, or is a function that did not compile (refused).
+  std::unique_ptr<Pattern> start(const Node& n, size_t& i, Refusals& refusals) {
     const Item& it = n.items[i];
-    const PatternKind* k = it.kind == Item::Kind::Keyword ? patternKind(it.word) : nullptr;
+    const bool function = isFunction(it);
+    const PatternKind* k = function ? patternKind("function") : it.kind == Item::Kind::Keyword ? patternKind(it.word) : nullptr;
     if (!k) return nullptr;
+    if (function && !static_cast<const FunctionValue&>(*it.value.ref).compiled) {
+      const auto& f = static_cast<const FunctionValue&>(*it.value.ref);
+      refusals.refuse(f.whyAt, f.why);
+      return nullptr;
+    }
     kind = k;
     args = PatternArgs{};
     args.noise.scene = refusals.sceneNoise;
+    if (function) args.function = static_cast<const FunctionValue&>(*it.value.ref).compiled;
     if (k->needsVector) {
       const Value* v = valueAfter(n, i);
       if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a vector");
@@ -289,8 +299,8 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
       }
       continue;
     }
-    if (it.kind != Item::Kind::Keyword) {
-      refusals.refuse(it, it.value.type == Value::Type::Function ? "function" : "a value here");
+    if (it.kind != Item::Kind::Keyword && !isFunction(it)) {
+      refusals.refuse(it, "a value here");
       continue;
     }
     const std::string_view w = it.word;
@@ -302,7 +312,9 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
       p.wave = draft.kind->wave;
       continue;
     }
-    if (w == "average") {
+    if (isFunction(it)) {
+      continue;  // refused by draft.start
+    } else if (w == "average") {
       const Rgbft keep = p.solid;
       p = Pigment{};
       p.solid = keep;
@@ -526,6 +538,17 @@ std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals) 
   return p;
 }
 
+std::shared_ptr<const Pigment> patternPigment(const Node& n, Refusals& refusals) {
+  auto p = std::make_shared<Pigment>();
+  std::vector<TransformStep> steps;
+  PatternDraft draft;
+  readPigmentItems(n, *p, draft, steps, refusals);
+  draft.finish(p->pattern, n.loc, refusals);
+  if (!p->pattern) refusals.refuse(n.loc, "a pattern function without a pattern");
+  p->fromTexture = glm::inverse(composeTransforms<double>(steps));
+  return p;
+}
+
 // An emission needs a Texture too: ambient_light scales a constant material's whole ambient term, and a
 // texture's ambient alone (scene_builder's scaleAmbient).
 bool Surface::patterned() const {
@@ -539,7 +562,7 @@ namespace {
 // Whether a texture block is a pattern of textures: a pattern keyword or a texture_map in it.
 bool texturePatternIn(const Node& n) {
   return std::any_of(n.items.begin(), n.items.end(), [](const Item& it) {
-    return (it.kind == Item::Kind::Keyword && patternKind(it.word)) ||
+    return (it.kind == Item::Kind::Keyword && patternKind(it.word)) || isFunction(it) ||
            (it.kind == Item::Kind::Node && it.node->keyword == "texture_map");
   });
 }

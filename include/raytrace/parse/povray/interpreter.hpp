@@ -39,6 +39,9 @@ struct InterpreterOptions {
   std::function<std::optional<std::array<double, 6>>(const std::shared_ptr<const Node>&)> extent;
   std::function<std::optional<std::array<Vec, 2>>(const std::shared_ptr<const Node>&, const Vec& start, const Vec& dir)>
       trace;
+  // A pattern function, `function { pattern { … } }`: the compiled function of its `pattern` block, or null with
+  // `into.why` saying what in it is not supported.
+  std::function<void(const Node& pattern, FunctionValue& into)> patternFunction;
 };
 
 class Interpreter {

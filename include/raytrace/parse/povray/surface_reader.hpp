@@ -69,6 +69,9 @@ struct Surface {
 // A pigment block on its own, its transforms folded into its fromTexture: a map's or a list's entry, a sky's layer.
 std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals);
 
+// The `pattern { … }` of a pattern function as a pigment without colours, whose value() the function returns.
+std::shared_ptr<const Pigment> patternPigment(const Node& n, Refusals& refusals);
+
 // pigment, finish, normal, texture, material or interior into `s`; anything else is refused. A texture inside a
 // texture pattern starts as `defaults` (#default).
 void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusals& refusals);

@@ -9,6 +9,10 @@
 
 #include "raytrace/util/error.hpp"
 
+namespace rt {
+class Function;
+}
+
 namespace rt::povray {
 
 struct Token;
@@ -82,6 +86,14 @@ struct Node : Shared {
   SourceLoc loc;
   std::vector<Item> items;
   int depth = 1;  // 1 + the deepest node among the items, bounded so that walking a tree cannot overflow the stack
+};
+
+// A `function { … }` value: compiled when its body is in what raytrace compiles (surface/function.hpp), else
+// `why` names what stopped it, for the "… is not supported yet" of a shape or pattern that draws it.
+struct FunctionValue : Shared {
+  std::shared_ptr<const Function> compiled;
+  std::string why;
+  SourceLoc whyAt;
 };
 
 // `array[N][M]…`: elements in row-major order, unset ones of type None.
