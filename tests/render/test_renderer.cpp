@@ -310,7 +310,7 @@ TEST_CASE("An area light lights a point by the share of its grid the point sees"
   checkColor(centre(wallScene("parallel point_at <20, 0, 0>", 0.5)), Color(float(1 / std::sqrt(5))), 1e-5);
 }
 
-TEST_CASE("crand lowers each point's diffuse light by crand·u·C·light, u in [0, 1), whatever n·l", "[render]") {
+TEST_CASE("crand lowers each point's diffuse light by crand·u·C·light, 0 ≤ u < 1, whatever n·l", "[render]") {
   // A wall of pigment 0.8 lit at n·l = 1 by a light of 0.5: ambient 0.08 + diffuse 0.5·0.5·0.8 = 0.28, less up
   // to 0.4·0.5·0.8 = 0.16 (POV-Ray's picture: 0.1195 to 0.2789).
   const std::string text = "#version 3.7;\n"

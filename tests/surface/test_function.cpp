@@ -32,7 +32,7 @@ TEST_CASE("function: calls of other functions, missing arguments as 0, and funct
   CHECK(Function::math1("vlength") == -1);
 }
 
-TEST_CASE("function pattern: the function's value, wrapped into [0, 1) by the pigment", "[function]") {
+TEST_CASE("function pattern: the function's value, wrapped below 1 by the pigment", "[function]") {
   PatternArgs args;
   args.function = std::make_shared<Function>(std::vector<Function::Instr>{{Op::Param, 0}, {Op::Param, 2}, {Op::Add}}, 3, 2);
   const PatternKind* kind = patternKind("function");
