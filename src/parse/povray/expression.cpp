@@ -279,7 +279,7 @@ Value Interpreter::coefficientList(const SourceLoc& at) {
 }
 
 // `color`/`colour`, then any of rgb/rgbf/rgbt/rgbft (and srgb…), red/green/blue/filter/transmit, or a
-// colour or vector expression, in sequence.
+// colour or vector expression, in sequence. A second rgb… starts the next colour (`checker rgb A rgb B` is two).
 Value Interpreter::colour(const SourceLoc& at) {
   std::array<double, 5> c{};
   bool any = false;
@@ -290,6 +290,7 @@ Value Interpreter::colour(const SourceLoc& at) {
     const bool srgb = w.substr(0, 4) == "srgb";
     const std::string_view kind = srgb ? w.substr(1) : w;
     if (kind == "rgb" || kind == "rgbf" || kind == "rgbt" || kind == "rgbft") {
+      if (any) break;
       next();
       const SourceLoc vAt = here();
       const Value v = expression();

@@ -314,6 +314,19 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
     }
     if (isFunction(it)) {
       continue;  // refused by draft.start
+    } else if ((w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") && !p.pattern &&
+               !p.average) {
+      // A colour identifier's component changed after it: `pigment { Gold filter 0.92 }`.
+      const Value* v = valueAfter(n, i);
+      if (!v || v->type != Value::Type::Float) throw ParseError(it.loc, "'" + std::string(w) + "' needs a float");
+      const float x = float(v->v[0]);
+      if (w == "filter") {
+        p.solid.filter = x;
+      } else if (w == "transmit") {
+        p.solid.transmit = x;
+      } else {
+        p.solid.rgb[w == "red" ? 0 : w == "green" ? 1 : 2] = x;
+      }
     } else if (w == "average") {
       const Rgbft keep = p.solid;
       p = Pigment{};

@@ -336,6 +336,13 @@ global_settings { noise_generator 1 }
   // No map: a grey ramp.
   const SceneDesc ramp = scene("plane { y, 0 pigment { gradient x } }\n");
   CHECK(ramp.objects[0].texture->at(glm::dvec3(0.25, 0, 0)).pigment == Color(0.25f));
+  // A second rgb starts the next colour, as POV-Ray reads it.
+  const SceneDesc two = scene("plane { y, 0 pigment { checker rgb <1, 0, 0> rgb <0, 0, 1> } }\n");
+  CHECK(two.objects[0].texture->at(glm::dvec3(0.5, 0, 0.5)).pigment == Color(1, 0, 0));
+  CHECK(two.objects[0].texture->at(glm::dvec3(1.5, 0, 0.5)).pigment == Color(0, 0, 1));
+  // A colour identifier's filter changed after it.
+  const SceneDesc filtered = scene("plane { y, 0 pigment { Red filter 0.9 } }\n");
+  CHECK(filtered.objects[0].material.filter == Approx(0.9f));
   // An average's entries without weights weigh 1 each.
   const SceneDesc mixed = scene("plane { y, 0 pigment { average pigment_map { [pigment { Red }] [3 Blue] } } }\n");
   CHECK(mixed.objects[0].texture->at(glm::dvec3(0)).pigment == Color(0.25f, 0, 0.75f));
