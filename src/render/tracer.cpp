@@ -74,6 +74,7 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
       fogs_(!scene.desc().fogs.empty()),
       batches_(size_t(1 + (options.gi.enabled ? options.gi.bounceCount() : 0))) {
   if (options.depth) conventions_.maxDepth = *options.depth;
+  for (const Light<T>& light : scene.lights()) sampledLights_ = sampledLights_ || light.sampled;
   float localMax = 0, gain = 0;
   // Every material a hit can report: a CSG group's parts' too.
   for (const auto& object : scene.objects()) {
@@ -411,17 +412,27 @@ template <class T>
 typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m, const Vec3<T>& side,
                                             const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
                                             const std::optional<ShadowRay>* shadows) {
-  const bool bent = n != side;
+  const bool plain = !sampledLights_ && n == side && !(m.extras->crand > 0);
+  return plain ? lightLoop<true>(hit, m, side, n, v, record, shadows)
+               : lightLoop<false>(hit, m, side, n, v, record, shadows);
+}
+
+template <class T>
+template <bool kPlain>
+typename Tracer<T>::Local Tracer<T>::lightLoop(const Hit<T>& hit, const Material& m, const Vec3<T>& side,
+                                               const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
+                                               const std::optional<ShadowRay>* shadows) {
+  const bool bent = !kPlain && n != side;
   // Summed in locals, not in the returned struct: that one lives in the caller's memory, and each sum would
   // wait for the store before it.
   Color diffuse(0), specular(0);
-  const float crand = m.extras->crand;
+  const float crand = kPlain ? 0.0f : m.extras->crand;
   for (size_t i = 0; i < scene_.lights().size(); ++i) {
     const Light<T>& light = scene_.lights()[i];
     Color lightColor = light.color;
     ShadowRay own;
     const ShadowRay* s = nullptr;
-    if (light.sampled) {
+    if (!kPlain && light.sampled) {
       if (sampledLight(hit, n, light, i, own, lightColor)) s = &own;
     } else if (shadows) {
       if (shadows[i]) s = &*shadows[i];
@@ -447,7 +458,7 @@ typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m
     const float nl = std::min(bent ? float(glm::dot(n, s->l)) : s->nl, 1.0f);
     if (bent && nl <= 0.0f) continue;
     diffuse += lightColor * m.diffuse * (m.brilliance == 1.0f ? nl : std::pow(nl, m.brilliance));
-    if (__builtin_expect(crand > 0, 0)) diffuse -= grain(lightColor, m, hit.point, i);
+    if (!kPlain && crand > 0) diffuse -= grain(lightColor, m, hit.point, i);
     if (m.specular == Color(0)) continue;  // a matte surface: no power to take
     const float factor = options_.brdf == Brdf::BlinnPhong ? m.lobe == Material::Lobe::Mirror
                                                                  ? phongSpecular(n, v, s->l, m.exponent)

@@ -133,6 +133,11 @@ template <class T> class Tracer {
   // the unit vector to the viewer.
   Local direct(const Hit<T>& hit, const Material& m, const Vec3<T>& side, const Vec3<T>& n, const Vec3<T>& v,
                RayRecord* record, const std::optional<ShadowRay>* shadows);
+  // direct()'s loop over the lights; `kPlain` compiles out what only area and parallel lights, a bent normal
+  // and crand need, so that a scene without them pays nothing for them.
+  template <bool kPlain>
+  Local lightLoop(const Hit<T>& hit, const Material& m, const Vec3<T>& side, const Vec3<T>& n, const Vec3<T>& v,
+                  RayRecord* record, const std::optional<ShadowRay>* shadows);
   // The reflected and refracted light, weighted and tinted (§c.3, §c.4, §c.6), traced refraction first as the
   // course prints them (§a.3).
   Color secondary(const Ray<T>& ray, const Hit<T>& hit, const Material& m, const Vec3<T>& n, const Weights& w,
@@ -162,6 +167,7 @@ template <class T> class Tracer {
   std::vector<const Object<T>*> lastOccluder_;  // per light: what occluded its latest shadow ray (Scene::occluded)
   const SkySphere* sky_;                        // the scene's, or none
   bool fogs_;                                   // whether the scene has any fog
+  bool sampledLights_ = false;   // some light is an area or parallel light (Light::sampled)
   bool filteredShadows_ = false;  // shadow rays pass transparent surfaces (POV-Ray, and some surface lets light through)
   std::vector<Batch> batches_;                 // [0] tile()'s eye rays, [1 + b] the gather rays at bounce b
   RayCounts counts_;
