@@ -26,6 +26,7 @@ const PatternKind* patternKind(std::string_view name) {
       {"quilted", false, makeQuilted},
       {"radial", false, makeRadial},
       {"spherical", false, makeSpherical},
+      {"spiral1", true, makeSpiral1, kTriangle, true, false},  // `spiral1 N`: N arms
       {"spotted", false, makeBozo},
       {"wood", false, makeWood, kTriangle, true},
       {"wrinkles", false, makeWrinkles},

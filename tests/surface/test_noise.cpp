@@ -156,6 +156,11 @@ constexpr double kCells[] = {
     0.5114089341368526, 0.5860920653212816, 0.1272660314571112, 0.2528233490884304,
     0.6202600349206477, 0.8830980900675058, 0.9328535695094615, 0.3462607159744948};
 
+constexpr double kSpiral1[] = {
+    0.8274554345424834, 0.3689626799934431, 0.6863636419863051, 0.3382520600965941,
+    0.0076177864104419, 0.1614243618419411, 0.0540114328831507, 0.6675879024643501,
+    0.5746586083773999, 0.1765928891180959, 0.3255235789834914, 0.0746907127474903};
+
 constexpr double kExact = 1e-11;  // POV-Ray printed 16 decimals; the sums agree to the last few bits
 
 TEST_CASE("noise: both generators and the vector noise give POV-Ray's values", "[noise]") {
@@ -241,6 +246,14 @@ TEST_CASE("noise patterns: crackle's forms, metrics, offset and solid cells, and
   a.crackle = CrackleArgs{};
   a.crackle.solid = true;
   checkPattern("crackle", a, kCrackleSolid);
+}
+
+TEST_CASE("patterns: spiral1's arms, and its turbulence refused", "[noise]") {
+  PatternArgs a;
+  a.vector = glm::dvec3(3);  // spiral1 3
+  a.hasVector = true;
+  checkPattern("spiral1", a, kSpiral1, 1.1e-5);  // the wrap's 1e-5 where a value lands on a whole number
+  CHECK_FALSE(patternKind("spiral1")->turbulenceDrawn);
 }
 
 TEST_CASE("noise: the scene's generator is read when the pattern is drawn", "[noise]") {

@@ -68,6 +68,7 @@ struct PatternKind {
   std::unique_ptr<Pattern> (*make)(const PatternArgs&);
   Wave wave = Wave::Ramp;       // its wave when the pigment names none
   bool ownTurbulence = false;   // it reads the turbulence itself, instead of being displaced by it
+  bool turbulenceDrawn = true;  // false: its own way with turbulence is not drawn yet, and is refused
 };
 
 // The pattern kinds raytrace draws; nothing for any other name.

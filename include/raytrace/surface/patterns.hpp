@@ -28,6 +28,7 @@ std::unique_ptr<Pattern> makeBumpsNormal(const PatternArgs&);
 std::unique_ptr<Pattern> makeDentsNormal(const PatternArgs&);
 std::unique_ptr<Pattern> makeRadial(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpherical(const PatternArgs&);
+std::unique_ptr<Pattern> makeSpiral1(const PatternArgs&);
 std::unique_ptr<Pattern> makeWood(const PatternArgs&);
 std::unique_ptr<Pattern> makeWrinkles(const PatternArgs&);
 

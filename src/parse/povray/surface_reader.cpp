@@ -143,7 +143,7 @@ struct PatternDraft {
     if (function) args.function = static_cast<const FunctionValue&>(*it.value.ref).compiled;
     if (k->needsVector) {
       const Value* v = valueAfter(n, i);
-      if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a vector");
+      if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a number or a vector");
       args.vector = vec3(*v);
       args.hasVector = true;
     }
@@ -205,6 +205,10 @@ struct PatternDraft {
     if (!modified || !pattern) return;
     if (!kind) {
       refusals.refuse(at, "turbulence on a pattern of an earlier block");
+      return;
+    }
+    if (args.turbulence.on() && !kind->turbulenceDrawn) {
+      refusals.refuse(at, "turbulence on " + std::string(kind->name));
       return;
     }
     pattern = makePattern(*kind, args);

@@ -348,6 +348,8 @@ global_settings { noise_generator 1 }
   CHECK(mixed.objects[0].texture->at(glm::dvec3(0)).pigment == Color(0.25f, 0, 0.75f));
   CHECK(failure("plane { y, 0 pigment { bozo noise_generator 3 color_map { [0 Red] [1 Blue] } } }\n") ==
         "scene.pov:3:29: error: 'noise_generator 3' is not supported yet");
+  CHECK(failure("plane { y, 0 pigment { spiral1 2 turbulence 0.3 } }\n") ==
+        "scene.pov:3:14: error: 'turbulence on spiral1' is not supported yet");
   CHECK(failure("plane { y, 0 pigment { bozo octaves <1, 2, 3> color_map { [0 Red] [1 Blue] } } }\n") ==
         "scene.pov:3:29: error: 'octaves' needs a float");
 }
