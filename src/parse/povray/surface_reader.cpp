@@ -182,7 +182,7 @@ struct PatternDraft {
     } else if (w == "offset") {
       args.crackle.offset = x;
     } else if (w == "octaves") {
-      t.octaves = std::clamp(int(x), 1, 10);  // POV-Ray's limits
+      t.octaves = int(std::clamp(x, 1.0, 10.0));  // POV-Ray's limits
     } else if (w == "omega") {
       t.omega = float(x);
     } else if (w == "lambda") {
