@@ -35,9 +35,19 @@ double waveValue(double raw, double frequency, double phase, Wave wave, double e
   return shaped(v, wave, exponent);
 }
 
+glm::dvec3 Pigment::patternPoint(const glm::dvec3& p) const {
+  if (warps.empty()) return glm::dvec3(fromTexture * glm::dvec4(p, 1));
+  glm::dvec3 q = p;
+  for (const WarpStage& w : warps) {
+    q = glm::dvec3(w.before * glm::dvec4(q, 1));
+    q += turbulentOffset(q, w.turbulence) * w.turbulence.amount;
+  }
+  return glm::dvec3(afterWarps * glm::dvec4(q, 1));
+}
+
 double Pigment::value(const glm::dvec3& p) const {
   if (!pattern) return 0;
-  const double raw = pattern->value(glm::dvec3(fromTexture * glm::dvec4(p, 1)));
+  const double raw = pattern->value(patternPoint(p));
   return pattern->blocks() > 0 ? raw : waveValue(raw, frequency, phase, wave, exponent);
 }
 
@@ -55,7 +65,7 @@ Rgbft Pigment::at(const glm::dvec3& p) const {
     }
     return weights > 0 ? mix(Rgbft{}, sum, float(1 / weights)) : solid;
   }
-  const double raw = pattern->value(q);
+  const double raw = pattern->value(warps.empty() ? q : patternPoint(p));
   if (pattern->blocks() > 0) {
     const size_t i = std::min(size_t(raw), list.size() - 1);
     return list[i]->at(q);

@@ -28,6 +28,13 @@ struct MapEntry {
 // 3.7 manual, "Waveform"): what a colour map or a slope map reads.
 double waveValue(double raw, double frequency, double phase, Wave wave, double exponent);
 
+// A turbulence warp (`warp { turbulence … }`): the point displaced where the warp stands among the pigment's
+// transforms, those written after it undone first (as POV-Ray's values show: docs/povray-noise.md).
+struct WarpStage {
+  glm::dmat4 before{1};  // the inverse of the transforms written after this warp and before the next one
+  Turbulence turbulence;
+};
+
 struct Pigment {
   Rgbft solid;                              // the colour when there is no pattern
   std::shared_ptr<const Pattern> pattern;
@@ -39,11 +46,17 @@ struct Pigment {
   double frequency = 1, phase = 0, exponent = 1;
   Wave wave = Wave::Ramp;
   bool average = false;  // `average`: the map's pigments mixed, each weighted by its entry's value
+  // Warps, the last written first; with any, the pattern reads its point through them and then afterWarps (the
+  // inverse of the transforms written before the first warp), while the map's pigments still read fromTexture.
+  std::vector<WarpStage> warps;
+  glm::dmat4 afterWarps{1};
 
   Rgbft at(const glm::dvec3& p) const;  // p in texture space
   // The pattern's value at p after frequency, phase, POV-Ray's wrapping and the wave: what the map reads, and
   // what a pattern function (`function { pattern { … } }`) returns; a block pattern's block. 0 without a pattern.
   double value(const glm::dvec3& p) const;
+  // The point of texture space where the pattern is read: through the transforms and warps.
+  glm::dvec3 patternPoint(const glm::dvec3& p) const;
 };
 
 // Whether some colour the pigment can give (its solid colour, or any of its map's or list's) satisfies `pred`.

@@ -91,7 +91,7 @@ std::shared_ptr<const Pigment> solidPigment(const Rgbft& c) {
   return p;
 }
 
-void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals);
+std::vector<WarpMark> readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals);
 
 // frequency, phase and the wave types of a pigment or a normal; false for any other item.
 template <class Waved> bool readWave(const Node& n, size_t& i, Waved& p) {
@@ -124,6 +124,7 @@ struct PatternDraft {
   const PatternKind* kind = nullptr;
   PatternArgs args;
   bool modified = false;
+  std::vector<WarpMark> warps;
 
   // The pattern of keyword n.items[i] (i moves past its vector), or of a `function { … }` value; nothing if the
   // item names no pattern, or is a function that did not compile (refused).
@@ -274,6 +275,18 @@ void readMap(const Node& n, std::vector<MapEntry>& map, Refusals& refusals, bool
   std::stable_sort(map.begin(), map.end(), [](const MapEntry& a, const MapEntry& b) { return a.value < b.value; });
 }
 
+// `warp { turbulence T [octaves omega lambda] }`, after the first `after` transforms; other warps are refused.
+void readWarp(const Node& n, size_t after, PatternDraft& draft, Refusals& refusals) {
+  PatternDraft own;  // reads the turbulence items as a pattern's modifiers do
+  for (size_t i = 0; i < n.items.size(); ++i) {
+    const Item& it = n.items[i];
+    const bool turbulent = it.kind == Item::Kind::Keyword && (it.word == "turbulence" || it.word == "octaves" ||
+                                                             it.word == "omega" || it.word == "lambda");
+    if (!turbulent || !own.modifier(n, i, refusals)) refusals.refuse(it, "warp");
+  }
+  if (own.args.turbulence.on()) draft.warps.push_back({after, own.args.turbulence});
+}
+
 void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vector<TransformStep>& steps,
                       Refusals& refusals) {
   for (size_t i = 0; i < n.items.size(); ++i) {
@@ -295,6 +308,8 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
         p.list.push_back(nestedPigment(*it.node, refusals));
       } else if (k == "pigment") {
         readPigmentItems(*it.node, p, draft, steps, refusals);  // an identifier, modified by what follows
+      } else if (k == "warp") {
+        readWarp(*it.node, steps.size(), draft, refusals);
       } else if (k == "color_map" || k == "colour_map" || k == "pigment_map") {
         p.map.clear();
         readMap(*it.node, p.map, refusals, p.average);
@@ -345,7 +360,7 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
   }
 }
 
-void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals) {
+std::vector<WarpMark> readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals) {
   PatternDraft draft;
   readPigmentItems(n, p, draft, steps, refusals);
   draft.finish(p.pattern, n.loc, refusals);
@@ -355,6 +370,7 @@ void readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, R
   while (p.pattern && p.list.size() < size_t(p.pattern->blocks())) {
     p.list.push_back(solidPigment({p.pattern->defaultBlock(int(p.list.size())), 0, 0}));
   }
+  return std::move(draft.warps);
 }
 
 // `reflection { [min,] max [fresnel on] [falloff F] }` (POV-Ray 3.7 manual, "Specular Reflection"): one value
@@ -547,11 +563,24 @@ FinishTerms finishTerms(const PovFinish& f, const Surface& s) {
 
 }  // namespace
 
+void placeTransforms(Pigment& p, const std::vector<TransformStep>& steps, const std::vector<WarpMark>& warps) {
+  p.fromTexture = glm::inverse(composeTransforms<double>(steps));
+  p.warps.clear();
+  // Undone from the last written: the transforms after the last warp, that warp, and so on back to the first.
+  size_t end = steps.size();
+  for (auto w = warps.rbegin(); w != warps.rend(); ++w) {
+    const std::vector<TransformStep> between(steps.begin() + long(w->after), steps.begin() + long(end));
+    p.warps.push_back({glm::inverse(composeTransforms<double>(between)), w->turbulence});
+    end = w->after;
+  }
+  p.afterWarps = glm::inverse(composeTransforms<double>({steps.begin(), steps.begin() + long(end)}));
+}
+
 std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals) {
   auto p = std::make_shared<Pigment>();
   std::vector<TransformStep> steps;
-  readPigment(n, *p, steps, refusals);
-  p->fromTexture = glm::inverse(composeTransforms<double>(steps));
+  const std::vector<WarpMark> warps = readPigment(n, *p, steps, refusals);
+  placeTransforms(*p, steps, warps);
   return p;
 }
 
@@ -644,7 +673,8 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
   const std::string_view k = n.keyword;
   SurfaceLayer& top = s.layers.back();
   if (k == "pigment") {
-    readPigment(n, top.pigment, top.steps, refusals);
+    const std::vector<WarpMark> warps = readPigment(n, top.pigment, top.steps, refusals);
+    top.warps.insert(top.warps.end(), warps.begin(), warps.end());
   } else if (k == "finish") {
     readFinish(n, top.finish, refusals);
   } else if (k == "normal") {
@@ -718,7 +748,7 @@ Texture makeTexture(const Surface& s, const std::vector<TransformStep>& after) {
   Texture t;
   for (const SurfaceLayer& layer : s.layers) {
     auto p = std::make_shared<Pigment>(layer.pigment);
-    p->fromTexture = glm::inverse(composeTransforms<double>(layer.steps));
+    placeTransforms(*p, layer.steps, layer.warps);
     std::shared_ptr<Normal> normal;
     if (layer.normal && layer.normal->pattern) {
       normal = std::make_shared<Normal>(*layer.normal);

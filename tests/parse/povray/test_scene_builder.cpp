@@ -354,6 +354,22 @@ global_settings { noise_generator 1 }
         "scene.pov:3:29: error: 'octaves' needs a float");
 }
 
+TEST_CASE("povray scene: a turbulence warp displaces the point where it stands among the transforms", "[povray]") {
+  // Values POV-Ray printed for function { pattern { … } } at the same points.
+  const SceneDesc s = scene(R"(
+plane { y, 0 pigment { bozo scale 2 warp { turbulence 0.5 } color_map { [0 Black] [1 White] } } }
+plane { y, 0 pigment { bozo warp { turbulence 0.5 } scale 2 color_map { [0 Black] [1 White] } } }
+)");
+  REQUIRE(s.objects.size() == 2);
+  const glm::dvec3 a(0.3, 0.7, 0.2), b(1.7, -0.4, 0.9);
+  CHECK(s.objects[0].texture->at(a).pigment.r == Approx(0.2868780100536544).margin(1e-6));
+  CHECK(s.objects[0].texture->at(b).pigment.r == Approx(0.3254249134030404).margin(1e-6));
+  CHECK(s.objects[1].texture->at(a).pigment.r == Approx(0.1557192993952387).margin(1e-6));
+  CHECK(s.objects[1].texture->at(b).pigment.r == Approx(0.3909708381241105).margin(1e-6));
+  CHECK(failure("plane { y, 0 pigment { bozo warp { repeat x } } }\n") ==
+        "scene.pov:3:36: error: 'repeat' is not supported yet");
+}
+
 TEST_CASE("povray scene: min_extent, max_extent and trace ask the object; a macro's arguments may omit commas",
           "[povray]") {
   // What POV-Ray printed for the same lines.

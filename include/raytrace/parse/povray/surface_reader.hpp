@@ -49,9 +49,19 @@ struct PovFinish {
   double diffuse = 0.6, phong = 0, phongSize = 40, specular = 0, roughness = 0.05, reflection = 0, brilliance = 1, metallic = 0;
 };
 
+// A `warp { turbulence … }` in a pigment, after the first `after` of its transforms.
+struct WarpMark {
+  size_t after;
+  Turbulence turbulence;
+};
+
+// The pigment's fromTexture, and its warps between its transforms.
+void placeTransforms(Pigment& p, const std::vector<TransformStep>& steps, const std::vector<WarpMark>& warps);
+
 struct SurfaceLayer {
   Pigment pigment;                       // POV-Ray's default pigment is black
   std::vector<TransformStep> steps;      // the pigment's and texture's own transforms, in order
+  std::vector<WarpMark> warps;           // the pigment's warps among them
   PovFinish finish;
   std::shared_ptr<const TexturePattern> pattern;  // a pattern of whole textures instead
   std::optional<Normal> normal;
