@@ -5,10 +5,7 @@
 #include <fstream>
 #include <iterator>
 
-// stb_image decodes the files; STB_IMAGE_STATIC keeps its functions to this file, so that another file of the
-// program (or of its tests) may compile its own copy.
-#define STB_IMAGE_STATIC
-#define STB_IMAGE_IMPLEMENTATION
+// stb_image decodes the files (compiled once, in src/image/stb_image.cpp).
 #include <stb/stb_image.h>
 
 namespace rt {
@@ -42,7 +39,7 @@ std::optional<HeightImage> paletteIndices(const std::string& bytes) {
   char* raw = stbi_zlib_decode_malloc(compressed.data(), int(compressed.size()), &size);
   if (!raw) return std::nullopt;
   const std::string rows(raw, size_t(size));
-  STBI_FREE(raw);
+  stbi_image_free(raw);
   if (rows.size() < (stride + 1) * height) return std::nullopt;
   HeightImage image{int(width), int(height), {}};
   image.heights.reserve(size_t(width) * height);
