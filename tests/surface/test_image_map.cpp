@@ -131,6 +131,7 @@ TEST_CASE("image_map: a missing or unreadable file is one located error; what is
           "[image_map]") {
   const test::TempDir dir;
   dir.write("empty.png", "");
+  writeGrid(dir);
   dir.write("text.png", "not an image");
   // A PNG's signature and header of a 0×0 image, and one of 60000×60000 pixels (whose rows are missing).
   const std::string header("\x89\x50\x4e\x47\x0d\x0a\x1a\x0a\x00\x00\x00\x0d\x49\x48\x44\x52", 16);
@@ -155,5 +156,14 @@ TEST_CASE("image_map: a missing or unreadable file is one located error; what is
         dir.file("scene.pov") + ":2:52: error: 'image_map map_type 5' is not supported yet");
   CHECK(failure("png \"empty.png\" filter 1, 0.5") ==
         dir.file("scene.pov") + ":2:52: error: 'image_map filter' is not supported yet");
+  const auto after = [&](const std::string& rest) {
+    try {
+      povIn(dir, "#version 3.7;\nplane { z, 0 pigment { image_map { png \"grid.png\" } " + rest + " } }\n");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK(after("transmit 0.5") == dir.file("scene.pov") + ":2:53: error: 'transmit' is not supported yet");
   CHECK(failure("tiff \"empty.png\"") == dir.file("scene.pov") + ":2:36: error: 'image_map tiff' is not supported yet");
 }

@@ -319,7 +319,7 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
     if (isFunction(it)) {
       continue;  // refused by draft.start
     } else if ((w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") && !p.pattern &&
-               !p.average) {
+               !p.average && !p.image) {
       // A colour identifier's component changed after it: `pigment { Gold filter 0.92 }`.
       const Value* v = valueAfter(n, i);
       if (!v || v->type != Value::Type::Float) throw ParseError(it.loc, "'" + std::string(w) + "' needs a float");
