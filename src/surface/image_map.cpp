@@ -7,6 +7,7 @@
 
 #include <stb/stb_image.h>
 
+#include "raytrace/image/palette_image.hpp"
 #include "raytrace/util/limits.hpp"
 
 namespace rt {
@@ -21,7 +22,8 @@ double wrapped(double x) { return x - std::floor(x); }
 
 }  // namespace
 
-ImageMap readImageFile(const std::string& path, double fileGamma, double workingGamma, const SourceLoc& at) {
+ImageMap readImageFile(const std::string& path, double fileGamma, double workingGamma, const SourceLoc& at,
+                       const std::vector<PaletteChannel>& paletteChannels) {
   const std::string what = "the image map \"" + path + "\"";
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ParseError(at, "cannot read " + what);
@@ -66,6 +68,14 @@ ImageMap readImageFile(const std::string& path, double fileGamma, double working
                        alpha ? float(1 - p[3] / 65535.0) : 0};
   }
   stbi_image_free(pixels);
+  const std::optional<PaletteImage> palette = paletteChannels.empty() ? std::nullopt : paletteIndices(bytes);
+  if (palette && palette->indices.size() == image.pixels.size()) {
+    for (const PaletteChannel& c : paletteChannels) {
+      for (size_t i = 0; i < image.pixels.size(); ++i) {
+        if (palette->indices[i] == c.index) (c.transmit ? image.pixels[i].transmit : image.pixels[i].filter) = c.amount;
+      }
+    }
+  }
   return image;
 }
 

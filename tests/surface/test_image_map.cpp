@@ -108,6 +108,26 @@ TEST_CASE("image_map: interpolate 2 is bilinear and 4 weights the four nearest p
   CHECK(std::lround(image.at({0.203125, 0.234375, 0}).rgb.r * 255) == 4);
 }
 
+TEST_CASE("image_map: filter I, F and transmit I, F set the pixels of a palette image's index I", "[image_map]") {
+  const test::TempDir dir;
+  // A 2×1 GIF of indices 1 and 0: (10, 20, 250) and (200, 100, 50).
+  const std::string gif = dir.write("pal.gif", std::string("\x47\x49\x46\x38\x37\x61\x02\x00\x01\x00\x81\x00\x00\xc8\x64"
+                                                           "\x32\x0a\x14\xfa\x00\x00\x00\x00\x00\x00\x2c\x00\x00\x00"
+                                                           "\x00\x02\x00\x01\x00\x00\x08\x05\x00\x03\x00\x08\x08\x00"
+                                                           "\x3b",
+                                                           44));
+  const ImageMap image = readImageFile(gif, -1, 1, kAt, {{1, true, 0.5f}, {0, false, 0.25f}, {1, false, 0.125f}});
+  REQUIRE(image.pixels.size() == 2);
+  CHECK(image.pixels[0].rgb == Color(10 / 255.0f, 20 / 255.0f, 250 / 255.0f));
+  CHECK(image.pixels[0].transmit == 0.5f);
+  CHECK(image.pixels[0].filter == 0.125f);
+  CHECK(image.pixels[1].transmit == 0);
+  CHECK(image.pixels[1].filter == 0.25f);
+  // A colour image has no indices: its pixels keep their own.
+  const ImageMap rgb = readImageFile(writeGrid(dir), -1, 1, kAt, {{0, true, 1}});
+  CHECK(rgb.pixels[0].transmit == 0);
+}
+
 TEST_CASE("image_map: a 3.7 scene decodes the file from sRGB into its working gamma; an older one takes it as it is",
           "[image_map]") {
   const test::TempDir dir;
@@ -154,8 +174,9 @@ TEST_CASE("image_map: a missing or unreadable file is one located error; what is
         dir.file("scene.pov") + ":2:40: error: cannot read the image map \"" + dir.file("huge.png") + "\": unknown image type");
   CHECK(failure("png \"empty.png\" map_type 5") ==
         dir.file("scene.pov") + ":2:52: error: 'image_map map_type 5' is not supported yet");
-  CHECK(failure("png \"empty.png\" filter 1, 0.5") ==
-        dir.file("scene.pov") + ":2:52: error: 'image_map filter' is not supported yet");
+  CHECK(failure("png \"empty.png\" use_index") ==
+        dir.file("scene.pov") + ":2:52: error: 'image_map use_index' is not supported yet");
+  CHECK(failure("png \"empty.png\" filter 1") == dir.file("scene.pov") + ":2:52: error: 'filter' needs a palette index and an amount");
   const auto after = [&](const std::string& rest) {
     try {
       povIn(dir, "#version 3.7;\nplane { z, 0 pigment { image_map { png \"grid.png\" } " + rest + " } }\n");

@@ -25,10 +25,19 @@ struct ImageMap {
   Rgbft at(const glm::dvec3& p) const;  // p in the pigment's space
 };
 
+// `filter I, F` or `transmit I, F`: the amount given to the pixels of a palette image's index I.
+struct PaletteChannel {
+  int index;
+  bool transmit;
+  float amount;
+};
+
 // An image file's pixels as scene colours (extremes not yet found), row by row from the top: an 8 or 16-bit file's values v decoded as
 // v^fileGamma when fileGamma > 0, as sRGB when fileGamma == 0, and left as they are when it is < 0; then raised
 // to 1 / workingGamma. A high dynamic range file's values are linear. Its alpha channel gives transmit.
+// `channels` then set the filter or transmit of a palette image's pixels (and of no other image's).
 // A ParseError at `at` when the file cannot be read, or has no pixels, or too many.
-ImageMap readImageFile(const std::string& path, double fileGamma, double workingGamma, const SourceLoc& at);
+ImageMap readImageFile(const std::string& path, double fileGamma, double workingGamma, const SourceLoc& at,
+                       const std::vector<PaletteChannel>& channels = {});
 
 }  // namespace rt

@@ -1,5 +1,5 @@
 // `image_map { [type] "file" [map_type 0|1|2] [interpolate 2|4] [once] [filter all F] [transmit all T]
-// [gamma G] }` (POV-Ray 3.7 manual, "Image Maps").
+// [filter I, F] [transmit I, F] [gamma G] }` (POV-Ray 3.7 manual, "Image Maps").
 #include "raytrace/parse/povray/surface_reader.hpp"
 
 namespace rt::povray {
@@ -12,12 +12,12 @@ std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) 
   ImageMap settings;
   double fileGamma = 0;
   std::optional<float> filterAll, transmitAll;
+  std::vector<PaletteChannel> channels;
   bool refused = false;
-  const auto number = [&](size_t& i, const char* what) {
+  // The float after item i (i moves onto it), which follows the keyword `key`.
+  const auto number = [&](size_t& i, const Item& key, const char* what) {
     const Value* v = valueAfter(n, i);
-    if (!v || v->type != Value::Type::Float) {
-      throw ParseError(n.items[i].loc, "'" + std::string(n.items[i].word) + "' needs " + what);
-    }
+    if (!v || v->type != Value::Type::Float) throw ParseError(key.loc, "'" + std::string(key.word) + "' needs " + what);
     return v->v[0];
   };
   for (size_t i = 0; i < n.items.size(); ++i) {
@@ -40,7 +40,7 @@ std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) 
     } else if (w == "once") {
       settings.once = true;
     } else if (w == "map_type") {
-      const double type = number(i, "0, 1 or 2");
+      const double type = number(i, it, "0, 1 or 2");
       if (type == 0 || type == 1 || type == 2) {
         settings.mapping = type == 0 ? ImageMap::Mapping::Planar
                            : type == 1 ? ImageMap::Mapping::Spherical
@@ -50,7 +50,7 @@ std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) 
         refused = true;
       }
     } else if (w == "interpolate") {
-      const double kind = number(i, "2 or 4");
+      const double kind = number(i, it, "2 or 4");
       if (kind == 2 || kind == 4) {
         settings.interpolation = kind == 2 ? ImageMap::Interpolation::Bilinear : ImageMap::Interpolation::NormalizedDistance;
       } else {
@@ -62,15 +62,18 @@ std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) 
         ++i;
         fileGamma = 0;
       } else {
-        fileGamma = number(i, "a float or srgb");
+        fileGamma = number(i, it, "a float or srgb");
         if (!(fileGamma > 0)) throw ParseError(it.loc, "the image map's gamma must be greater than 0");
       }
     } else if ((w == "filter" || w == "transmit") && i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Keyword &&
                n.items[i + 1].word == "all") {
       ++i;
-      (w == "filter" ? filterAll : transmitAll) = float(number(i, "a float"));
+      (w == "filter" ? filterAll : transmitAll) = float(number(i, it, "a float"));
+    } else if (w == "filter" || w == "transmit") {
+      const int index = int(number(i, it, "a palette index and an amount"));
+      channels.push_back({index, w == "transmit", float(number(i, it, "a palette index and an amount"))});
     } else {
-      // `filter I, F` and `transmit I, F` of a palette's index, use_color, use_index, premultiplied …
+      // use_color, use_index, premultiplied …
       refusals.refuse(it.loc, "image_map " + std::string(w));
       refused = true;
     }
@@ -82,7 +85,7 @@ std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) 
   const std::optional<double> working = refusals.imageGamma ? refusals.imageGamma() : std::optional<double>(1.0);
   // Before #version 3.7 a file's values are the scene's colours as they are; from 3.7 on they are decoded
   // (sRGB unless `gamma` says otherwise) and put in the scene's working gamma (measured against POV-Ray 3.7).
-  auto image = std::make_shared<ImageMap>(readImageFile(path, working ? fileGamma : -1, working.value_or(1), nameAt));
+  auto image = std::make_shared<ImageMap>(readImageFile(path, working ? fileGamma : -1, working.value_or(1), nameAt, channels));
   image->mapping = settings.mapping;
   image->interpolation = settings.interpolation;
   image->once = settings.once;
