@@ -8,7 +8,7 @@
 // stb_image decodes the files (compiled once, in src/image/stb_image.cpp).
 #include <stb/stb_image.h>
 
-#include "raytrace/image/palette_image.hpp"
+#include "raytrace/util/palette_image.hpp"
 
 namespace rt {
 

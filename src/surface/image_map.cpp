@@ -7,7 +7,7 @@
 
 #include <stb/stb_image.h>
 
-#include "raytrace/image/palette_image.hpp"
+#include "raytrace/util/palette_image.hpp"
 #include "raytrace/util/limits.hpp"
 
 namespace rt {

@@ -1,4 +1,4 @@
-#include "raytrace/image/palette_image.hpp"
+#include "raytrace/util/palette_image.hpp"
 
 #include <cstdint>
 #include <cstdlib>
