@@ -2,13 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <iterator>
+#include <optional>
 
 #include <stb/stb_image.h>
 
-#include "raytrace/util/palette_image.hpp"
 #include "raytrace/util/limits.hpp"
+#include "raytrace/util/palette_image.hpp"
 
 namespace rt {
 
@@ -58,7 +60,7 @@ ImageMap readImageFile(const std::string& path, double fileGamma, double working
       image.pixels[i] = {Color(decoded(p[0]), decoded(p[1]), decoded(p[2])), 0, alpha ? 1 - p[3] : 0};
     }
     stbi_image_free(pixels);
-      return image;
+    return image;
   }
   stbi_us* pixels = stbi_load_16_from_memory(data, size, &w, &h, &channels, 4);
   if (!pixels) throw ParseError(at, "cannot read " + what + ": " + stbi_failure_reason());

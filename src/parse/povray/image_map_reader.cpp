@@ -2,6 +2,8 @@
 // [filter I, F] [transmit I, F] [gamma G] }` (POV-Ray 3.7 manual, "Image Maps").
 #include "raytrace/parse/povray/surface_reader.hpp"
 
+#include <algorithm>
+
 namespace rt::povray {
 
 std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) {
