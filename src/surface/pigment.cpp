@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raytrace/surface/image_map.hpp"
+
 namespace rt {
 
 Rgbft mix(const Rgbft& a, const Rgbft& b, float t) {
@@ -52,7 +54,7 @@ double Pigment::value(const glm::dvec3& p) const {
 }
 
 Rgbft Pigment::at(const glm::dvec3& p) const {
-  if (!pattern && !average) return solid;
+  if (!pattern && !average) return image ? image->at(patternPoint(p)) : solid;
   const glm::dvec3 q = glm::dvec3(fromTexture * glm::dvec4(p, 1));
   if (average) {
     Rgbft sum;

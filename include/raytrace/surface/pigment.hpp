@@ -17,6 +17,9 @@ struct Rgbft {
 Rgbft mix(const Rgbft& a, const Rgbft& b, float t);  // a at t = 0, b at t = 1
 
 struct Pigment;
+struct ImageMap;
+// An image map's lowest and highest channels, each over all its pixels: what bounds its colours.
+const Rgbft* imageExtremes(const ImageMap& image);
 
 // `[value pigment]` of a color_map or pigment_map, in increasing values.
 struct MapEntry {
@@ -50,6 +53,7 @@ struct Pigment {
   // inverse of the transforms written before the first warp), while the map's pigments still read fromTexture.
   std::vector<WarpStage> warps;
   glm::dmat4 afterWarps{1};
+  std::shared_ptr<const ImageMap> image;  // an image_map, in place of the solid colour
 
   Rgbft at(const glm::dvec3& p) const;  // p in texture space
   // The pattern's value at p after frequency, phase, POV-Ray's wrapping and the wave: what the map reads, and
@@ -61,6 +65,7 @@ struct Pigment {
 
 // Whether some colour the pigment can give (its solid colour, or any of its map's or list's) satisfies `pred`.
 template <class F> bool anyColour(const Pigment& p, const F& pred) {
+  if (p.image) return pred(imageExtremes(*p.image)[0]) || pred(imageExtremes(*p.image)[1]);
   if ((!(p.pattern || p.average) || (p.map.empty() && p.list.empty())) && pred(p.solid)) return true;
   for (const MapEntry& e : p.map) {
     if (anyColour(*e.pigment, pred)) return true;

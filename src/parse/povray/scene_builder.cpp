@@ -23,7 +23,13 @@ template <class K> struct HasSturm<K, std::void_t<decltype(std::declval<K&>().st
 
 class Builder {
  public:
-  Builder(SceneDesc& scene, const Interpreter& interpreter) : scene_(scene), interpreter_(interpreter) {}
+  Builder(SceneDesc& scene, const Interpreter& interpreter) : scene_(scene), interpreter_(interpreter) {
+    refusals_.findFile = [this](const std::string& name) { return interpreter_.findFile(name); };
+    refusals_.imageGamma = [this]() -> std::optional<double> {
+      if (interpreter_.version() < 3.7) return std::nullopt;
+      return assumedGamma_.value_or(1.0);
+    };
+  }
 
   void statement(const std::shared_ptr<const Node>& n) {
     statementNode_ = n;
@@ -78,6 +84,8 @@ class Builder {
   void patternFunction(const Node& pattern, FunctionValue& into) {
     Refusals own;
     own.sceneNoise = refusals_.sceneNoise;
+    own.findFile = refusals_.findFile;
+    own.imageGamma = refusals_.imageGamma;
     const std::shared_ptr<const Pigment> p = patternPigment(pattern, own);
     if (own.first) {
       into.why = own.first->what;

@@ -313,6 +313,10 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
       } else if (k == "color_map" || k == "colour_map" || k == "pigment_map") {
         p.map.clear();
         readMap(*it.node, p.map, refusals, p.average);
+      } else if (k == "image_map") {
+        p = Pigment{};
+        p.image = readImageMap(*it.node, refusals);
+        draft = PatternDraft{};
       } else {
         refusals.refuse(it, "pigment");
       }
@@ -334,7 +338,7 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
     if (isFunction(it)) {
       continue;  // refused by draft.start
     } else if ((w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") && !p.pattern &&
-               !p.average) {
+               !p.average && !p.image) {
       // A colour identifier's component changed after it: `pigment { Gold filter 0.92 }`.
       const Value* v = valueAfter(n, i);
       if (!v || v->type != Value::Type::Float) throw ParseError(it.loc, "'" + std::string(w) + "' needs a float");
@@ -599,7 +603,7 @@ std::shared_ptr<const Pigment> patternPigment(const Node& n, Refusals& refusals)
 // texture's ambient alone (scene_builder's scaleAmbient).
 bool Surface::patterned() const {
   const SurfaceLayer& l = layers[0];
-  return layers.size() > 1 || l.pigment.pattern || l.pigment.average || l.pattern || l.normal ||
+  return layers.size() > 1 || l.pigment.pattern || l.pigment.average || l.pigment.image || l.pattern || l.normal ||
          l.finish.emission != Color(0);
 }
 

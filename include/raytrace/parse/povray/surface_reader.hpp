@@ -2,6 +2,7 @@
 // and the Material or Texture shading reads made of one. Part of the scene builder (scene_builder.cpp).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -10,6 +11,7 @@
 
 #include "raytrace/geometry/transform.hpp"
 #include "raytrace/parse/povray/value.hpp"
+#include "raytrace/surface/image_map.hpp"
 #include "raytrace/surface/texture.hpp"
 
 namespace rt::povray {
@@ -19,6 +21,10 @@ namespace rt::povray {
 // generator, which patterns read when drawn since global_settings may set it after them.
 struct Refusals {
   std::shared_ptr<NoiseGenerator> sceneNoise = std::make_shared<NoiseGenerator>(NoiseGenerator::RangeCorrected);
+  // Where a file the scene names is (empty when it is not found), and the scene's working gamma for an image
+  // map's colours when it is read: assumed_gamma, or nothing before #version 3.7, which takes them as they are.
+  std::function<std::string(const std::string&)> findFile;
+  std::function<std::optional<double>()> imageGamma;
   struct Unsupported {
     SourceLoc loc;
     std::string what;
@@ -29,6 +35,9 @@ struct Refusals {
   }
   void refuse(const Item& it, std::string_view otherwise);  // names the item's keyword, or `otherwise`
 };
+
+// `image_map { [type] "file" … }` (image_map_reader.cpp); nothing when something in it is refused.
+std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals);
 
 glm::dvec3 vec3(const Value& v);
 Rgbft colourOf(const Value& v);
