@@ -98,6 +98,18 @@ double math2(unsigned kind, double a, double b) {
   return 0;
 }
 
+double component(const Rgbft& c, unsigned which) {
+  switch (Function::Component(which)) {
+    case Function::Red: return c.rgb.r;
+    case Function::Green: return c.rgb.g;
+    case Function::Blue: return c.rgb.b;
+    case Function::Filter: return c.filter;
+    case Function::Transmit: return c.transmit;
+    case Function::Gray: return c.rgb.r * 0.297 + c.rgb.g * 0.589 + c.rgb.b * 0.114;
+  }
+  return 0;
+}
+
 }  // namespace
 
 int Function::internalParams(int n) {
@@ -167,6 +179,7 @@ double Function::operator()(const double* args, size_t n) const {
         break;
       }
       case Op::Pattern: top -= 2; s[top - 1] = i.pigment->value({s[top - 1], s[top], s[top + 1]}); break;
+      case Op::Colour: top -= 2; s[top - 1] = component(i.pigment->at({s[top - 1], s[top], s[top + 1]}), i.index); break;
     }
   }
   return s[0];

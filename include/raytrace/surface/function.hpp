@@ -32,8 +32,12 @@ class Function {
     Math2,    // two argument built-in `index` (Math2Kind)
     Call,     // user function `callee` with `index` arguments
     Internal,  // functions.inc's internal(`value`) with `index` arguments
-    Pattern    // `pigment`'s value() at the point of the three arguments (`function { pattern { … } }`)
+    Pattern,   // `pigment`'s value() at the point of the three arguments (`function { pattern { … } }`)
+    Colour     // component `index` (Component) of `pigment`'s colour at the point of the three arguments
   };
+  // A colour's component as a pigment function's `.red`, `.filter` … reads it; Gray is POV-Ray's
+  // 0.297 red + 0.589 green + 0.114 blue (manual, "Color Expressions").
+  enum Component { Red, Green, Blue, Filter, Transmit, Gray };
   enum Math1Kind { Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh, Asinh, Acosh, Atanh, Exp, Ln, Log, Sqrt, Abs,
                    Floor, Ceil, Int, Degrees, Radians };
   enum Math2Kind { Atan2, Pow, Min, Max, Mod };

@@ -147,18 +147,20 @@ Value Interpreter::functionValue(const SourceLoc& at) {
   }
   expect("{", "to begin the function");
   f->body.name = frames_.back().file->name;
-  const bool pattern = peek().isWord("pattern");
+  const bool pattern = peek().isWord("pattern"), pigment = peek().isWord("pigment");
   const Frame& frame = frames_.back();
-  if (pattern && frame.file->tokens[frame.pos + 1].is("{")) {
+  if ((pattern || pigment) && frame.file->tokens[frame.pos + 1].is("{")) {
     SourceLoc patternAt;
     next(&patternAt);
     next();
-    const std::shared_ptr<const Node> node = block("pattern", patternAt, "}");
+    const std::shared_ptr<const Node> node = block(pattern ? "pattern" : "pigment", patternAt, "}");
     expect("}", "to end the function");
     f->body.tokens.push_back(Token{});
-    f->why = "pattern in a function";
+    f->why = pattern ? "pattern in a function" : "pigment in a function";
     f->whyAt = patternAt;
-    if (options_.patternFunction) options_.patternFunction(*node, *f);
+    f->colour = pigment;
+    if (pattern && options_.patternFunction) options_.patternFunction(*node, *f);
+    if (pigment && options_.pigmentFunction) options_.pigmentFunction(*node, *f);
     Value v;
     v.type = Value::Type::Function;
     v.ref = f;

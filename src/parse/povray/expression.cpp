@@ -367,6 +367,19 @@ Value Interpreter::identifierValue(const Token& t, const SourceLoc& at) {
 
 Value Interpreter::callFunction(const FunctionDef& f, std::string_view name, const SourceLoc& at) {
   const std::vector<Value> args = arguments(at);
+  // A pigment function's value is its colour at the point.
+  if (f.pigment) {
+    if (args.size() > 3) {
+      fail(at, "function '" + std::string(name) + "' takes 3 arguments, found " + std::to_string(args.size()));
+    }
+    double p[3] = {0, 0, 0};
+    for (size_t i = 0; i < args.size(); ++i) {
+      if (args[i].type != Value::Type::Float) fail(at, "function arguments must be floats");
+      p[i] = args[i].v[0];
+    }
+    const Rgbft c = f.pigment->at({p[0], p[1], p[2]});
+    return Value::colour({c.rgb.r, c.rgb.g, c.rgb.b, c.filter, c.transmit});
+  }
   const size_t params = f.compiled ? f.compiled->params() : f.params.size();
   if (args.size() > params) {
     fail(at, "function '" + std::string(name) + "' takes " + std::to_string(params) + " arguments, found " +

@@ -4,6 +4,7 @@
 // precedence of the interpreter's expressions inside parentheses.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "interpreter_state.hpp"
 
@@ -18,6 +19,7 @@ constexpr size_t kMaxNesting = 256;
 struct NotCompiled {
   std::string what;
   const Token* at;
+  std::optional<SourceLoc> where;  // the place instead of `at`'s, when it is in another function
 };
 
 class Compiler {
@@ -72,7 +74,7 @@ class Compiler {
         case Function::Op::Neg: case Function::Op::Not: case Function::Op::Math1: break;
         case Function::Op::Choose: case Function::Op::Select3: d -= 2; break;
         case Function::Op::Select4: d -= 3; break;
-        case Function::Op::Pattern: d -= 2; break;
+        case Function::Op::Pattern: case Function::Op::Colour: d -= 2; break;
         case Function::Op::Call: case Function::Op::Internal: d = d + 1 - i.index; break;
         default: --d; break;
       }
@@ -233,6 +235,12 @@ class Compiler {
       if (i < 0 || (v.type == Value::Type::Vector && i >= v.size)) fail("." + std::string(c) + " in a function", &t);
       return emit(Function::Op::Const, 0, v.v[size_t(i)]);
     }
+    if (v.type == Value::Type::Function && at("(") && static_cast<const FunctionValue&>(*v.ref).colour) {
+      const auto& f = static_cast<const FunctionValue&>(*v.ref);
+      // A refused pigment is reported where it is.
+      if (!f.pigment) throw NotCompiled{f.why, &t, f.whyAt};
+      return colour(f, t);
+    }
     if (v.type == Value::Type::Function && at("(")) {
       const auto& callee = static_cast<const FunctionValue&>(*v.ref);
       if (!callee.compiled) fail(std::string(name), &t);
@@ -242,6 +250,28 @@ class Compiler {
       return;
     }
     fail("a " + std::string(typeName(v)) + " in a function", &t);
+  }
+
+  // A pigment function's call and the component read of its colour, `F(x, y, z).red`: the point's missing
+  // coordinates are 0.
+  void colour(const FunctionValue& f, const Token& t) {
+    const size_t n = arguments();
+    if (n > 3) fail(std::string(t.text) + " with too many arguments", &t);
+    for (size_t i = n; i < 3; ++i) emit(Function::Op::Const);
+    // A function's value is a float: POV-Ray stops at the call without a component, as at a bad one.
+    if (!at(".")) throw ParseError(body_.loc(peek()), "expected '.' and a component after the pigment function's call");
+    next();
+    const Token& ct = next();
+    const std::string_view c = ct.text;
+    Function::Component which;
+    if (c == "x" || c == "u" || c == "red") which = Function::Red;
+    else if (c == "y" || c == "v" || c == "green") which = Function::Green;
+    else if (c == "z" || c == "blue") which = Function::Blue;
+    else if (c == "t" || c == "filter") which = Function::Filter;
+    else if (c == "transmit") which = Function::Transmit;
+    else if (c == "gray" || c == "grey") which = Function::Gray;
+    else throw ParseError(body_.loc(ct), "unknown component '." + std::string(c) + "' of a colour");
+    code_.push_back({Function::Op::Colour, unsigned(which), 0, nullptr, f.pigment});
   }
 
   const std::vector<std::string_view>& params_;
@@ -265,7 +295,7 @@ void compileFunction(const std::vector<std::string_view>& params, const TokenFil
     }
   } catch (const NotCompiled& e) {
     into.why = e.what;
-    into.whyAt = body.loc(*e.at);
+    into.whyAt = e.where ? *e.where : body.loc(*e.at);
   }
 }
 

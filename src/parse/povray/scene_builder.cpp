@@ -97,6 +97,19 @@ class Builder {
         std::vector<Function::Instr>{{Op::Param, 0}, {Op::Param, 1}, {Op::Param, 2}, {Op::Pattern, 0, 0, nullptr, p}}, 3, 3);
   }
 
+  // A pigment function's pigment, read with the scene's noise generator.
+  void pigmentFunction(const Node& pigment, FunctionValue& into) {
+    Refusals own;
+    own.sceneNoise = refusals_.sceneNoise;
+    const std::shared_ptr<const Pigment> p = nestedPigment(pigment, own);
+    if (own.first) {
+      into.why = own.first->what;
+      into.whyAt = own.first->loc;
+      return;
+    }
+    into.pigment = p;
+  }
+
   // The runtime object of a declared object, made once: scenes call trace() in loops. Its light sources are
   // not part of the scene, and a refused part is reported once the file is read.
   const Object<double>& runtimeObject(const std::shared_ptr<const Node>& n) {
@@ -852,6 +865,7 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   io.trace = [&builderOf](const std::shared_ptr<const Node>& n, const InterpreterOptions::Vec& start,
                           const InterpreterOptions::Vec& dir) { return builderOf->trace(n, start, dir); };
   io.patternFunction = [&builderOf](const Node& pattern, FunctionValue& into) { builderOf->patternFunction(pattern, into); };
+  io.pigmentFunction = [&builderOf](const Node& pigment, FunctionValue& into) { builderOf->pigmentFunction(pigment, into); };
   Interpreter interpreter(io);
   for (const std::string& d : options.declares) {
     const size_t eq = d.find('=');

@@ -42,6 +42,8 @@ struct InterpreterOptions {
   // A pattern function, `function { pattern { … } }`: the compiled function of its `pattern` block, or null with
   // `into.why` saying what in it is not supported.
   std::function<void(const Node& pattern, FunctionValue& into)> patternFunction;
+  // A pigment function, `function { pigment { … } }`: its pigment in `into.pigment`, or null with `into.why`.
+  std::function<void(const Node& pigment, FunctionValue& into)> pigmentFunction;
 };
 
 class Interpreter {

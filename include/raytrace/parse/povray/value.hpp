@@ -11,6 +11,7 @@
 
 namespace rt {
 class Function;
+struct Pigment;
 }
 
 namespace rt::povray {
@@ -92,6 +93,10 @@ struct Node : Shared {
 // `why` names what stopped it, for the "… is not supported yet" of a shape or pattern that draws it.
 struct FunctionValue : Shared {
   std::shared_ptr<const Function> compiled;
+  // A pigment function, `function { pigment { … } }`: a vector function whose colour other functions read a
+  // component of (`F(x, y, z).red`); `compiled` is then null, and so is `pigment` if the pigment was refused.
+  bool colour = false;
+  std::shared_ptr<const Pigment> pigment;
   std::string why;
   SourceLoc whyAt;
 };
