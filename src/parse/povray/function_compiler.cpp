@@ -51,7 +51,7 @@ class Compiler {
   }
 
  private:
-  [[noreturn]] static void fail(const std::string& what, const Token* at) { throw NotCompiled{what, at}; }
+  [[noreturn]] static void fail(const std::string& what, const Token* at) { throw NotCompiled{what, at, std::nullopt}; }
   const Token& peek() const { return body_.tokens[pos_]; }
   const Token& next() {
     const Token& t = body_.tokens[pos_];
