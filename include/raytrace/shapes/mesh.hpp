@@ -83,10 +83,13 @@ struct MeshDesc {
   }
 
   // What reads a triangle's corners (and normals when `smooth`) into `m`, and, in a mesh (`textured`), its own
-  // texture.
-  static auto triangleReader(bool smooth, bool textured, MeshData& m, std::vector<FaceSurface>& surfaces,
-                             std::vector<const void*>& sources) {
-    return [smooth, textured, &m, &surfaces, &sources](auto& t) {
+  // texture. A named type rather than a lambda: read() above uses it, which a deduced return type forbids.
+  struct TriangleReader {
+    bool smooth, textured;
+    MeshData& m;
+    std::vector<FaceSurface>& surfaces;
+    std::vector<const void*>& sources;
+    template <class Reader> void operator()(Reader& t) const {
       MeshData::Face f;
       for (size_t k = 0; k < 3; ++k) {
         f.v[k] = uint32_t(m.vertices.size());
@@ -97,7 +100,11 @@ struct MeshDesc {
       }
       if (textured) f.surface = faceTexture(t, surfaces, sources);
       m.faces.push_back(f);
-    };
+    }
+  };
+  static TriangleReader triangleReader(bool smooth, bool textured, MeshData& m, std::vector<FaceSurface>& surfaces,
+                                       std::vector<const void*>& sources) {
+    return {smooth, textured, m, surfaces, sources};
   }
 
   template <class Reader> static void readMesh(Reader& r, MeshData& m, std::vector<FaceSurface>& surfaces) {
