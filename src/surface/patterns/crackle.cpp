@@ -30,10 +30,10 @@ class Crackle final : public Pattern {
           for (int k = -shell; k <= shell; ++k) {
             if (std::max({std::abs(i), std::abs(j), std::abs(k)}) != shell && shell > 1) continue;
             const glm::ivec3 c = base + glm::ivec3(i, j, k);
-            if (shell > 1 && reach(glm::max(glm::max(glm::dvec3(c) - p, p - glm::dvec3(c + 1)), 0.0)) >= d[needed - 1]) {
+            if (shell > 1 && rank(glm::max(glm::max(glm::dvec3(c) - p, p - glm::dvec3(c + 1)), 0.0)) >= d[needed - 1]) {
               continue;
             }
-            const double r = reach(glm::abs(cellPoint(c.x, c.y, c.z) - p));
+            const double r = rank(glm::abs(cellPoint(c.x, c.y, c.z) - p));
             if (r < d[0]) nearest = c;
             if (r < d[2]) {
               d[2] = r;
@@ -45,16 +45,20 @@ class Crackle final : public Pattern {
       }
     }
     if (a_.solid) return noise(cellPoint(nearest.x, nearest.y, nearest.z), noise_.get());
-    return std::clamp(a_.form.x * d[0] + a_.form.y * d[1] + a_.form.z * d[2], 0.0, 1.0);
+    return std::clamp(a_.form.x * length(d[0]) + a_.form.y * length(d[1]) + a_.form.z * length(d[2]), 0.0, 1.0);
   }
 
  private:
-  // The metric's length of an offset, lifted by `offset` along a fourth axis.
-  double reach(const glm::dvec3& v) const {
-    if (a_.metric == 2) return std::sqrt(glm::dot(v, v) + a_.offset * a_.offset);
+  // What orders the offsets as the metric's lengths do, lifted by `offset` along a fourth axis: the length
+  // before its root, so that only the three kept take one.
+  double rank(const glm::dvec3& v) const {
+    if (a_.metric == 2) return glm::dot(v, v) + a_.offset * a_.offset;
     if (a_.metric == 1) return v.x + v.y + v.z + std::abs(a_.offset);
     const double m = a_.metric;
-    return std::pow(std::pow(v.x, m) + std::pow(v.y, m) + std::pow(v.z, m) + std::pow(std::abs(a_.offset), m), 1 / m);
+    return std::pow(v.x, m) + std::pow(v.y, m) + std::pow(v.z, m) + std::pow(std::abs(a_.offset), m);
+  }
+  double length(double rank) const {
+    return a_.metric == 2 ? std::sqrt(rank) : a_.metric == 1 ? rank : std::pow(rank, 1 / a_.metric);
   }
 
   CrackleArgs a_;
