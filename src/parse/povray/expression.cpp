@@ -16,6 +16,14 @@ double fromSrgb(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.05
 
 }  // namespace
 
+int componentIndex(std::string_view c) {
+  if (c == "x" || c == "u" || c == "red") return 0;
+  if (c == "y" || c == "v" || c == "green") return 1;
+  if (c == "z" || c == "blue") return 2;
+  if (c == "t" || c == "filter") return 3;
+  return c == "transmit" ? 4 : -1;
+}
+
 const char* typeName(const Value& v) {
   switch (v.type) {
     case Value::Type::None: return "nothing";
@@ -149,12 +157,7 @@ Value Interpreter::postfix() {
     next(&at);
     const std::string_view c = expectWord("a component after '.'");
     if (!v.numeric()) fail(at, std::string("a ") + typeName(v) + " has no components");
-    int i = -1;
-    if (c == "x" || c == "u" || c == "red") i = 0;
-    else if (c == "y" || c == "v" || c == "green") i = 1;
-    else if (c == "z" || c == "blue") i = 2;
-    else if (c == "t" || c == "filter") i = 3;
-    else if (c == "transmit") i = 4;
+    const int i = componentIndex(c);
     if (c == "gray" || c == "grey") {
       v = Value::number(v.v[0] * 0.297 + v.v[1] * 0.589 + v.v[2] * 0.114);
       continue;

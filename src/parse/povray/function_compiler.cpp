@@ -226,12 +226,7 @@ class Compiler {
     if ((v.type == Value::Type::Vector || v.type == Value::Type::Colour) && at(".")) {
       next();
       const std::string_view c = next().text;
-      int i = -1;
-      if (c == "x" || c == "u" || c == "red") i = 0;
-      else if (c == "y" || c == "v" || c == "green") i = 1;
-      else if (c == "z" || c == "blue") i = 2;
-      else if (c == "t" || c == "filter") i = 3;
-      else if (c == "transmit") i = 4;
+      const int i = componentIndex(c);
       if (i < 0 || (v.type == Value::Type::Vector && i >= v.size)) fail("." + std::string(c) + " in a function", &t);
       return emit(Function::Op::Const, 0, v.v[size_t(i)]);
     }

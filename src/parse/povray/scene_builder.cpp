@@ -80,18 +80,22 @@ class Builder {
     return std::array<InterpreterOptions::Vec, 2>{{{p.x, p.y, p.z}, {normal.x, normal.y, normal.z}}};
   }
 
+  // The pigment a function reads, with the scene's settings; null, with why in `into`, if it is refused.
+  template <class Read>
+  std::shared_ptr<const Pigment> functionPigment(const Node& n, FunctionValue& into, Read read) {
+    Refusals own = refusals_;
+    own.first.reset();
+    const std::shared_ptr<const Pigment> p = read(n, own);
+    if (!own.first) return p;
+    into.why = own.first->what;
+    into.whyAt = own.first->loc;
+    return nullptr;
+  }
+
   // A pattern function's compiled form: the pattern's value at (x, y, z), read with the scene's noise generator.
   void patternFunction(const Node& pattern, FunctionValue& into) {
-    Refusals own;
-    own.sceneNoise = refusals_.sceneNoise;
-    own.findFile = refusals_.findFile;
-    own.imageGamma = refusals_.imageGamma;
-    const std::shared_ptr<const Pigment> p = patternPigment(pattern, own);
-    if (own.first) {
-      into.why = own.first->what;
-      into.whyAt = own.first->loc;
-      return;
-    }
+    const std::shared_ptr<const Pigment> p = functionPigment(pattern, into, patternPigment);
+    if (!p) return;
     using Op = Function::Op;
     into.compiled = std::make_shared<Function>(
         std::vector<Function::Instr>{{Op::Param, 0}, {Op::Param, 1}, {Op::Param, 2}, {Op::Pattern, 0, 0, nullptr, p}}, 3, 3);
@@ -99,14 +103,8 @@ class Builder {
 
   // A pigment function's pigment, read with the scene's noise generator.
   void pigmentFunction(const Node& pigment, FunctionValue& into) {
-    Refusals own;
-    own.sceneNoise = refusals_.sceneNoise;
-    const std::shared_ptr<const Pigment> p = nestedPigment(pigment, own);
-    if (own.first) {
-      into.why = own.first->what;
-      into.whyAt = own.first->loc;
-      return;
-    }
+    const std::shared_ptr<const Pigment> p = functionPigment(pigment, into, nestedPigment);
+    if (!p) return;
     into.pigment = p;
   }
 

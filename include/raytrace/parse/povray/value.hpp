@@ -69,6 +69,9 @@ struct CoefficientList : Shared {
 
 // The name POV-Ray's messages give a type: "float", "vector", "colour", "string", …
 const char* typeName(const Value& v);
+// The component `.x` `.u` `.red` (0), `.y` `.v` `.green` (1), `.z` `.blue` (2), `.t` `.filter` (3) or
+// `.transmit` (4) names; −1 for any other word.
+int componentIndex(std::string_view c);
 
 // An element of a syntax tree: a keyword, a value, or a nested block.
 struct Node;
