@@ -8,22 +8,13 @@
 #include "raytrace/shapes/make_object.hpp"
 #include "raytrace/shapes/mesh.hpp"
 
+#include "pov_scene.hpp"
+
 using namespace rt;
+using rt::test::pov;
+using rt::test::povFailure;
 
 namespace {
-
-SceneDesc pov(const std::string& body) {
-  return povray::parsePovRay("#version 3.7;\n" + body, "scene.pov", povray::PovRayOptions{{}, 320, 240, false});
-}
-
-std::string povFailure(const std::string& body) {
-  try {
-    pov(body);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 // The manual's example patch, its corners at z = 2, 2, -2, -2 and its inner points at z = 0.
 const std::string kPoints =

@@ -9,22 +9,13 @@
 #include "raytrace/shapes/make_object.hpp"
 #include "raytrace/shapes/mesh.hpp"
 
+#include "pov_scene.hpp"
+
 using namespace rt;
+using rt::test::pov;
+using rt::test::povFailure;
 
 namespace {
-
-SceneDesc pov(const std::string& body) {
-  return povray::parsePovRay("#version 3.7;\n" + body, "scene.pov", povray::PovRayOptions{{}, 320, 240, false});
-}
-
-std::string povFailure(const std::string& body) {
-  try {
-    pov(body);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 std::unique_ptr<Object<double>> made(const ObjectDesc& o) {
   return makeObject<double>(o, SphereMethod::Auto, 1, false);

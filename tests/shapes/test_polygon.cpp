@@ -8,22 +8,13 @@
 #include "raytrace/parse/povray/scene_builder.hpp"
 #include "raytrace/shapes/polygon.hpp"
 
+#include "pov_scene.hpp"
+
 using namespace rt;
+using rt::test::pov;
+using rt::test::povFailure;
 
 namespace {
-
-SceneDesc pov(const std::string& body) {
-  return povray::parsePovRay("#version 3.7;\n" + body, "scene.pov", povray::PovRayOptions{{}, 320, 240, false});
-}
-
-std::string povFailure(const std::string& body) {
-  try {
-    pov(body);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 const Material kMaterial{};
 
