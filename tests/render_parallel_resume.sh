@@ -70,3 +70,15 @@ cp scene.pov ./-x.pov
 "$raytrace" render ./-x.pov 8 6 --quiet -o one.png
 cmp one.png dash.png || fail "the scene named -x.pov differs from the one-machine render"
 echo "render-parallel: bad tile counts and image names refused at once; a scene named -x.pov rendered"
+
+# A POV-Ray scene that includes a file of its own folder: the tiles find it, and an edited include makes
+# every tile stale, as an edited scene does.
+mkdir inc && cd inc
+echo '#declare Tint = rgb <1, 0.2, 0.2>;' >tint.inc
+printf '%s\n' '#version 3.7;' '#include "tint.inc"' 'camera { location <0, 0, -4> look_at 0 }' \
+  'light_source { <5, 5, -5> rgb 1 }' 'sphere { 0, 1 pigment { Tint } }' >lit.pov
+run lit.pov 40 30
+echo '#declare Tint = rgb <0.2, 0.2, 1>;' >tint.inc
+run --resume lit.pov 40 30
+(($(said "is stale (its raytrace.sceneHash is") == 4)) || { cat log; fail "the edited include not seen"; }
+echo "render-parallel: a scene's include found by the tiles; an edited include makes every tile stale"

@@ -25,12 +25,20 @@ const char* toByteName(Conventions::ToByte mode) {
   return "round";
 }
 
-// FNV-1a, 64 bits (Fowler, Noll and Vo; IETF draft-eastlake-fnv): a content check, not a defence against
-// someone forging a scene.
-std::string contentHash(const std::string& path) {
-  const FileText text = readFile(path);
+// FNV-1a, 64 bits (Fowler, Noll and Vo; IETF draft-eastlake-fnv) over the scene's bytes, then over each file
+// it read, its name and bytes: a content check, not a defence against someone forging a scene.
+std::string contentHash(const std::string& scenePath, const std::vector<std::string>& inputs) {
   uint64_t h = 0xcbf29ce484222325u;
-  for (const char c : text.view()) h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3u;
+  const auto add = [&h](std::string_view bytes) {
+    for (const char c : bytes) h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3u;
+  };
+  add(readFile(scenePath).view());
+  for (const std::string& input : inputs) {
+    add(std::string_view("\0", 1));
+    add(input);
+    add(std::string_view("\0", 1));
+    add(readFile(input).view());
+  }
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016" PRIx64, h);
   return hex;
@@ -49,7 +57,7 @@ std::map<std::string, std::string> tileHeader(const Invocation& inv, const std::
       {"raytrace.version", RAYTRACE_VERSION},
       {"raytrace.command", command},
       {"raytrace.scene", baseName(inv.scenePath)},
-      {"raytrace.sceneHash", contentHash(inv.scenePath)},
+      {"raytrace.sceneHash", contentHash(inv.scenePath, inv.scene.inputFiles)},
       {"raytrace.size", std::to_string(inv.width) + "x" + std::to_string(inv.height)},
       {"raytrace.options", pixelFlags(inv.options)},
       {kToByteAttribute, toByteName(inv.scene.conventions.toByte)},

@@ -92,7 +92,8 @@ echo "local-cluster: one-node cluster up in $((SECONDS - start)) s ($node, $cpus
 sinfo
 
 cd "$dir/work"
-cp "$scene" scene.pov  # a copy, edited below
+cp "$scene" scene.pov  # a copy, edited below, which finds the files the scene includes in the scene's folder
+set -- -L "$(dirname "$scene")" "$@"
 scene=$dir/work/scene.pov
 "$raytrace" render "$scene" "$width" "$height" "$@" --quiet -o one.png
 RAYTRACE=$raytrace "$here/submit.sh" -n "$tiles" -o "$dir/work/slurm.png" --wait "$scene" "$width" "$height" "$@"

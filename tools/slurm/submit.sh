@@ -12,9 +12,9 @@
 #   --sbatch OPTS   more sbatch options for both jobs, e.g. "--partition=render --time=1:00:00"
 #
 # The tiles, the scene's copy and the logs go to OUT.tiles, which every node must see. Submitting again
-# resumes: a task keeps its tile if it is of this very render (scene contents, size, options, program
-# version) and renders a missing, unreadable or stale one again, its log (tile-I.log) saying which; the merge
-# job checks every tile against the request. $RAYTRACE names the executable on the nodes (default: raytrace
+# resumes: a task keeps its tile if it is of this very render (the contents of the scene and of every file it
+# reads, size, options, program version) and renders a missing, unreadable or stale one again, its log
+# (tile-I.log) saying which; the merge job checks every tile against the request. $RAYTRACE names the executable on the nodes (default: raytrace
 # on their PATH).
 set -euo pipefail
 
@@ -41,6 +41,8 @@ shift 3
 [ -f "$scene" ] || die "cannot read '$scene'"
 
 case $output in /*) ;; *) output=$PWD/$output ;; esac
+# The tasks read the scene's copy beside the tiles: the files it includes or reads are found in its own folder.
+set -- -L "$(cd "$(dirname -- "$scene")" && pwd)" "$@"
 dir=$output.tiles
 mkdir -p "$dir"
 name=$(basename -- "$scene")

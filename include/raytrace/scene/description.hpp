@@ -127,6 +127,9 @@ struct SceneDesc {
   // The images the file asks for, in order; empty for POV, whose `render` writes output.png.
   std::vector<WriteDesc> writes;
   std::vector<DataFileDesc> dataFiles;  // in the order they were first opened
+  // The files besides itself whose contents the scene read (includes, images, #read data, fonts), as found,
+  // in the order first found: what a tile of it depends on.
+  std::vector<std::string> inputFiles;
 };
 
 // The scene `write` shows (see WriteDesc), without the writes.

@@ -1,4 +1,5 @@
 // The # directives: identifiers, conditions, loops, macros, includes and messages.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -215,24 +216,33 @@ void Interpreter::includeDirective(const SourceLoc& at) {
   pushFile(name.s, *texts_.back(), &at);
 }
 
-std::string Interpreter::findFile(const std::string& name) const {
-  if (!name.empty() && name[0] == '/') return isFile(name) ? name : "";
-  std::vector<std::string> folders{sceneFolder_};
-  for (const std::string& l : options_.libraryPaths) folders.push_back(l + "/");
-  folders.push_back(options_.standardLibrary + "/");
-  for (const std::string& folder : folders) {
-    if (isFile(folder + name)) return folder + name;
+std::string Interpreter::findFile(const std::string& name) {
+  std::vector<std::string> candidates;
+  if (!name.empty() && name[0] == '/') {
+    candidates.push_back(name);
+  } else {
+    candidates.push_back(sceneFolder_ + name);
+    for (const std::string& l : options_.libraryPaths) candidates.push_back(l + "/" + name);
+    candidates.push_back(options_.standardLibrary + "/" + name);
+  }
+  for (const std::string& path : candidates) {
+    if (isFile(path)) return found(path);
   }
   return "";
 }
 
-std::string Interpreter::findFont(const std::string& name) const {
+std::string Interpreter::findFont(const std::string& name) {
   for (const std::string& file : {name, name + ".ttf"}) {
     const std::string path = findFile(file), debian = "/usr/share/fonts/truetype/povray/" + file;
     if (!path.empty()) return path;
-    if (file[0] != '/' && isFile(debian)) return debian;
+    if (file[0] != '/' && isFile(debian)) return found(debian);
   }
   return "";
+}
+
+std::string Interpreter::found(const std::string& path) {
+  if (std::find(filesFound_.begin(), filesFound_.end(), path) == filesFound_.end()) filesFound_.push_back(path);
+  return path;
 }
 
 // Removes the innermost identifier of that name, if any.

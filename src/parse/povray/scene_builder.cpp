@@ -23,7 +23,7 @@ template <class K> struct HasSturm<K, std::void_t<decltype(std::declval<K&>().st
 
 class Builder {
  public:
-  Builder(SceneDesc& scene, const Interpreter& interpreter) : scene_(scene), interpreter_(interpreter) {
+  Builder(SceneDesc& scene, Interpreter& interpreter) : scene_(scene), interpreter_(interpreter) {
     refusals_.findFile = [this](const std::string& name) { return interpreter_.findFile(name); };
     refusals_.imageGamma = [this]() -> std::optional<double> {
       if (interpreter_.version() < 3.7) return std::nullopt;
@@ -795,7 +795,7 @@ class Builder {
 
  private:
   SceneDesc& scene_;
-  const Interpreter& interpreter_;
+  Interpreter& interpreter_;  // its findFile notes the files the scene reads
   bool asciiStrings_ = true;  // global_settings' charset
   Surface default_;
   Refusals refusals_;
@@ -884,6 +884,7 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   }
   for (ObjectDesc& o : scene.objects) scaleAmbient(o, builder.ambientLight_);
   scene.dataFiles = interpreter.takeDataFiles();
+  scene.inputFiles = interpreter.takeFilesFound();
   return scene;
 }
 

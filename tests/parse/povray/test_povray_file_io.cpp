@@ -198,5 +198,22 @@ TEST_CASE("povray: render puts the scene's files beside the image only when the 
   CHECK(dir.names() == std::vector<std::string>{"bad.pov", "good.pov", "image.pov", "out", "self.pov"});
 }
 
+TEST_CASE("povray: the files a scene reads are noted once each, in the order first found", "[povray]") {
+  const test::TempDir dir;
+  dir.write("a.inc", "#declare A = 1;\n");
+  dir.write("b.inc", "#include \"a.inc\"\n");
+  dir.write("data.txt", "7,\n");
+  InterpreterOptions options;
+  options.libraryPaths = {dir.path()};
+  Interpreter interpreter(options);
+  const auto ignore = [](const std::shared_ptr<const Node>&) {};
+  interpreter.run("scene.pov",
+                  "#version 3.7;\n#include \"b.inc\"\n#include \"a.inc\"\n#fopen F \"data.txt\" read\n"
+                  "#read (F, N)\n#fclose F\n#if (file_exists(\"none.inc\")) #end\n",
+                  ignore, ignore);
+  CHECK(interpreter.takeFilesFound() ==
+        std::vector<std::string>{dir.file("b.inc"), dir.file("a.inc"), dir.file("data.txt")});
+}
+
 }  // namespace
 }  // namespace rt::povray

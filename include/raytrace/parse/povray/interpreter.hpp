@@ -66,13 +66,16 @@ class Interpreter {
 
   // The files the scene wrote, in memory (DataFileDesc), for the caller to put on disk or not.
   std::vector<DataFileDesc> takeDataFiles() { return std::move(dataFiles_); }
+  // Every file the scene found to read (includes, images, #read data, fonts), in the order first found.
+  std::vector<std::string> takeFilesFound() { return std::move(filesFound_); }
 
   // Where a text object's font file is: where an include file would be, else in the folder Debian's
   // fonts-povray installs; as named, else with .ttf added (as POV-Ray does); "" if nowhere.
-  std::string findFont(const std::string& name) const;
+  std::string findFont(const std::string& name);
   // Where #include, #read and a height field's image find a file: as named if absolute, else in the scene's
-  // folder, the -L folders and the standard include library, in that order; "" if nowhere.
-  std::string findFile(const std::string& name) const;
+  // folder, the -L folders and the standard include library, in that order; "" if nowhere. A file found is
+  // one the picture depends on (takeFilesFound).
+  std::string findFile(const std::string& name);
 
  private:
   struct Slot;
@@ -142,6 +145,8 @@ class Interpreter {
   Value dataValue(OpenFile& file, const SourceLoc& at);
   [[noreturn]] void failInData(const SourceLoc& loc, const std::string& message, const SourceLoc& at) const;
   const DataFileDesc* written(const std::string& name) const;
+  // `path`, noted in filesFound_.
+  std::string found(const std::string& path);
   std::string writePath(const std::string& name) const;
 
   // Symbols.
@@ -188,6 +193,7 @@ class Interpreter {
   std::vector<Scope> scopes_;
   std::vector<std::uint32_t> randStates_;
   std::vector<DataFileDesc> dataFiles_;  // what #write wrote, kept until the scene has parsed
+  std::vector<std::string> filesFound_;
   size_t bytesWritten_ = 0;
   NodeSink defaults_;
   std::string sceneFolder_;
