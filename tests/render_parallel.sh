@@ -26,7 +26,7 @@ wait "$pid" && fail "the interrupted run succeeded"
 done=$(ls resumed.png.tiles/tile-*.exr | wc -l)
 ((done >= 2 && done < 4)) || fail "$done tiles done when interrupted"
 [ ! -e resumed.png ] || fail "the interrupted run wrote its image"
-[ -z "$(ls -A resumed.png.tiles | grep -v -e '^tile-[0-3]\.exr$' -e '^joblog$' -e '\.pov$')" ] ||
+[ -z "$(ls -A resumed.png.tiles | grep -v -e '^tile-[0-3]\.exr$' -e '^joblog$' -e '\.pov$' -e '^\.render-parallel$')" ] ||
   fail "left behind: $(ls -A resumed.png.tiles)"
 echo "render-parallel: interrupted with $done of 4 tiles done"
 

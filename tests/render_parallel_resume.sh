@@ -65,11 +65,15 @@ expect_error "-n must be a whole number of tiles from 1 to 32768, found '9999999
 expect_error "-n 7 is more tiles than the 6 rows" -n 7 -o x.png scene.pov 8 6
 expect_error "the merged image must be .png, .hdr or .exr, found 'x.jpg'" -n 2 -o x.jpg scene.pov 8 6
 [ ! -e x.png.tiles ] && [ ! -e x.jpg.tiles ] || fail "a refused render left a tiles folder"
+mkdir mine && echo precious >mine/tile-0.exr
+expect_error "the tiles' folder 'mine' holds other files, which tiles would replace: name a new or empty one" \
+  -n 2 -o x.png --tiles-dir mine scene.pov 8 6
+[ "$(cat mine/tile-0.exr)" = precious ] && [ "$(ls -A mine)" = tile-0.exr ] || fail "a folder of other files was written"
 cp scene.pov ./-x.pov
 "$tool" --raytrace "$raytrace" -n 2 -o dash.png -- -x.pov 8 6 >log 2>&1 || { cat log; fail "a scene named -x.pov"; }
 "$raytrace" render ./-x.pov 8 6 --quiet -o one.png
 cmp one.png dash.png || fail "the scene named -x.pov differs from the one-machine render"
-echo "render-parallel: bad tile counts and image names refused at once; a scene named -x.pov rendered"
+echo "render-parallel: bad tile counts, image names and a folder of other files refused at once; a scene named -x.pov rendered"
 
 # A POV-Ray scene that includes a file of its own folder: the tiles find it, and an edited include makes
 # every tile stale, as an edited scene does.
