@@ -167,21 +167,18 @@ const std::vector<Option> kOptions = {
      "N x N stratified samples per pixel (1 to 64)",
      [](Words& w, const std::string& v, const std::string&) { w.options.samples = parseInt(v, "-ss", 1, 64); }},
     {"--aa", nullptr, "1|2", Form::Joined, Scope::Render, Section::General,
-     "POV-Ray's adaptive anti-aliasing: 1, a pixel that differs from a\n"
-     "neighbour by more than the threshold gets R x R more rays (+AM1);\n"
-     "2, squares whose corners differ are cut in four, R - 1 levels (+AM2)",
+     "adaptive anti-aliasing: POV-Ray's +AM1 or +AM2",
      [](Words& w, const std::string& v, const std::string&) { w.options.aa.method = parseInt(v, "--aa", 1, 2); }},
     {"--aa-threshold", nullptr, "T", Form::Joined, Scope::Render, Section::General,
-     "--aa's colour difference, 0 to 3 (default 0.3, as POV-Ray's +A)",
+     "its threshold, 0 to 3 (default 0.3)",
      [](Words& w, const std::string& v, const std::string&) {
        w.options.aa.threshold = float(parseReal(v, "--aa-threshold", 0, 3));
      }},
     {"--aa-depth", nullptr, "R", Form::Joined, Scope::Render, Section::General,
-     "--aa's R, 1 to 9 (default 3, as POV-Ray's +R)",
+     "its depth, 1 to 9 (default 3)",
      [](Words& w, const std::string& v, const std::string&) { w.options.aa.depth = parseInt(v, "--aa-depth", 1, 9); }},
     {"--jitter", nullptr, "J", Form::Joined, Scope::Render, Section::General,
-     "--aa's samples moved at random within their cells, 0 to 1 (default\n"
-     "0); the same image for any threads and tiles",
+     "its jitter, 0 to 1 (default 0)",
      [](Words& w, const std::string& v, const std::string&) {
        w.options.aa.jitter = float(parseReal(v, "--jitter", 0, 1));
      }},
