@@ -141,8 +141,7 @@ Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRec
   return finished(sum / float(n * n));
 }
 
-template <class T> Color Tracer<T>::finished(const Color& c) const {
-  if (conventions_.gamma == 1) return c;
+template <class T> Color Tracer<T>::raised(const Color& c) const {
   const float g = conventions_.gamma;
   return {std::pow(std::max(c.r, 0.0f), g), std::pow(std::max(c.g, 0.0f), g), std::pow(std::max(c.b, 0.0f), g)};
 }

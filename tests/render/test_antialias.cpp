@@ -1,9 +1,11 @@
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
+#include "raytrace/app/arguments.hpp"
 #include "raytrace/app/commands.hpp"
 #include "raytrace/render/antialias.hpp"
 #include "raytrace/render/renderer.hpp"
@@ -157,4 +159,18 @@ TEST_CASE("anti-aliasing's options are checked before anything is read", "[antia
   CHECK(error({"render", "scene.pov", "4", "4", "--aa=1", "-ss=3"}) ==
         "--aa and -ss both choose the rays per pixel: give one");
   CHECK(error({"pixelcolor", "scene.pov", "4", "4", "0", "0", "--aa=1"}) == "--aa is for the render command only");
+}
+
+TEST_CASE("a tile records anti-aliasing's settings among the options that change pixels", "[antialias]") {
+  CHECK(pixelFlags(adaptive(2, 4, 0.5f)) == "--aa=2 --aa-threshold=0.300000012 --aa-depth=4 --jitter=0.5");
+  CHECK(pixelFlags(adaptive(1)) == "--aa=1 --aa-threshold=0.300000012 --aa-depth=3");
+  CHECK(pixelFlags(RenderOptions{}).empty());
+}
+
+TEST_CASE("anti-aliasing's compared colour is within 1e-6 of the power 0.4", "[antialias]") {
+  for (float x = 1e-12f; x < 1; x *= 1.0137f) {
+    CAPTURE(x);
+    REQUIRE(std::abs(aaCompared({x, 0, 0}).r - std::pow(x, 0.4f)) < 1e-6f);
+  }
+  CHECK(aaCompared({0.03125f, 0.5f, 1}) == Color(0.25f, std::pow(0.5f, 0.4f), 1));
 }

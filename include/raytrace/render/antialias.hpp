@@ -48,6 +48,7 @@ template <class T> class AdaptiveSampler {
   const Camera<T>& camera_;
   AntialiasOptions aa_;
   uint64_t seed_;
+  bool gi_;  // whether the rays' keys are read
   int x0_, y0_, stride_;             // +AM1: the traced pixels' area, with its border; +AM2: the corners'
   int cells_;                        // +AM2: 2^(R−1), the finest squares along a pixel's side
   std::vector<Color> raw_, compared_;  // the first rays' radiance and its compared colour
