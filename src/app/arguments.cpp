@@ -122,8 +122,8 @@ double parseReal(const std::string& v, const char* what, int lo, int hi) {
   char* end = nullptr;
   const double a = std::strtod(v.c_str(), &end);
   if (v.empty() || *end != '\0' || errno == ERANGE || !(a >= lo && a <= hi)) {
-    throw Error(std::string(what) + " must be a number from " + std::to_string(lo) + " to " + std::to_string(hi) + ", found " +
-                quote(v));
+    throw Error(std::string(what) + " must be a number from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                ", found " + quote(v));
   }
   return a;
 }

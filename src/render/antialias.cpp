@@ -204,7 +204,9 @@ template <class T> Color AdaptiveSampler<T>::recursive(Tracer<T>& tracer, int x,
     }
     return false;
   };
-  const auto mean = [](const Color& a, const Color& b, const Color& c, const Color& d) { return (a + b + c + d) / 4.0f; };
+  const auto mean = [](const Color& a, const Color& b, const Color& c, const Color& d) {
+    return (a + b + c + d) / 4.0f;
+  };
   if (m == 1 || !differ({&compared_[corners[0]], &compared_[corners[1]], &compared_[corners[2]],
                          &compared_[corners[3]]})) {
     return mean(raw_[corners[0]], raw_[corners[1]], raw_[corners[2]], raw_[corners[3]]);
@@ -252,7 +254,9 @@ template <class T> Color AdaptiveSampler<T>::recursive(Tracer<T>& tracer, int x,
     level.swap(next);
   }
   const auto value = [&](const auto& self, int i, int j, int s) -> Color {
-    if (!splits(i, j, s)) return mean(raw[point(i, j)], raw[point(i + s, j)], raw[point(i, j + s)], raw[point(i + s, j + s)]);
+    if (!splits(i, j, s)) {
+      return mean(raw[point(i, j)], raw[point(i + s, j)], raw[point(i, j + s)], raw[point(i + s, j + s)]);
+    }
     const int h = s / 2;
     return mean(self(self, i, j, h), self(self, i + h, j, h), self(self, i, j + h, h), self(self, i + h, j + h, h));
   };

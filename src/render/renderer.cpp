@@ -70,7 +70,9 @@ void renderRows(const SceneDesc& desc, int width, int height, const Region& regi
     // --aa: the first rays of every pixel first, on the threads; then each tile's supersamples.
     RayCounts firstRays;
     std::optional<AdaptiveSampler<T>> adaptive;
-    if (options.aa.method != 0) adaptive.emplace(tracer, camera, options, width, height, left, bottom, right, top, firstRays);
+    if (options.aa.method != 0) {
+      adaptive.emplace(tracer, camera, options, width, height, left, bottom, right, top, firstRays);
+    }
     if (monitor.rays) *monitor.rays += firstRays;
     std::mutex countsMutex;
     parallelFor(tilesX * tilesY, options.threads, [&](int tile) {

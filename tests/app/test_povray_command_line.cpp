@@ -62,7 +62,8 @@ TEST_CASE("povcli: each switch's render words", "[povcli]") {
   CHECK(wordsOf({"+Ia.pov", "+W8", "+w16", "+D", "-D", "+A", "-A"}) == "render a.pov 16 240");
   // Anti-aliasing's settings, as the manual's "Anti-Aliasing Options": -An.n sets the threshold for a later +A;
   // +J with no amount keeps the previous one, and an amount of 0 or less turns jitter off.
-  CHECK(wordsOf({"+Ia.pov", "+A0.1", "+AM2", "+R4", "-J"}) == "render a.pov 320 240 --aa=2 --aa-threshold=0.1 --aa-depth=4");
+  CHECK(wordsOf({"+Ia.pov", "+A0.1", "+AM2", "+R4", "-J"}) ==
+        "render a.pov 320 240 --aa=2 --aa-threshold=0.1 --aa-depth=4");
   CHECK(wordsOf({"+Ia.pov", "-A0.2", "+J0.5", "-J", "+J", "+A"}) ==
         "render a.pov 320 240 --aa=1 --aa-threshold=0.2 --aa-depth=3 --jitter=0.5");
   CHECK(wordsOf({"+Ia.pov", "+A", "+J-1"}) == "render a.pov 320 240 --aa=1 --aa-threshold=0.3 --aa-depth=3");
