@@ -81,6 +81,12 @@ std::string pixelFlags(const RenderOptions& o) {
   add(o.arithmetic.offset.has_value(), "--offset=" + nameOf(kOffsets, o.arithmetic.offset.value_or(OffsetPolicy())));
   add(o.depth.has_value(), "--depth=" + std::to_string(o.depth.value_or(0)));
   add(o.samples != defaults.samples, "-ss=" + std::to_string(o.samples));
+  char real[32];
+  std::snprintf(real, sizeof real, "%.9g", double(o.aa.threshold));  // the float exactly
+  add(o.aa.method != 0, "--aa=" + std::to_string(o.aa.method) + " --aa-threshold=" + real + " --aa-depth=" +
+                            std::to_string(o.aa.depth));
+  std::snprintf(real, sizeof real, "%.9g", double(o.aa.jitter));
+  add(o.aa.method != 0 && o.aa.jitter != 0, std::string("--jitter=") + real);
   add(o.brdf != defaults.brdf, "-altbrdf");
   add(o.fresnel, "-fresnel");
   add(o.beers, "-beers");
@@ -109,6 +115,18 @@ std::vector<int> parseCounts(const std::string& s, const char* what, int lo, int
 }
 
 namespace {
+
+// A number from lo to hi.
+double parseReal(const std::string& v, const char* what, int lo, int hi) {
+  errno = 0;
+  char* end = nullptr;
+  const double a = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end != '\0' || errno == ERANGE || !(a >= lo && a <= hi)) {
+    throw Error(std::string(what) + " must be a number from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                ", found " + quote(v));
+  }
+  return a;
+}
 
 const char* const kTextOrJson = "text|json";
 
@@ -148,6 +166,22 @@ const std::vector<Option> kOptions = {
     {"-ss", nullptr, "N", Form::Joined, Scope::Any, Section::General,
      "N x N stratified samples per pixel (1 to 64)",
      [](Words& w, const std::string& v, const std::string&) { w.options.samples = parseInt(v, "-ss", 1, 64); }},
+    {"--aa", nullptr, "1|2", Form::Joined, Scope::Render, Section::General,
+     "adaptive anti-aliasing: POV-Ray's +AM1 or +AM2",
+     [](Words& w, const std::string& v, const std::string&) { w.options.aa.method = parseInt(v, "--aa", 1, 2); }},
+    {"--aa-threshold", nullptr, "T", Form::Joined, Scope::Render, Section::General,
+     "its threshold, 0 to 3 (default 0.3)",
+     [](Words& w, const std::string& v, const std::string&) {
+       w.options.aa.threshold = float(parseReal(v, "--aa-threshold", 0, 3));
+     }},
+    {"--aa-depth", nullptr, "R", Form::Joined, Scope::Render, Section::General,
+     "its depth, 1 to 9 (default 3)",
+     [](Words& w, const std::string& v, const std::string&) { w.options.aa.depth = parseInt(v, "--aa-depth", 1, 9); }},
+    {"--jitter", nullptr, "J", Form::Joined, Scope::Render, Section::General,
+     "its jitter, 0 to 1 (default 0)",
+     [](Words& w, const std::string& v, const std::string&) {
+       w.options.aa.jitter = float(parseReal(v, "--jitter", 0, 1));
+     }},
     {"-gi", nullptr, nullptr, Form::Switch, Scope::Any, Section::General,
      "Monte Carlo global illumination: indirect light gathered with\n"
      "stratified cosine-weighted rays instead of the ambient term",

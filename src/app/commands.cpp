@@ -194,6 +194,9 @@ Invocation invocation(const Command& command, const Words& words, std::ostream& 
                 " (usage: " + commandUsage(command) + ")");
   }
   refuse(Scope::Render, std::string(command.name) == "render", " is for the render command only");
+  if (words.options.aa.method != 0 && words.options.samples != 1) {
+    throw Error("--aa and -ss both choose the rays per pixel: give one");
+  }
   if (!words.tile.empty() && !words.region.empty()) {
     throw Error("--tile and --region both name the part to render: give one");
   }

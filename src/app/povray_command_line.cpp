@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <optional>
@@ -52,7 +53,11 @@ struct Settings {
   int width = 320, height = 240;   // POV-Ray's own defaults, without an .ini file
   std::vector<std::string> words;  // -L and -D made from +L and Declare, in order
   std::string threads;
-  bool display = false, antialias = false;
+  bool display = false;
+  // Anti-aliasing as POV-Ray defaults it: off, threshold 0.3, method 1, depth 3, jitter on with amount 1.
+  bool antialias = false, jitter = true;
+  double threshold = 0.3, jitterAmount = 1;
+  int method = 1, depth = 3;
   std::optional<Given> startColumn, startRow, endColumn, endRow, subsetStart, subsetEnd, initialFrame, finalFrame;
   double initialClock = 0, finalClock = 1;
   bool cyclic = false;
@@ -77,6 +82,21 @@ double number(const Given& g) {
   double v = 0;
   if (!isNumber(g.value, &v)) throw Error(g.name + " must be a number, found " + quote(g.value));
   return v;
+}
+
+// The manual's range: "the most two pixels can differ is 3.0".
+double threshold(const Given& g) {
+  const double v = number(g);
+  if (v < 0 || v > 3) throw Error(g.name + " must be between 0 and 3, found " + quote(g.value));
+  return v;
+}
+
+// Above 1.0 ("the maximum jitter which will insure that all super-samples remain inside the original pixel")
+// samples would leave their pixel.
+double jitterAmount(const Given& g) {
+  const double v = number(g);
+  if (v > 1) throw Error(g.name + " must be at most 1, found " + quote(g.value));
+  return std::max(v, 0.0);
 }
 
 // "0.n", a fraction of the picture's side or of the frames, as POV-Ray reads +SR, +EC, +SF …; else a count.
@@ -157,13 +177,24 @@ const std::vector<PovOption> kPovOptions = {
      [](Settings&, const Given& g) {
        if (g.on) unsupported(g);
      }},
-    // Adaptive anti-aliasing is separate work: +A is 3 x 3 samples for now, its threshold checked and unused.
+    // The manual's 3.2.2.x "Anti-Aliasing Options": +An.n turns it on with that threshold, -An.n off, keeping it.
     {"Antialias", "A", Kind::BoolOrNumber,
      [](Settings& s, const Given& g) {
-       if (!g.value.empty()) number(g);
+       if (!g.value.empty()) s.threshold = threshold(g);
        s.antialias = g.on;
      }},
-    {"Antialias_Threshold", nullptr, Kind::Number, [](Settings&, const Given& g) { number(g); }},
+    {"Antialias_Threshold", nullptr, Kind::Number, [](Settings& s, const Given& g) { s.threshold = threshold(g); }},
+    {"Sampling_Method", "AM", Kind::Number,
+     [](Settings& s, const Given& g) { s.method = parseInt(g.value, g.name.c_str(), 1, 2); }},
+    {"Antialias_Depth", "R", Kind::Number,
+     [](Settings& s, const Given& g) { s.depth = parseInt(g.value, g.name.c_str(), 1, 9); }},
+    // +J with no amount keeps the previous one; an amount of 0 or less turns jitter off; above 1 is refused.
+    {"Jitter", "J", Kind::BoolOrNumber,
+     [](Settings& s, const Given& g) {
+       if (!g.value.empty()) s.jitterAmount = jitterAmount(g);
+       s.jitter = g.on;
+     }},
+    {"Jitter_Amount", nullptr, Kind::Number, [](Settings& s, const Given& g) { s.jitterAmount = jitterAmount(g); }},
     {"Start_Column", "SC", Kind::Number, [](Settings& s, const Given& g) { s.startColumn = g; }},
     {"Start_Row", "SR", Kind::Number, [](Settings& s, const Given& g) { s.startRow = g; }},
     {"End_Column", "EC", Kind::Number, [](Settings& s, const Given& g) { s.endColumn = g; }},
@@ -458,7 +489,16 @@ PovRayJob readPovRayCommandLine(const std::vector<std::string>& args) {
   job.words.insert(job.words.end(), s.words.begin(), s.words.end());
   if (!s.threads.empty()) job.words.insert(job.words.end(), {"--threads", s.threads});
   if (s.display) job.words.push_back("--display");
-  if (s.antialias) job.words.push_back("-ss=3");
+  if (s.antialias) {
+    char threshold[32];
+    std::snprintf(threshold, sizeof threshold, "%.9g", s.threshold);
+    job.words.insert(job.words.end(), {"--aa=" + std::to_string(s.method), std::string("--aa-threshold=") + threshold,
+                                       "--aa-depth=" + std::to_string(s.depth)});
+    if (s.jitter && s.jitterAmount > 0) {
+      std::snprintf(threshold, sizeof threshold, "%.9g", s.jitterAmount);
+      job.words.push_back(std::string("--jitter=") + threshold);
+    }
+  }
   if (region) {
     // raytrace renders a part as an OpenEXR tile for merge, where POV-Ray writes the whole picture.
     if (!endsWith(job.frames[0].output, ".exr")) {

@@ -5,6 +5,7 @@
 #include <mutex>
 #include <optional>
 #include <type_traits>
+#include <vector>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -14,6 +15,7 @@
 #include "raytrace/util/parallel.hpp"
 #include "raytrace/util/progress.hpp"
 #include "raytrace/util/stopwatch.hpp"
+#include "raytrace/render/antialias.hpp"
 #include "raytrace/render/irradiance_prepass.hpp"
 #include "raytrace/render/scene_setup.hpp"
 #include "raytrace/render/tracer.hpp"
@@ -65,13 +67,23 @@ void renderRows(const SceneDesc& desc, int width, int height, const Region& regi
       cache = prepareIrradianceCache(scene, camera, options, monitor.rays, &progress);
       tracer.useCache(&*cache);
     }
+    // --aa: the first rays of every pixel first, on the threads; then each tile's supersamples.
+    RayCounts firstRays;
+    std::optional<AdaptiveSampler<T>> adaptive;
+    if (options.aa.method != 0) {
+      adaptive.emplace(tracer, camera, options, width, height, left, bottom, right, top, firstRays);
+    }
+    if (monitor.rays) *monitor.rays += firstRays;
     std::mutex countsMutex;
     parallelFor(tilesX * tilesY, options.threads, [&](int tile) {
       const int x0 = left + tile / tilesY * kTile, y0 = bottom + tile % tilesY * kTile;
       const int x1 = std::min(right, x0 + kTile), y1 = std::min(top, y0 + kTile);
       Tracer<T> tileTracer = tracer;
+      std::vector<Color> antialiased;
+      if (adaptive) adaptive->tile(tileTracer, x0, y0, x1, y1, antialiased);
       for (int y = y0; y < y1; ++y) {
-        const Color* colors = tileTracer.tile(camera, x0, y, x1, y + 1);
+        const Color* colors = adaptive ? &antialiased[size_t(y - y0) * size_t(x1 - x0)]
+                                       : tileTracer.tile(camera, x0, y, x1, y + 1);
         store(x0, y, x1, colors);
         if (monitor.pixels) monitor.pixels->row(x0, y, x1, colors);
         progress.add(x1 - x0);  // row by row: a -gi tile takes seconds

@@ -141,8 +141,7 @@ Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRec
   return finished(sum / float(n * n));
 }
 
-template <class T> Color Tracer<T>::finished(const Color& c) const {
-  if (conventions_.gamma == 1) return c;
+template <class T> Color Tracer<T>::raised(const Color& c) const {
   const float g = conventions_.gamma;
   return {std::pow(std::max(c.r, 0.0f), g), std::pow(std::max(c.g, 0.0f), g), std::pow(std::max(c.b, 0.0f), g)};
 }
@@ -183,6 +182,22 @@ template <class T> const Color* Tracer<T>::tile(const Camera<T>& camera, int x0,
     colors[p] = finished(sum / float(n * n));
   }
   return colors.data();
+}
+
+template <class T> const Color* Tracer<T>::eyeRays(const Ray<T>* rays, const uint64_t* keys, size_t count) {
+  Batch& eye = batches_[0];
+  eye.rays.resize(count);
+  eye.paths.resize(count);
+  eye.colors.resize(count);
+  eye.distances.resize(count);
+  for (size_t k = 0; k < count; ++k) {
+    eye.rays[k].origin = rays[k].origin;
+    eye.rays[k].dir = rays[k].dir;
+    eye.paths[k] = Path{0, 0, 1.0f, options_.gi.enabled ? keys[k] : 0};
+  }
+  counts_.eye += count;
+  traceBatch(eye, int(count), RayRecord::Kind::Primary);
+  return eye.colors.data();
 }
 
 // Each ray of a batch (an eye ray or a gathered one) gets a tree budget of its own; a batch gathered inside a

@@ -56,9 +56,20 @@ TEST_CASE("povcli: each switch's render words", "[povcli]") {
   CHECK(wordsOf({"+Ia.pov"}) == "render a.pov 320 240");
   CHECK(outputOf({"+Iscenes/a.pov"}) == "a.png");
   CHECK(wordsOf({"+Iscenes/a.pov", "+W64", "+H48", "+L/inc", "Declare=R=2", "+WT2", "+D", "+A0.3"}) ==
-        "render scenes/a.pov 64 48 -L /inc -D R=2 --threads 2 --display -ss=3");
+        "render scenes/a.pov 64 48 -L /inc -D R=2 --threads 2 --display --aa=1 --aa-threshold=0.3 --aa-depth=3 "
+        "--jitter=1");
   // The last of a repeated option counts, as in POV-Ray; -D and -A turn the display and anti-aliasing off.
   CHECK(wordsOf({"+Ia.pov", "+W8", "+w16", "+D", "-D", "+A", "-A"}) == "render a.pov 16 240");
+  // Anti-aliasing's settings, as the manual's "Anti-Aliasing Options": -An.n sets the threshold for a later +A;
+  // +J with no amount keeps the previous one, and an amount of 0 or less turns jitter off.
+  CHECK(wordsOf({"+Ia.pov", "+A0.1", "+AM2", "+R4", "-J"}) ==
+        "render a.pov 320 240 --aa=2 --aa-threshold=0.1 --aa-depth=4");
+  CHECK(wordsOf({"+Ia.pov", "-A0.2", "+J0.5", "-J", "+J", "+A"}) ==
+        "render a.pov 320 240 --aa=1 --aa-threshold=0.2 --aa-depth=3 --jitter=0.5");
+  CHECK(wordsOf({"+Ia.pov", "+A", "+J-1"}) == "render a.pov 320 240 --aa=1 --aa-threshold=0.3 --aa-depth=3");
+  CHECK(wordsOf({"+Ia.pov", "Antialias=on", "Sampling_Method=2", "Antialias_Depth=2", "Antialias_Threshold=0",
+                 "Jitter=off", "Jitter_Amount=0.25"}) == "render a.pov 320 240 --aa=2 --aa-threshold=0 --aa-depth=2");
+  CHECK(wordsOf({"+Ia.pov", "+AM2", "+R5"}) == "render a.pov 320 240");
   // Verbosity and the text streams are POV-Ray's own: accepted and ignored.
   CHECK(wordsOf({"+Ia.pov", "+V", "-V", "-GA", "+GS", "-GW", "-P"}) == "render a.pov 320 240");
   // raytrace's own options keep their meaning among POV-Ray's.
@@ -101,7 +112,8 @@ TEST_CASE("povcli: .ini files, their sections, comments and nesting", "[povcli]"
                                     "+W800 +H600\n");
   CHECK(wordsOf({ini}) == "render scene.pov 120 100");
   // A section: only its lines, and labels in any case.
-  CHECK(wordsOf({"+Ia.pov", ini + "[low]"}) == "render a.pov 80 60 -ss=3");
+  CHECK(wordsOf({"+Ia.pov", ini + "[low]"}) ==
+        "render a.pov 80 60 --aa=1 --aa-threshold=0.3 --aa-depth=3 --jitter=1");
   CHECK(wordsOf({"+I" + ini + "[Really High]", "+Ia.pov"}) == "render a.pov 800 600");
   // Later options replace an .ini file's; an .ini file named on a line of another is read there.
   CHECK(wordsOf({ini, "+W10"}) == "render scene.pov 10 100");
@@ -212,7 +224,12 @@ TEST_CASE("povcli: bad POV-Ray command lines write nothing", "[povcli]") {
   CHECK(error({"+KI0.5"}) == "'+KI0.5' is for an animation: give +KFI and +KFF too");
   CHECK(error({"+KFF3", "+K0.5"}) == "+K sets the clock of one picture, but +KFI and +KFF ask for an animation");
   CHECK(error({"+Q9"}) == "'+Q9' is not supported yet");
-  CHECK(error({"+AM2"}) == "'+AM2' is not supported yet");
+  CHECK(error({"+AMx"}) == "'+AMx' is not supported yet");
+  CHECK(error({"+AM3"}) == "+AM must be between 1 and 2, found 3");
+  CHECK(error({"+R0"}) == "+R must be between 1 and 9, found 0");
+  CHECK(error({"+A3.5"}) == "+A must be between 0 and 3, found '3.5'");
+  CHECK(error({"+J2"}) == "+J must be at most 1, found '2'");
+  CHECK(error({"+AG2.2"}) == "'+AG2.2' is not supported yet");
   CHECK(error({"+D0"}) == "'+D0' is not supported yet");
   CHECK(error({"+FT"}) == "'+FT' is not supported yet");
   CHECK(error({"-F"}) == "'-F' is not supported yet");

@@ -32,6 +32,10 @@ template <class T> class Camera {
                T(y) + offset_.y + ((T(j) + T(0.5)) / T(n) - T(0.5)));
   }
 
+  // The eye ray through the point (dx, dy) pixels away from pixel (x, y)'s sample point: adaptive
+  // anti-aliasing's corners and jittered sub-samples (render/antialias).
+  Ray<T> offsetRay(int x, int y, T dx, T dy) const { return ray(T(x) + offset_.x + dx, T(y) + offset_.y + dy); }
+
   int width() const { return width_; }
   const Vec3<T>& eye() const { return origin_; }
   // The width of a pixel at unit distance from the eye, at the picture's centre.

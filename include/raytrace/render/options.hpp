@@ -27,6 +27,15 @@ struct GiOptions {
   int samplesAt(int bounce) const { return samples[std::min(size_t(bounce), samples.size() - 1)]; }
 };
 
+// --aa, --aa-threshold, --aa-depth, --jitter: POV-Ray's adaptive anti-aliasing (+A, +AM, +R, +J;
+// docs/povray-command-line.md), render/antialias.
+struct AntialiasOptions {
+  int method = 0;           // 0 off; 1 POV-Ray's non-recursive +AM1; 2 its recursive +AM2
+  float threshold = 0.3f;   // the colour difference above which a pixel (or a square of +AM2) is refined
+  int depth = 3;            // +R: R x R more rays (+AM1), or R − 1 levels of subdivision (+AM2)
+  float jitter = 0;         // +J: how far samples move at random within their cell, 0 to 1
+};
+
 struct RenderOptions {
   Arithmetic arithmetic;                         // --precision, --sphere, --offset
   Brdf brdf = Brdf::BlinnPhong;                  // -altbrdf: Cook-Torrance (§c.2)
@@ -38,6 +47,7 @@ struct RenderOptions {
   Hierarchy hierarchy = Hierarchy::Auto;         // --hierarchy: force the BVH on or off, for comparisons
   int threads = defaultThreads();                // --threads N
   GiOptions gi;                                  // -gi, -gi_samples, -gi_bounces, --seed
+  AntialiasOptions aa;                           // --aa, --aa-threshold, --aa-depth, --jitter
 };
 
 }  // namespace rt

@@ -38,6 +38,13 @@ template <class T> class Tracer {
   // eye rays and their shadow rays go through the scene in packets (Scene::closestHits), and so do the gather
   // rays of each hit. They are the tracer's own memory, valid until its next call.
   const Color* tile(const Camera<T>& camera, int x0, int y0, int x1, int y1);
+  // The radiance of each of `count` eye rays, traced together in packets as tile() traces them; keys[i] is
+  // the root of ray i's random numbers (pixelKey). Neither averaged nor finished; the tracer's own memory,
+  // valid until its next call. Adaptive anti-aliasing (render/antialias) traces its samples with it.
+  const Color* eyeRays(const Ray<T>* rays, const uint64_t* keys, size_t count);
+  // A pixel's average as it is written: raised to the scene's gamma (Conventions::gamma). Inline: anti-aliasing
+  // finishes every pixel's first ray to compare it.
+  Color finished(const Color& c) const { return conventions_.gamma == 1 ? c : raised(c); }
 
   // With --gi-cache the first bounce's gathered light is looked up in `cache` (docs/gi.md), which must outlive
   // the tracer; a point no record covers gathers as without it and, if `made` is given, appends its record
@@ -58,8 +65,7 @@ template <class T> class Tracer {
   }
 
  private:
-  // A pixel's average as it is written: raised to the scene's gamma (Conventions::gamma).
-  Color finished(const Color& c) const;
+  Color raised(const Color& c) const;  // finished() with a gamma other than 1
 
   struct Traced {
     Color color;
