@@ -57,6 +57,7 @@ TEST_CASE("radiosity: a block's settings choose the gathering, its levels and th
   CHECK(c.gi.grayThreshold == 0.4f);
   CHECK(options(test::pov("global_settings { radiosity { count 1000 error_bound 0.1 } }\n")).gi.samples[0] == 256);
   CHECK(*options(test::pov("global_settings { radiosity { error_bound 0.1 } }\n")).gi.cache == 0.1f);
+  CHECK(options(test::pov("global_settings { radiosity { recursion_limit 1000 } }\n")).gi.bounceCount() == 16);
   // -gi on the command line keeps its own samples, levels and cache; a scene without the block changes nothing.
   RenderOptions own;
   own.gi.enabled = true;

@@ -25,12 +25,13 @@ bool flag(const Node& n, size_t& i) {
   return !v || v->v[0] != 0;
 }
 
-// A count: a whole number at least `least`.
+// A count: a whole number from `least` to 10^7.
 int whole(const Node& n, size_t& i, int least) {
   const Item& word = n.items[i];
   const double x = number(n, i);
-  if (!(x >= least) || x > 1e7) {
-    throw ParseError(word.loc, "radiosity's '" + std::string(word.word) + "' must be at least " + std::to_string(least));
+  if (!(x >= least && x <= 1e7)) {
+    throw ParseError(word.loc, "radiosity's '" + std::string(word.word) + "' must be from " + std::to_string(least) +
+                                   " to 10000000");
   }
   return int(x);
 }

@@ -63,12 +63,14 @@ global_settings { radiosity {
   CHECK(r.recursionLimit == 3);
 }
 
-TEST_CASE("povray radiosity: a count below 1 or a setting without its number stops where it is written",
+TEST_CASE("povray radiosity: a count out of its range or a setting without its number stops where it is written",
           "[povray][radiosity]") {
   CHECK(povFailure("global_settings { radiosity { count 0 } }\n") ==
-        "scene.pov:2:31: error: radiosity's 'count' must be at least 1");
+        "scene.pov:2:31: error: radiosity's 'count' must be from 1 to 10000000");
   CHECK(povFailure("global_settings { radiosity { recursion_limit 0 } }\n") ==
-        "scene.pov:2:31: error: radiosity's 'recursion_limit' must be at least 1");
+        "scene.pov:2:31: error: radiosity's 'recursion_limit' must be from 1 to 10000000");
+  CHECK(povFailure("global_settings { radiosity { nearest_count 1e9 } }\n") ==
+        "scene.pov:2:31: error: radiosity's 'nearest_count' must be from 1 to 10000000");
   CHECK(povFailure("global_settings { radiosity { brightness } }\n") ==
         "scene.pov:2:31: error: radiosity's 'brightness' needs a number");
   CHECK(povFailure("sphere { 0, 1 no_radiosity }\n") == "scene.pov:2:15: error: 'no_radiosity' is not supported yet");
