@@ -12,6 +12,7 @@
 #include "raytrace/app/povray_command_line.hpp"
 #include "raytrace/app/tile_header.hpp"
 #include "raytrace/parse/scene_file.hpp"
+#include "raytrace/render/radiosity.hpp"
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/message.hpp"
 #include "raytrace/util/parallel.hpp"
@@ -252,6 +253,7 @@ int mergeCommand(const std::vector<std::string>& args, std::ostream& err) {
   load.width = inv.width;
   load.height = inv.height;
   inv.scene = loadScene(inv.scenePath, inv.options.threads, load);
+  useRadiosity(inv.options, inv.scene);
   return merge(own, TileRequest{tileHeader(inv, "render"), inv.width, inv.height});
 }
 
@@ -272,6 +274,7 @@ int runScene(const Command& command, const Words& words, std::ostream& out, std:
     load.height = inv.height;
   }
   inv.scene = loadScene(inv.scenePath, inv.options.threads, load);
+  useRadiosity(inv.options, inv.scene);
   inv.loadSeconds = watch.lap();
   for (const std::string& w : collapseRepeats(inv.scene.warnings)) err << w << "\n";
   return command.run(inv, out);

@@ -353,10 +353,29 @@ Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Material& m
 template <class T>
 Color Tracer<T>::ambient(const Hit<T>& hit, const Material& m, const Vec3<T>& n, const Path& path) {
   if (!options_.gi.enabled) return m.ambient;
+  if (options_.gi.radiosity) return radiosity(hit, m, n, path);
   // The gathered light takes the place of ka·C (Ca in .cli) as it is: no ka, kd or pigment factor (§c.14; the
   // reference images show it, docs/gi.md).
+  return gathered(hit, n, path);
+}
+
+template <class T>
+Color Tracer<T>::gathered(const Hit<T>& hit, const Vec3<T>& n, const Path& path) {
   if (cache_ && path.bounce == 0 && options_.gi.bounceCount() > 0) return cached(hit, n, path);
   return gather(hit, n, path);
+}
+
+// POV-Ray's radiosity: the gathered light lights the surface as its diffuse term takes light (kd·C), times
+// brightness; the material's ambient is its emission alone (POV-Ray 3.7 manual, "How Radiosity Works",
+// "brightness"; measured, docs/gi.md). gray_threshold mixes in the light's gray (manual, "gray_threshold"),
+// weighted as the manual's grayscale conversion (0.3, 0.59, 0.11; "HF_Gray_16").
+template <class T>
+Color Tracer<T>::radiosity(const Hit<T>& hit, const Material& m, const Vec3<T>& n, const Path& path) {
+  if (m.diffuse == Color(0)) return m.ambient;  // nothing would take the light
+  Color light = gathered(hit, n, path);
+  const float t = options_.gi.grayThreshold;
+  if (t > 0) light = light * (1 - t) + Color(0.3f * light.r + 0.59f * light.g + 0.11f * light.b) * t;
+  return m.ambient + options_.gi.brightness * m.diffuse * light;
 }
 
 template <class T> Color Tracer<T>::cached(const Hit<T>& hit, const Vec3<T>& n, const Path& path) {

@@ -357,3 +357,18 @@ TEST_CASE("image commands: with --gi-cache, tiles merge into the one-machine byt
     CHECK(printed.find("Color: (" + byte(c.r) + ", " + byte(c.g) + ", " + byte(c.b) + ")") != std::string::npos);
   }
 }
+
+TEST_CASE("image commands: a scene's radiosity block is drawn by render and by pixelcolor alike") {
+  // A closed sphere (kd 0.5, emission 0.2, recursion_limit 2) is 0.2·(1 + 0.5 + 0.25) = 0.35 everywhere, byte
+  // 160 in sRGB, as POV-Ray 3.7 draws it; without the block it would be its emission alone (0.2, byte 124).
+  const rt::test::TempDir dir;
+  const std::string scene = dir.write(
+      "furnace.pov", "#version 3.7;\nglobal_settings { assumed_gamma 1 radiosity { } }\ncamera { location 0 look_at z }\n"
+                     "sphere { 0, 10 pigment { rgb 1 } finish { ambient 0.3 diffuse 0.5 emission 0.2 } }\n");
+  CHECK(outputOf({"render", scene, "4", "3", "-o", dir.file("f.exr"), "--threads", "2"}).empty());
+  const rt::ExrImage image = rt::readExr(dir.file("f.exr"));
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 4; ++x) CHECK(image.pixels.at(x, y).g == Approx(0.35f).epsilon(1e-5));
+  }
+  CHECK(outputOf({"pixelcolor", scene, "4", "3", "1", "1"}).find("Color: (160, 160, 160)") != std::string::npos);
+}

@@ -21,6 +21,10 @@ struct GiOptions {
   uint64_t seed = 0;                 // --seed N: an independent render of the same scene
   // --gi-cache=A: the first bounce's gathering comes from an irradiance cache of accuracy A (docs/gi.md).
   std::optional<float> cache;
+  // POV-Ray's radiosity (render/radiosity.hpp): the gathered light lights a surface as its diffuse colour takes
+  // light, times `brightness`, grayed by `grayThreshold`, beside the material's own ambient (its emission).
+  bool radiosity = false;
+  float brightness = 1, grayThreshold = 0;
 
   int bounceCount() const { return bounces ? *bounces : int(samples.size()); }
   // Gather rays per hit at `bounce` (0 = the eye ray's hit); past the list, its last count.

@@ -125,6 +125,11 @@ template <class T> class Tracer {
   // The term the course calls ambient: the material's constant, or with -gi the indirect light gathered over
   // the hemisphere of n (docs/gi.md).
   Color ambient(const Hit<T>& hit, const Material& m, const Vec3<T>& n, const Path& path);
+  // The gathered light: cached() at the first bounce with --gi-cache, gather() otherwise.
+  Color gathered(const Hit<T>& hit, const Vec3<T>& n, const Path& path);
+  // The ambient term of POV-Ray's radiosity: the material's own (its emission) and the gathered light it
+  // diffuses (render/radiosity.hpp, docs/gi.md).
+  Color radiosity(const Hit<T>& hit, const Material& m, const Vec3<T>& n, const Path& path);
   // The first bounce's gathered light with --gi-cache: the cache's, or gathered (and recorded, if records are
   // being made) where no record covers the point.
   Color cached(const Hit<T>& hit, const Vec3<T>& n, const Path& path);

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "raytrace/util/error.hpp"
+#include "raytrace/scene/radiosity.hpp"
 #include "raytrace/shapes/shape_desc.hpp"
 #include "raytrace/surface/environment.hpp"
 #include "raytrace/surface/material.hpp"
@@ -123,6 +124,7 @@ struct SceneDesc {
   Conventions conventions;
   std::shared_ptr<const SkySphere> sky;  // seen where a ray leaves the scene, over the background
   std::vector<Fog> fogs;                 // each ray crosses them in order
+  std::optional<RadiosityDesc> radiosity;  // POV-Ray's radiosity block: the ambient term gathered (docs/gi.md)
   std::vector<std::string> warnings;  // "file:line:col: warning: …", printed before any output
   // The images the file asks for, in order; empty for POV, whose `render` writes output.png.
   std::vector<WriteDesc> writes;

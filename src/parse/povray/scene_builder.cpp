@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "raytrace/parse/povray/interpreter.hpp"
+#include "raytrace/parse/povray/radiosity_reader.hpp"
 #include "raytrace/parse/povray/surface_reader.hpp"
 #include "raytrace/shapes/make_object.hpp"
 #include "raytrace/util/format.hpp"
@@ -782,6 +783,8 @@ class Builder {
         } else {
           refuse(it.loc, w);
         }
+      } else if (it.kind == Item::Kind::Node && it.node->keyword == "radiosity") {
+        scene_.radiosity = readRadiosity(*it.node, refusals_);
       } else {
         refuse(it.loc, it.kind == Item::Kind::Node ? it.node->keyword : "global_settings");
       }
@@ -882,7 +885,10 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
     scene.conventions.toByte = Conventions::ToByte::Srgb;
     scene.conventions.gamma = float(gamma);
   }
-  for (ObjectDesc& o : scene.objects) scaleAmbient(o, builder.ambientLight_);
+  // With radiosity a 3.7 scene's ambient term is 0 and its emission alone lights; an older scene's ambient (times
+  // ambient_light) still does, as emission would (POV-Ray 3.7 manual, "How Radiosity Works"; measured, docs/gi.md).
+  const bool noAmbient = scene.radiosity && interpreter.version() >= 3.7;
+  for (ObjectDesc& o : scene.objects) scaleAmbient(o, noAmbient ? Color(0) : builder.ambientLight_);
   scene.dataFiles = interpreter.takeDataFiles();
   scene.inputFiles = interpreter.takeFilesFound();
   return scene;
