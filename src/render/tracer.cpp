@@ -90,13 +90,13 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
       filteredShadows_ = filteredShadows_ || (conventions_.filteredShadows && m.filter > 0);
     });
   }
-  // What a ray that leaves the scene brings back; a fog can only mix in its own colour.
+  // What a ray that leaves the scene brings back; fogs add their colours (throughFogs).
   const SceneDesc& desc = scene.desc();
   float background = std::max(brightest(conventions_.background), desc.sky ? brightest(desc.sky->bound()) : 0.0f);
-  for (const Fog& f : desc.fogs) {
-    background = std::max(background, brightest(f.colour.rgb));
-    localMax = std::max(localMax, brightest(f.colour.rgb));
-  }
+  float fogs = 0;
+  for (const Fog& f : desc.fogs) fogs += brightest(f.colour.rgb);
+  background = std::max(background, fogs);
+  localMax = std::max(localMax, fogs);
   const auto level = [&](float children) {
     const float shaded = localMax + gain * children;
     return std::max(background, conventions_.clampEachBounce ? std::min(shaded, 1.0f) : shaded);
@@ -280,8 +280,7 @@ typename Tracer<T>::Traced Tracer<T>::follow(const Ray<T>& ray, const std::optio
 template <class T> Color Tracer<T>::fogged(Color c, const Ray<T>& ray, T t) const {
   const glm::dvec3 dir(ray.dir);
   const double length = glm::length(dir);
-  for (const Fog& f : scene_.desc().fogs) c = f.over(c, glm::dvec3(ray.origin), dir / length, double(t) * length);
-  return c;
+  return throughFogs(scene_.desc().fogs, c, glm::dvec3(ray.origin), dir / length, double(t) * length);
 }
 
 template <class T>

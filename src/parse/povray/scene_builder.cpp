@@ -721,6 +721,7 @@ class Builder {
 
   void fog(const Node& n) {
     Fog f;
+    f.noise.scene = refusals_.sceneNoise;
     std::vector<TransformStep> steps;
     readFog(n, f, steps);
     f.up = glm::normalize(glm::dvec3(composeTransforms<double>(steps) * glm::dvec4(f.up, 0)));
@@ -752,6 +753,16 @@ class Builder {
         f.alt = v->v[0];
       } else if (it.word == "up") {
         f.up = vec3(*v);
+      } else if (it.word == "turbulence") {
+        f.turbulence.amount = vec3(*v);
+      } else if (it.word == "turb_depth") {
+        f.turbDepth = v->v[0];
+      } else if (it.word == "octaves") {
+        f.turbulence.octaves = int(std::clamp(v->v[0], 1.0, 10.0));  // POV-Ray's limits, as on patterns
+      } else if (it.word == "omega") {
+        f.turbulence.omega = float(v->v[0]);
+      } else if (it.word == "lambda") {
+        f.turbulence.lambda = float(v->v[0]);
       } else {
         refusals_.refuse(it, "fog");
       }

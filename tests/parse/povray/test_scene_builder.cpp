@@ -137,6 +137,25 @@ light_source { <0, 5, 0> White looks_like { sphere { 0, 1 } } translate x }
   CHECK(s.lights[3].position == glm::dvec3(1, 5, 0));
 }
 
+TEST_CASE("povray scene: a fog's turbulence and its modifiers; the scene's noise_generator", "[povray]") {
+  const SceneDesc d = scene(
+      "fog { fog_type 2 distance 5 rgb 1 turbulence <0.2, 0.3, 0.4> turb_depth 0.7 octaves 12 omega 0.4 lambda 3 }\n"
+      "fog { distance 5 rgb 1 turbulence 0.5 }\n"
+      "global_settings { noise_generator 1 }\n");
+  REQUIRE(d.fogs.size() == 2);
+  const Fog& f = d.fogs[0];
+  CHECK(f.turbulence.amount == glm::dvec3(0.2, 0.3, 0.4));
+  CHECK(f.turbDepth == 0.7);
+  CHECK(f.turbulence.octaves == 10);  // POV-Ray's limit
+  CHECK(f.turbulence.omega == 0.4f);
+  CHECK(f.turbulence.lambda == 3.0f);
+  CHECK(f.noise.get() == NoiseGenerator::Original);  // set after the fog, read when drawn
+  CHECK(d.fogs[1].turbulence.amount == glm::dvec3(0.5));
+  CHECK(d.fogs[1].turbDepth == 0.5);
+  CHECK(failure("fog { distance 5 rgb 1 turbulence 1 warp { repeat x } }\n") ==
+        "scene.pov:3:37: error: 'warp' is not supported yet");
+}
+
 TEST_CASE("povray scene: light modifiers that are not drawn yet are refused where they are written", "[povray]") {
   CHECK(failure("light_source { 0, White area_light x, z, 2, 2 area_illumination }\n") ==
         "scene.pov:3:47: error: 'area_illumination' is not supported yet");
