@@ -165,9 +165,10 @@ plane { y, 0 pigment { hexagon } }
 plane { y, 0 pigment { brick rgb 1, pigment { rgb <0, 0, 1> } brick_size <2, 1, 1.5> mortar 0.2 } }
 plane { y, 0 pigment { julia <0.353, 0.288>, 30 interior 2, 1 exterior 5, 0.2 } }
 plane { y, 0 pigment { magnet 2 julia <1.5, -0.3> 30 interior 3, 1 } }
-plane { y, 0 pigment { mandel 20 exponent 5 interior 4, 1 exterior 3, 1 } }
+plane { y, 0 pigment { mandel 20 exponent 5 interior 4, 1 exterior 3, 1 color_map { [0 rgb 0] [1 rgb 1] } } }
+plane { y, 0 pigment { mandel 1000 } }
 )");
-  REQUIRE(s.objects.size() == 5);
+  REQUIRE(s.objects.size() == 6);
   const auto colour = [&](size_t object, const glm::dvec3& p) { return s.objects[object].texture->at(p).pigment; };
   CHECK(colour(0, {0, 0, 0}) == Color(0, 0, 1));  // POV-Ray's blue, green and red
   CHECK(colour(0, {0, 0, 1.7}) == Color(0, 1, 0));
@@ -178,6 +179,13 @@ plane { y, 0 pigment { mandel 20 exponent 5 interior 4, 1 exterior 3, 1 } }
   CHECK(colour(2, kMandelPoints[1]).r == Approx(0.8682754569680040).margin(1e-6));
   CHECK(colour(3, kMagnetPoints[2]).r == Approx(0.2).margin(1e-6));
   CHECK(colour(4, kMandelPoints[6]).r == Approx(0.7307170742290325).margin(1e-6));
+  // mandel's own colour map, as POV-Ray's pigment function gave it at values 0, 0.002, 0.013, 0.02 and 1.
+  const auto near = [](const Color& a, const Color& b) { return glm::all(glm::lessThan(glm::abs(a - b), Color(1e-5f))); };
+  CHECK(near(colour(5, {-2.1, 0, 0}), Color(0)));
+  CHECK(near(colour(5, {-1.9974, 0.03534, 0}), Color(0.09091f, 1, 0.90909f)));
+  CHECK(near(colour(5, {-1.2099, 0.30659, 0}), Color(1, 0.66667f, 0.33333f)));
+  CHECK(near(colour(5, {-1.1982, 0.31062, 0}), Color(0.94118f, 0.05882f, 1)));
+  CHECK(near(colour(5, {0, 0, 0}), Color(0, 1, 1)));
 }
 
 TEST_CASE("patterns: bad fractal and brick settings stop the scene", "[patterns]") {
