@@ -10,6 +10,7 @@ const PatternKind* patternKind(std::string_view name) {
       {"agate", false, makeAgate},
       {"boxed", false, makeBoxed},
       {"bozo", false, makeBozo},
+      {"brick", false, makeBrick},
       {"bumps", false, makeBozo},  // as a pigment; as a normal it bends the surface
       {"cells", false, makeCells},
       {"checker", false, makeChecker},
@@ -19,7 +20,11 @@ const PatternKind* patternKind(std::string_view name) {
       {"function", false, makeFunctionPattern},
       {"gradient", true, makeGradient},
       {"granite", false, makeGranite},
+      {"hexagon", false, makeHexagon},
+      {"julia", false, makeFractal},  // these three read their own numbers (surface_reader.cpp)
       {"leopard", false, makeLeopard},
+      {"magnet", false, makeFractal},
+      {"mandel", false, makeFractal},
       {"marble", false, makeMarble, kTriangle, true},
       {"onion", false, makeOnion},
       {"planar", false, makePlanar},

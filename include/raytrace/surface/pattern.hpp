@@ -49,6 +49,17 @@ struct CrackleArgs {
   bool solid = false;
 };
 
+// The fractal patterns' settings (POV-Ray 3.7 manual, "Fractal Pattern"): which set, its iterations, julia's
+// constant, the exponent of mandel and julia, and what the value is outside and inside the set.
+struct FractalArgs {
+  enum class Set { Mandel, Julia, Magnet1Mandel, Magnet1Julia, Magnet2Mandel, Magnet2Julia } set = Set::Mandel;
+  int iterations = 0;
+  glm::dvec2 constant{0};
+  int exponent = 2;
+  int exteriorType = 1, interiorType = 0;
+  double exteriorFactor = 1, interiorFactor = 1;
+};
+
 // What makes a pattern: the vector after its keyword (`gradient <1, 0, 0>`) and the pigment's modifiers that
 // change the pattern itself.
 struct PatternArgs {
@@ -60,6 +71,9 @@ struct PatternArgs {
   CrackleArgs crackle;
   double control0 = 1, control1 = 1;  // quilted's, written among the pattern's modifiers
   std::shared_ptr<const Function> function;  // the function pattern's
+  glm::dvec3 brickSize{8, 3, 4.5};  // brick's brick_size and mortar
+  double mortar = 0.5;
+  FractalArgs fractal;
 };
 
 struct PatternKind {

@@ -10,14 +10,17 @@ namespace rt {
 std::unique_ptr<Pattern> makeAgate(const PatternArgs&);
 std::unique_ptr<Pattern> makeBoxed(const PatternArgs&);
 std::unique_ptr<Pattern> makeBozo(const PatternArgs&);
+std::unique_ptr<Pattern> makeBrick(const PatternArgs&);
 std::unique_ptr<Pattern> makeCells(const PatternArgs&);
 std::unique_ptr<Pattern> makeChecker(const PatternArgs&);
 std::unique_ptr<Pattern> makeCrackle(const PatternArgs&);
 std::unique_ptr<Pattern> makeCylindrical(const PatternArgs&);
 std::unique_ptr<Pattern> makeDents(const PatternArgs&);
+std::unique_ptr<Pattern> makeFractal(const PatternArgs&);
 std::unique_ptr<Pattern> makeFunctionPattern(const PatternArgs&);
 std::unique_ptr<Pattern> makeGradient(const PatternArgs&);
 std::unique_ptr<Pattern> makeGranite(const PatternArgs&);
+std::unique_ptr<Pattern> makeHexagon(const PatternArgs&);
 std::unique_ptr<Pattern> makeLeopard(const PatternArgs&);
 std::unique_ptr<Pattern> makeMarble(const PatternArgs&);
 std::unique_ptr<Pattern> makeOnion(const PatternArgs&);

@@ -118,6 +118,40 @@ template <class Waved> bool readWave(const Node& n, size_t& i, Waved& p) {
 
 bool isFunction(const Item& it) { return it.kind == Item::Kind::Value && it.value.type == Value::Type::Function; }
 
+// What follows a fractal pattern's keyword (POV-Ray 3.7 manual, "Fractal Pattern"): `mandel ITERATIONS`,
+// `julia COMPLEX, ITERATIONS`, `magnet 1|2 mandel …` or `magnet 1|2 julia …`.
+void readFractalHead(const Node& n, size_t& i, FractalArgs& f) {
+  using Set = FractalArgs::Set;
+  const Item& it = n.items[i];
+  std::string_view form = it.word;
+  int magnet = 0;
+  if (form == "magnet") {
+    const Value* type = valueAfter(n, i);
+    if (!type || type->type != Value::Type::Float || (type->v[0] != 1 && type->v[0] != 2)) {
+      throw ParseError(it.loc, "'magnet' needs its type, 1 or 2");
+    }
+    magnet = int(type->v[0]);
+    const bool next = i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Keyword;
+    form = next ? n.items[i + 1].word : "";
+    if (form != "mandel" && form != "julia") throw ParseError(it.loc, "'magnet' needs 'mandel' or 'julia' after its type");
+    ++i;
+  }
+  const bool julia = form == "julia";
+  if (julia) {
+    const Value* c = valueAfter(n, i);
+    if (!c || !c->numeric()) throw ParseError(it.loc, "'julia' needs its complex constant");
+    f.constant = glm::dvec2(vec3(*c));
+  }
+  const Value* iterations = valueAfter(n, i);
+  if (!iterations || iterations->type != Value::Type::Float) {
+    throw ParseError(it.loc, "'" + std::string(form) + "' needs its number of iterations");
+  }
+  f.iterations = int(std::max(0.0, iterations->v[0]));
+  f.set = magnet == 0 ? (julia ? Set::Julia : Set::Mandel)
+          : magnet == 1 ? (julia ? Set::Magnet1Julia : Set::Magnet1Mandel)
+                        : (julia ? Set::Magnet2Julia : Set::Magnet2Mandel);
+}
+
 // A pattern being read: its kind and what the pigment's modifiers set, made again with them once the block
 // is read, since the modifiers may follow the colour map.
 struct PatternDraft {
@@ -148,11 +182,13 @@ struct PatternDraft {
       args.vector = vec3(*v);
       args.hasVector = true;
     }
+    if (k->make == makeFractal) readFractalHead(n, i, args.fractal);
     return makePattern(*k, args);
   }
 
   // turbulence, octaves, omega, lambda, noise_generator, agate_turb, crackle's form, metric, offset and solid,
-  // and quilted's control0 and control1; false for any other item.
+  // quilted's control0 and control1, brick's brick_size and mortar, and the fractals' exponent, interior and
+  // exterior; false for any other item.
   bool modifier(const Node& n, size_t& i, Refusals& refusals) {
     const Item& it = n.items[i];
     if (it.kind != Item::Kind::Keyword) return false;
@@ -162,9 +198,13 @@ struct PatternDraft {
       modified = true;
       return true;
     }
-    const bool vector = w == "turbulence" || w == "form";
+    if (w == "interior" || w == "exterior") {
+      fractalColouring(n, i);
+      return true;
+    }
+    const bool vector = w == "turbulence" || w == "form" || w == "brick_size";
     if (!vector && w != "octaves" && w != "omega" && w != "lambda" && w != "noise_generator" && w != "agate_turb" &&
-        w != "metric" && w != "offset" && w != "control0" && w != "control1") {
+        w != "metric" && w != "offset" && w != "control0" && w != "control1" && w != "mortar" && w != "exponent") {
       return false;
     }
     const Value* v = valueAfter(n, i);
@@ -192,6 +232,19 @@ struct PatternDraft {
       args.agateTurbulence = x;
     } else if (w == "control0" || w == "control1") {
       (w == "control0" ? args.control0 : args.control1) = x;
+    } else if (w == "brick_size" || w == "mortar") {
+      if (!kind || kind->make != makeBrick) throw ParseError(it.loc, "'" + std::string(w) + "' belongs to a brick pattern");
+      if (w == "mortar") {
+        args.mortar = x;
+      } else {
+        args.brickSize = vec3(*v);
+      }
+    } else if (w == "exponent") {
+      const bool mandelOrJulia = args.fractal.set == FractalArgs::Set::Mandel || args.fractal.set == FractalArgs::Set::Julia;
+      if (!kind || kind->make != makeFractal || !mandelOrJulia) {
+        throw ParseError(it.loc, "'exponent' belongs to a mandel or julia pattern");
+      }
+      args.fractal.exponent = x >= 2 && x < 34 ? int(x) : 2;  // POV-Ray warns and takes 2 outside 2 to 33
     } else if (x == 3) {
       refusals.refuse(it.loc, "noise_generator 3");
     } else {
@@ -199,6 +252,25 @@ struct PatternDraft {
     }
     modified = true;
     return true;
+  }
+
+  // `interior TYPE, FACTOR` or `exterior TYPE, FACTOR`: what a fractal's value is inside or outside its set.
+  void fractalColouring(const Node& n, size_t& i) {
+    const Item& it = n.items[i];
+    if (!kind || kind->make != makeFractal) {
+      throw ParseError(it.loc, "'" + std::string(it.word) + "' belongs to a mandel, julia or magnet pattern");
+    }
+    const Value* type = valueAfter(n, i);
+    const Value* factor = type ? valueAfter(n, i) : nullptr;
+    if (!factor || type->type != Value::Type::Float || factor->type != Value::Type::Float) {
+      throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a type and a factor");
+    }
+    if (!(type->v[0] >= 0 && type->v[0] < 7)) {
+      throw ParseError(it.loc, "the fractal " + std::string(it.word) + " type must be 0 to 6");
+    }
+    (it.word == "interior" ? args.fractal.interiorType : args.fractal.exteriorType) = int(type->v[0]);
+    (it.word == "interior" ? args.fractal.interiorFactor : args.fractal.exteriorFactor) = factor->v[0];
+    modified = true;
   }
 
   // The pattern made again with the modifiers read after it.
@@ -368,8 +440,14 @@ std::vector<WarpMark> readPigment(const Node& n, Pigment& p, std::vector<Transfo
   PatternDraft draft;
   readPigmentItems(n, p, draft, steps, refusals);
   draft.finish(p.pattern, n.loc, refusals);
-  // Without a map a continuous pattern is drawn as a grey ramp, black at 0 and white at 1 (measured).
+  // Without a map a continuous pattern is drawn as a grey ramp, black at 0 and white at 1 (measured); mandel
+  // has a map of its own, black to cyan, yellow, magenta and back to cyan (measured with pigment functions).
   if (p.average && p.map.empty()) throw ParseError(n.loc, "'average' needs a pigment_map");
+  if (p.pattern && p.map.empty() && draft.kind && draft.kind->name == "mandel") {
+    p.map = {{0, solidPigment({})},          {0.001, solidPigment({})},
+             {0.001, solidPigment({Color(0, 1, 1), 0, 0})}, {0.012, solidPigment({Color(1, 1, 0), 0, 0})},
+             {0.015, solidPigment({Color(1, 0, 1), 0, 0})}, {0.1, solidPigment({Color(0, 1, 1), 0, 0})}};
+  }
   if (p.pattern && p.pattern->blocks() == 0 && p.map.empty()) p.map = {{0, solidPigment({})}, {1, solidPigment({Color(1), 0, 0})}};
   while (p.pattern && p.list.size() < size_t(p.pattern->blocks())) {
     p.list.push_back(solidPigment({p.pattern->defaultBlock(int(p.list.size())), 0, 0}));

@@ -146,8 +146,8 @@ TEST_CASE("a function that does not compile is refused where it is drawn", "[fun
   };
   CHECK(failure("isosurface { function { f_helix1(x, y, z, 1, 2, 3, 4, 5, 6, 7) } }\n") ==
         "scene.pov:3:25: error: 'f_helix1' is not supported yet");
-  CHECK(failure("sphere { 0, 1 pigment { function { f_mandel(x, y, z) } } }\n") ==
-        "scene.pov:3:36: error: 'f_mandel' is not supported yet");
+  CHECK(failure("sphere { 0, 1 pigment { function { f_spiral2(x, y, z) } } }\n") ==
+        "scene.pov:3:36: error: 'f_spiral2' is not supported yet");
   CHECK(failure("isosurface { function { internal(25) } }\n") ==
         "scene.pov:3:25: error: 'internal(25)' is not supported yet");
 }
