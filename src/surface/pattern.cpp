@@ -37,6 +37,18 @@ const PatternKind* patternKind(std::string_view name) {
   return nullptr;
 }
 
+const PatternKind* normalPatternKind(std::string_view name) {
+  static constexpr PatternKind kKinds[] = {
+      {"bumps", false, makeBumpsNormal},     {"dents", false, makeDentsNormal},
+      {"ripples", false, makeRipplesNormal}, {"waves", false, makeWavesNormal},
+      {"wrinkles", false, makeWrinklesNormal},
+  };
+  for (const PatternKind& k : kKinds) {
+    if (k.name == name) return &k;
+  }
+  return nullptr;
+}
+
 namespace {
 
 // Turbulence as most patterns take it: the point displaced by the turbulent offset, scaled per axis.

@@ -115,5 +115,39 @@ TEST_CASE("normal: quilted's value and bend, against POV-Ray's renders", "[norma
   CHECK(glm::dot(b, glm::normalize(glm::dvec3(0, 1, 1))) == Approx(0.4074).margin(1e-4));
 }
 
+// n·l of a bent normal under lights straight up, along +x and along +z (as POV-Ray's renders read).
+void checkLit(const glm::dvec3& b, double up, double x, double z) {
+  CHECK(b.y == Approx(up).margin(1e-4));
+  CHECK(glm::dot(b, glm::normalize(glm::dvec3(1, 1, 0))) == Approx(x).margin(1e-4));
+  CHECK(glm::dot(b, glm::normalize(glm::dvec3(0, 1, 1))) == Approx(z).margin(1e-4));
+}
+
+TEST_CASE("normal: ripples, waves and wrinkles bend by their own formulas, against POV-Ray's renders", "[normal]") {
+  // `normal { ripples 0.5 }` (and the others) on the plane y = 0, read once from POV-Ray's 16-bit renders.
+  const auto bent = [](std::unique_ptr<Pattern> pattern, double amount, const glm::dvec3& p) {
+    Normal n;
+    n.pattern = std::move(pattern);
+    n.amount = amount;
+    return n.bent(kUp, p, glm::dmat3(1));
+  };
+  const glm::dvec3 a(-1.3125, 0, 1.0625), b(0.5625, 0, -1.3125);
+  PatternArgs args;
+  checkLit(bent(makeRipplesNormal(args), 0.5, a), 0.9949, 0.6417, 0.7388);
+  checkLit(bent(makeRipplesNormal(args), 0.5, b), 0.9798, 0.7831, 0.5840);
+  checkLit(bent(makeWavesNormal(args), 0.5, a), 0.9948, 0.6475, 0.6574);
+  checkLit(bent(makeWavesNormal(args), 0.5, b), 0.8926, 0.7572, 0.3383);
+  checkLit(bent(makeWrinklesNormal(args), 0.5, a), 0.9823, 0.8000, 0.7750);
+  checkLit(bent(makeWrinklesNormal(args), 0.5, b), 0.9649, 0.8353, 0.7876);
+  // frequency and phase go inside the waves: `ripples 0.5 frequency 3 phase 0.2`, `waves 0.7 frequency 2 phase 0.3`.
+  args.frequency = 3;
+  args.phase = 0.2;
+  checkLit(bent(makeRipplesNormal(args), 0.5, a), 0.9986, 0.6929, 0.7412);
+  checkLit(bent(makeRipplesNormal(args), 0.5, b), 0.9977, 0.7252, 0.6612);
+  args.frequency = 2;
+  args.phase = 0.3;
+  checkLit(bent(makeWavesNormal(args), 0.7, a), 0.8154, 0.2423, 0.8128);
+  checkLit(bent(makeWavesNormal(args), 0.7, b), 0.9622, 0.6473, 0.8702);
+}
+
 }  // namespace
 }  // namespace rt

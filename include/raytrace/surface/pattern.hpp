@@ -60,6 +60,7 @@ struct PatternArgs {
   CrackleArgs crackle;
   double control0 = 1, control1 = 1;  // quilted's, written among the pattern's modifiers
   std::shared_ptr<const Function> function;  // the function pattern's
+  double frequency = 1, phase = 0;           // a normal's, which ripples and waves read themselves
 };
 
 struct PatternKind {
@@ -73,6 +74,9 @@ struct PatternKind {
 
 // The pattern kinds raytrace draws; nothing for any other name.
 const PatternKind* patternKind(std::string_view name);
+// The kinds that bend a normal by a formula of their own (bumps, dents, ripples, waves, wrinkles): in a normal
+// they stand for the pattern of the same name; nothing for any other name.
+const PatternKind* normalPatternKind(std::string_view name);
 
 // A pattern of the kind, displaced by the turbulence unless the kind reads it itself.
 std::unique_ptr<Pattern> makePattern(const PatternKind& kind, const PatternArgs& args);

@@ -262,8 +262,9 @@ plane { y, 0 pigment { White } normal { bumps 1 } }
 plane { y, 0 pigment { White } normal { bumps 0.6 scale 0.3 } }
 plane { y, 0 pigment { White } normal { dents 1 } }
 plane { y, 0 pigment { White } normal { bumps 1 turbulence 0.5 } }
+plane { y, 0 pigment { White } normal { ripples 0.5 frequency 3 phase 0.2 } }
 )");
-  REQUIRE(s.objects.size() == 13);
+  REQUIRE(s.objects.size() == 14);
   const glm::dvec3 up(0, 1, 0), left(-1, 1, 0), right(1, 1, 0), p(0.5, 0, 0.45);
   CHECK(lit(s, 0, p, up) == Approx(0.9978).margin(1e-4));
   CHECK(lit(s, 0, p, left) == Approx(0.7526).margin(1e-4));
@@ -288,9 +289,12 @@ plane { y, 0 pigment { White } normal { bumps 1 turbulence 0.5 } }
   CHECK(lit(s, 10, {0.95, 0, 0.45}, right) == Approx(0.6567).margin(1e-4));
   CHECK(lit(s, 11, {0.05, 0, 0.45}, up) == Approx(0.9992).margin(1e-4));
   CHECK(lit(s, 11, {0.05, 0, 0.45}, glm::dvec3(0, 1, 1)) == Approx(0.6777).margin(1e-4));
-  CHECK(failure("plane { y, 0 normal { wrinkles 0.4 } }\n") == "scene.pov:3:23: error: 'wrinkles' is not supported yet");
+  CHECK(failure("plane { y, 0 normal { facets 0.4 } }\n") == "scene.pov:3:23: error: 'facets' is not supported yet");
   CHECK(lit(s, 12, {0.95, 0, 0.45}, up) == Approx(0.7177).margin(1e-4));
   CHECK(lit(s, 12, {0.95, 0, 0.45}, right) == Approx(0.0908).margin(1e-4));
+  // frequency and phase reach ripples' own formula (surface/test_normal.cpp).
+  CHECK(lit(s, 13, {-1.3125, 0, 1.0625}, up) == Approx(0.9986).margin(1e-4));
+  CHECK(lit(s, 13, {-1.3125, 0, 1.0625}, right) == Approx(0.6929).margin(1e-4));
   CHECK(failure("plane { y, 0 normal { gradient x normal_map { [0 gradient y] } } }\n") ==
         "scene.pov:3:34: error: 'normal_map' is not supported yet");
   CHECK(failure("plane { y, 0 normal { gradient x slope_map { [0] } } }\n") ==
