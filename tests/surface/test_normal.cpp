@@ -149,5 +149,31 @@ TEST_CASE("normal: ripples, waves and wrinkles bend by their own formulas, again
   checkLit(bent(makeWavesNormal(args), 0.7, b), 0.9622, 0.6473, 0.8702);
 }
 
+TEST_CASE("normal: a normal_map blends its entries' bent normals, a list picks its block's, an average weighs them",
+          "[normal]") {
+  // As POV-Ray's renders of the plane y = 0 show them (to their 16-bit precision).
+  const auto entry = [](double value, const glm::dvec3& v, double amount) {
+    return NormalEntry{value, std::make_shared<const Normal>(gradient(v, amount))};
+  };
+  const glm::dvec3 a = glm::normalize(glm::dvec3(0, 1, -4.0 / 15)), b = glm::normalize(glm::dvec3(0, 1, 4.0 / 15));
+  // `gradient x normal_map { [0 gradient z 2] [1 gradient -z 2] }`: at x = 0.125, one eighth of the way.
+  Normal map = gradient({1, 0, 0}, 0.5);
+  map.map = {entry(0, {0, 0, 1}, 2), entry(1, {0, 0, -1}, 2)};
+  checkNear(map.bent(kUp, {0.125, 0, 0.5}, glm::dmat3(1)), glm::normalize(0.875 * a + 0.125 * b));
+  checkNear(map.bent(kUp, {0.625, 0, 0.5}, glm::dmat3(1)), glm::normalize(0.375 * a + 0.625 * b));
+  // `checker normal { gradient z 2 } normal { gradient -z 2 }`.
+  Normal list;
+  list.pattern = makeChecker({});
+  list.map = {entry(0, {0, 0, 1}, 2), entry(1, {0, 0, -1}, 2)};
+  checkNear(list.bent(kUp, {0.5, 0, 0.5}, glm::dmat3(1)), a);
+  checkNear(list.bent(kUp, {1.5, 0, 0.5}, glm::dmat3(1)), b);
+  // `average normal_map { [3 gradient x 6] [1 gradient z 6] }`.
+  Normal average;
+  average.average = true;
+  average.map = {entry(3, {1, 0, 0}, 6), entry(1, {0, 0, 1}, 6)};
+  const glm::dvec3 x = glm::normalize(glm::dvec3(-0.8, 1, 0)), z = glm::normalize(glm::dvec3(0, 1, -0.8));
+  checkNear(average.bent(kUp, {0.5, 0, 0.5}, glm::dmat3(1)), glm::normalize(3.0 * x + z));
+}
+
 }  // namespace
 }  // namespace rt

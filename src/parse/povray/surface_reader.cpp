@@ -480,8 +480,9 @@ void readSlopeMap(const Node& n, std::vector<SlopeEntry>& slopes) {
 
 void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, Refusals& refusals);
 
-std::shared_ptr<const Normal> nestedNormal(const Node& n, Refusals& refusals) {
-  auto normal = std::make_shared<Normal>();
+// A map's or a list's normal, which starts as the #default texture's, as every normal block does.
+std::shared_ptr<const Normal> nestedNormal(const Node& n, const Normal& base, Refusals& refusals) {
+  auto normal = std::make_shared<Normal>(base);
   std::vector<TransformStep> steps;
   readNormal(n, *normal, steps, refusals);
   normal->fromTexture = glm::inverse(composeTransforms<double>(steps));
@@ -490,10 +491,11 @@ std::shared_ptr<const Normal> nestedNormal(const Node& n, Refusals& refusals) {
 
 // normal_map entries `[value normal items…]`, or a normal_map identifier; an average's may leave out their
 // weight, which is then 1.
-void readNormalMap(const Node& n, std::vector<NormalEntry>& map, bool weightsOptional, Refusals& refusals) {
+void readNormalMap(const Node& n, std::vector<NormalEntry>& map, bool weightsOptional, const Normal& base,
+                   Refusals& refusals) {
   for (const Item& it : n.items) {
     if (it.kind == Item::Kind::Node && it.node->keyword == "normal_map") {
-      readNormalMap(*it.node, map, weightsOptional, refusals);
+      readNormalMap(*it.node, map, weightsOptional, base, refusals);
       continue;
     }
     const std::vector<Item>* e = it.kind == Item::Kind::Node && it.node->keyword == "[" ? &it.node->items : nullptr;
@@ -505,7 +507,7 @@ void readNormalMap(const Node& n, std::vector<NormalEntry>& map, bool weightsOpt
     body.keyword = "normal";
     body.loc = it.loc;
     body.items.assign(e->begin() + (weighted ? 1 : 0), e->end());
-    map.push_back({weighted ? (*e)[0].value.v[0] : 1.0, nestedNormal(body, refusals)});
+    map.push_back({weighted ? (*e)[0].value.v[0] : 1.0, nestedNormal(body, base, refusals)});
   }
   // POV-Ray reads the entries in order and expects them sorted; a stable sort keeps equal values' order.
   if (!weightsOptional) {
@@ -515,7 +517,7 @@ void readNormalMap(const Node& n, std::vector<NormalEntry>& map, bool weightsOpt
 
 // `normal { [identifier] pattern [amount] modifiers… }` (POV-Ray 3.7 manual, "Normal").
 void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::vector<TransformStep>& steps,
-                     Refusals& refusals) {
+                     const Normal& base, Refusals& refusals) {
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     if (readTransform(n, i, steps, refusals)) continue;
@@ -523,15 +525,15 @@ void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::ve
       const std::string_view k = it.node->keyword;
       const bool blocks = normal.pattern && normal.pattern->blocks() > 0;
       if (k == "normal" && blocks && normal.map.size() < size_t(normal.pattern->blocks())) {
-        normal.map.push_back({double(normal.map.size()), nestedNormal(*it.node, refusals)});
+        normal.map.push_back({double(normal.map.size()), nestedNormal(*it.node, base, refusals)});
       } else if (k == "normal") {
-        readNormalItems(*it.node, normal, draft, steps, refusals);  // an identifier, modified by what follows
+        readNormalItems(*it.node, normal, draft, steps, base, refusals);  // an identifier, modified by what follows
       } else if (k == "slope_map") {
         normal.slopes.clear();
         readSlopeMap(*it.node, normal.slopes);
       } else if (k == "normal_map") {
         normal.map.clear();
-        readNormalMap(*it.node, normal.map, normal.average, refusals);
+        readNormalMap(*it.node, normal.map, normal.average, base, refusals);
       } else {
         refusals.refuse(it, "normal");
       }
@@ -553,8 +555,8 @@ void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::ve
       normal.pattern = std::move(pattern);
       normal.average = false;
       normal.wave = draft.kind->wave;
-      const Value* amount = valueAfter(n, i);
-      normal.amount = amount ? amount->v[0] : 0.5;
+      // Without an amount the normal keeps the one it has: 0.5, or the #default normal's bump_size.
+      if (const Value* amount = valueAfter(n, i)) normal.amount = amount->v[0];
       continue;
     }
     if (w == "bump_size" || w == "accuracy") {
@@ -577,7 +579,11 @@ void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::ve
 
 void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, Refusals& refusals) {
   PatternDraft draft;
-  readNormalItems(n, normal, draft, steps, refusals);
+  Normal base = normal;
+  base.pattern.reset();
+  base.map.clear();
+  base.average = false;
+  readNormalItems(n, normal, draft, steps, base, refusals);
   // A normal's own formula reads its frequency and phase itself (ripples, waves).
   if (draft.kind && draft.kind == normalPatternKind(draft.kind->name)) {
     draft.args.frequency = normal.frequency;
