@@ -25,9 +25,11 @@ const PatternKind* patternKind(std::string_view name) {
       {"planar", false, makePlanar},
       {"quilted", false, makeQuilted},
       {"radial", false, makeRadial},
+      {"ripples", false, makeRipples},
       {"spherical", false, makeSpherical},
       {"spiral1", true, makeSpiral1, kTriangle, true, false},  // `spiral1 N`: N arms
       {"spotted", false, makeBozo},
+      {"waves", false, makeWaves},
       {"wood", false, makeWood, kTriangle, true},
       {"wrinkles", false, makeWrinkles},
   };

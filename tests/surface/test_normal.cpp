@@ -138,6 +138,11 @@ TEST_CASE("normal: ripples, waves and wrinkles bend by their own formulas, again
   checkLit(bent(makeWavesNormal(args), 0.5, b), 0.8926, 0.7572, 0.3383);
   checkLit(bent(makeWrinklesNormal(args), 0.5, a), 0.9823, 0.8000, 0.7750);
   checkLit(bent(makeWrinklesNormal(args), 0.5, b), 0.9649, 0.8353, 0.7876);
+  // As pigments, their values: POV-Ray's `function { pattern { ripples } }` and `waves` printed by #debug.
+  CHECK(makeRipples(args)->value({-1, 0.3, 0.5}) == Approx(0.407660390622).margin(1e-9));
+  CHECK(makeRipples(args)->value({0.48, 1.14, -0.02}) == Approx(0.556025102241).margin(1e-9));
+  CHECK(makeWaves(args)->value({-1, 0.3, 0.5}) == Approx(0.720588585563).margin(1e-9));
+  CHECK(makeWaves(args)->value({0.48, 1.14, -0.02}) == Approx(0.524153764426).margin(1e-9));
   // frequency and phase go inside the waves: `ripples 0.5 frequency 3 phase 0.2`, `waves 0.7 frequency 2 phase 0.3`.
   args.frequency = 3;
   args.phase = 0.2;

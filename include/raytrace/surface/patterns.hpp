@@ -31,8 +31,10 @@ std::unique_ptr<Pattern> makeRipplesNormal(const PatternArgs&);
 std::unique_ptr<Pattern> makeWavesNormal(const PatternArgs&);
 std::unique_ptr<Pattern> makeWrinklesNormal(const PatternArgs&);
 std::unique_ptr<Pattern> makeRadial(const PatternArgs&);
+std::unique_ptr<Pattern> makeRipples(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpherical(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpiral1(const PatternArgs&);
+std::unique_ptr<Pattern> makeWaves(const PatternArgs&);
 std::unique_ptr<Pattern> makeWood(const PatternArgs&);
 std::unique_ptr<Pattern> makeWrinkles(const PatternArgs&);
 
