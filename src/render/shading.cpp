@@ -102,6 +102,12 @@ float variableReflection(const Material& m, float cosTheta) {
   return e.reflectionMin + (m.reflection - e.reflectionMin) * t;
 }
 
+Color metallicTint(const Color& pigment, float metallic, float cosTheta) {
+  const float x = std::acos(std::clamp(std::abs(cosTheta), 0.0f, 1.0f)) / 1.5707963f;
+  const float f = std::clamp(0.014567225f / ((x - 1.12f) * (x - 1.12f)) - 0.011612903f, 0.0f, 1.0f);
+  return Color(1) + metallic * (1 - f) * (pigment - Color(1));
+}
+
 Color interiorFade(const Material& m, float distance) {
   const SurfaceExtras& e = *m.extras;
   const float d = distance / e.fadeDistance;

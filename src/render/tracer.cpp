@@ -549,7 +549,10 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
     if (entering && m.extras->fadeDistance > 0) gathered *= interiorFade(m, float(t.distance));
     refraction = w.transmission * gathered;
   }
-  const Color reflectTint = conventions_.tintReflection ? m.pigment : Color(1);
+  Color reflectTint = conventions_.tintReflection ? m.pigment : Color(1);
+  if (m.extras->reflectionMetallic != 0) {
+    reflectTint *= metallicTint(m.pigment, m.extras->reflectionMetallic, float(glm::dot(n, -ray.dir)));
+  }
   child.weight = path.weight * w.reflection * brightest(reflectTint);
   if (child.depth <= conventions_.maxDepth && w.reflection > 0 && matters(child.weight, child.depth)) {
     RayRecord* sub = record ? &record->children.emplace_back() : nullptr;

@@ -32,6 +32,7 @@ glm::dvec3 Normal::bent(const glm::dvec3& n, const glm::dvec3& p, const glm::dma
                                          {0, 1, 0}};
   const glm::dmat3 m = glm::dmat3(fromTexture) * toTexture;
   const glm::dvec3 q = glm::dvec3(fromTexture * glm::dvec4(p, 1));
+  if (!map.empty()) return mapped(n, q, m);
   glm::dvec3 slope = pattern->hasBump() ? pattern->bump(q) : glm::dvec3(0);
   if (!pattern->hasBump()) {
     for (const glm::dvec3& corner : kPyramid) slope += height(q + accuracy * corner) * corner;
@@ -40,6 +41,31 @@ glm::dvec3 Normal::bent(const glm::dvec3& n, const glm::dvec3& p, const glm::dma
   double scale = amount;
   if (bumpScale) scale *= glm::length(glm::transpose(glm::inverse(m)) * n);
   return glm::normalize(n - scale * (glm::transpose(m) * slope));
+}
+
+// The entries' bent normals are blended, not their slopes: a map's two entries about the pattern's value in
+// proportion, an average's all by weight, the sum made unit length; a block pattern takes its block's normal
+// (POV-Ray 3.7 manual, "Normal Maps and Normal Lists", "Average"; the blend as measured on its renders).
+glm::dvec3 Normal::mapped(const glm::dvec3& n, const glm::dvec3& q, const glm::dmat3& m) const {
+  const auto bend = [&](const NormalEntry& e) { return e.normal ? e.normal->bent(n, q, m) : n; };
+  if (average) {
+    glm::dvec3 sum(0);
+    for (const NormalEntry& e : map) sum += e.value * bend(e);
+    return glm::length(sum) > 0 ? glm::normalize(sum) : n;
+  }
+  if (pattern->blocks() > 0) {
+    const int block = int(pattern->value(q));
+    return block >= 0 && size_t(block) < map.size() ? bend(map[size_t(block)]) : n;
+  }
+  const double v = waveValue(pattern->value(q), frequency, phase, wave, exponent);
+  if (v <= map.front().value) return bend(map.front());
+  if (v >= map.back().value) return bend(map.back());
+  const auto upper = std::upper_bound(map.begin(), map.end(), v, [](double x, const NormalEntry& e) { return x < e.value; });
+  const NormalEntry& a = *(upper - 1);
+  const NormalEntry& b = *upper;
+  const double t = b.value > a.value ? (v - a.value) / (b.value - a.value) : 0;
+  const glm::dvec3 blend = (1 - t) * bend(a) + t * bend(b);
+  return glm::length(blend) > 0 ? glm::normalize(blend) : n;
 }
 
 }  // namespace rt

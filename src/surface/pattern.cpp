@@ -30,11 +30,25 @@ const PatternKind* patternKind(std::string_view name) {
       {"planar", false, makePlanar},
       {"quilted", false, makeQuilted},
       {"radial", false, makeRadial},
+      {"ripples", false, makeRipples},
       {"spherical", false, makeSpherical},
       {"spiral1", true, makeSpiral1, kTriangle, true, false},  // `spiral1 N`: N arms
       {"spotted", false, makeBozo},
+      {"waves", false, makeWaves},
       {"wood", false, makeWood, kTriangle, true},
       {"wrinkles", false, makeWrinkles},
+  };
+  for (const PatternKind& k : kKinds) {
+    if (k.name == name) return &k;
+  }
+  return nullptr;
+}
+
+const PatternKind* normalPatternKind(std::string_view name) {
+  static constexpr PatternKind kKinds[] = {
+      {"bumps", false, makeBumpsNormal},     {"dents", false, makeDentsNormal},
+      {"ripples", false, makeRipplesNormal}, {"waves", false, makeWavesNormal},
+      {"wrinkles", false, makeWrinklesNormal},
   };
   for (const PatternKind& k : kKinds) {
     if (k.name == name) return &k;

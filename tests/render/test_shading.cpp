@@ -203,6 +203,21 @@ TEST_CASE("POV-Ray's variable reflection: from its minimum to its maximum by the
   CHECK_THAT(variableReflection(m, 1.0f), WithinAbs(0.136, 1e-6));
 }
 
+TEST_CASE("metallic reflection: the pigment's colour facing the viewer, the light's at grazing angles", "[shading]") {
+  // POV-Ray's 16-bit pictures of a red plane, `reflection { 1 metallic 1 }`, under a white sky, seen at θ from
+  // its normal: the green channel is the share F of the light's own colour.
+  const Color red(1, 0, 0);
+  const std::pair<double, double> kSeen[] = {{0, 0}, {30, 0.011933}, {60, 0.059266}, {80, 0.261112}, {89, 0.835813}};
+  for (const auto& [degrees, f] : kSeen) {
+    const Color t = metallicTint(red, 1, float(std::cos(degrees * M_PI / 180)));
+    CHECK_THAT(t.r, WithinAbs(1, 1e-6));
+    CHECK_THAT(t.g, WithinAbs(f, 2e-5));
+    CHECK_THAT(t.b, WithinAbs(f, 2e-5));
+  }
+  // metallic 0.5: half the tint.
+  CHECK_THAT(metallicTint(red, 0.5f, 1).g, WithinAbs(0.5, 1e-6));
+}
+
 TEST_CASE("Shading terms stay finite for random unit vectors", "[shading]") {
   const unsigned seed = 473;
   CAPTURE(seed);

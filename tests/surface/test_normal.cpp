@@ -115,5 +115,70 @@ TEST_CASE("normal: quilted's value and bend, against POV-Ray's renders", "[norma
   CHECK(glm::dot(b, glm::normalize(glm::dvec3(0, 1, 1))) == Approx(0.4074).margin(1e-4));
 }
 
+// n·l of a bent normal under lights straight up, along +x and along +z (as POV-Ray's renders read).
+void checkLit(const glm::dvec3& b, double up, double x, double z) {
+  CHECK(b.y == Approx(up).margin(1e-4));
+  CHECK(glm::dot(b, glm::normalize(glm::dvec3(1, 1, 0))) == Approx(x).margin(1e-4));
+  CHECK(glm::dot(b, glm::normalize(glm::dvec3(0, 1, 1))) == Approx(z).margin(1e-4));
+}
+
+TEST_CASE("normal: ripples, waves and wrinkles bend by their own formulas, against POV-Ray's renders", "[normal]") {
+  // `normal { ripples 0.5 }` (and the others) on the plane y = 0, read once from POV-Ray's 16-bit renders.
+  const auto bent = [](std::unique_ptr<Pattern> pattern, double amount, const glm::dvec3& p) {
+    Normal n;
+    n.pattern = std::move(pattern);
+    n.amount = amount;
+    return n.bent(kUp, p, glm::dmat3(1));
+  };
+  const glm::dvec3 a(-1.3125, 0, 1.0625), b(0.5625, 0, -1.3125);
+  PatternArgs args;
+  checkLit(bent(makeRipplesNormal(args), 0.5, a), 0.9949, 0.6417, 0.7388);
+  checkLit(bent(makeRipplesNormal(args), 0.5, b), 0.9798, 0.7831, 0.5840);
+  checkLit(bent(makeWavesNormal(args), 0.5, a), 0.9948, 0.6475, 0.6574);
+  checkLit(bent(makeWavesNormal(args), 0.5, b), 0.8926, 0.7572, 0.3383);
+  checkLit(bent(makeWrinklesNormal(args), 0.5, a), 0.9823, 0.8000, 0.7750);
+  checkLit(bent(makeWrinklesNormal(args), 0.5, b), 0.9649, 0.8353, 0.7876);
+  // As pigments, their values: POV-Ray's `function { pattern { ripples } }` and `waves` printed by #debug.
+  CHECK(makeRipples(args)->value({-1, 0.3, 0.5}) == Approx(0.407660390622).margin(1e-9));
+  CHECK(makeRipples(args)->value({0.48, 1.14, -0.02}) == Approx(0.556025102241).margin(1e-9));
+  CHECK(makeWaves(args)->value({-1, 0.3, 0.5}) == Approx(0.720588585563).margin(1e-9));
+  CHECK(makeWaves(args)->value({0.48, 1.14, -0.02}) == Approx(0.524153764426).margin(1e-9));
+  // frequency and phase go inside the waves: `ripples 0.5 frequency 3 phase 0.2`, `waves 0.7 frequency 2 phase 0.3`.
+  args.frequency = 3;
+  args.phase = 0.2;
+  checkLit(bent(makeRipplesNormal(args), 0.5, a), 0.9986, 0.6929, 0.7412);
+  checkLit(bent(makeRipplesNormal(args), 0.5, b), 0.9977, 0.7252, 0.6612);
+  args.frequency = 2;
+  args.phase = 0.3;
+  checkLit(bent(makeWavesNormal(args), 0.7, a), 0.8154, 0.2423, 0.8128);
+  checkLit(bent(makeWavesNormal(args), 0.7, b), 0.9622, 0.6473, 0.8702);
+}
+
+TEST_CASE("normal: a normal_map blends its entries' bent normals, a list picks its block's, an average weighs them",
+          "[normal]") {
+  // As POV-Ray's renders of the plane y = 0 show them (to their 16-bit precision).
+  const auto entry = [](double value, const glm::dvec3& v, double amount) {
+    return NormalEntry{value, std::make_shared<const Normal>(gradient(v, amount))};
+  };
+  const glm::dvec3 a = glm::normalize(glm::dvec3(0, 1, -4.0 / 15)), b = glm::normalize(glm::dvec3(0, 1, 4.0 / 15));
+  // `gradient x normal_map { [0 gradient z 2] [1 gradient -z 2] }`: at x = 0.125, one eighth of the way.
+  Normal map = gradient({1, 0, 0}, 0.5);
+  map.map = {entry(0, {0, 0, 1}, 2), entry(1, {0, 0, -1}, 2)};
+  checkNear(map.bent(kUp, {0.125, 0, 0.5}, glm::dmat3(1)), glm::normalize(0.875 * a + 0.125 * b));
+  checkNear(map.bent(kUp, {0.625, 0, 0.5}, glm::dmat3(1)), glm::normalize(0.375 * a + 0.625 * b));
+  // `checker normal { gradient z 2 } normal { gradient -z 2 }`.
+  Normal list;
+  list.pattern = makeChecker({});
+  list.map = {entry(0, {0, 0, 1}, 2), entry(1, {0, 0, -1}, 2)};
+  checkNear(list.bent(kUp, {0.5, 0, 0.5}, glm::dmat3(1)), a);
+  checkNear(list.bent(kUp, {1.5, 0, 0.5}, glm::dmat3(1)), b);
+  // `average normal_map { [3 gradient x 6] [1 gradient z 6] }`.
+  Normal average;
+  average.average = true;
+  average.map = {entry(3, {1, 0, 0}, 6), entry(1, {0, 0, 1}, 6)};
+  const glm::dvec3 x = glm::normalize(glm::dvec3(-0.8, 1, 0)), z = glm::normalize(glm::dvec3(0, 1, -0.8));
+  checkNear(average.bent(kUp, {0.5, 0, 0.5}, glm::dmat3(1)), glm::normalize(3.0 * x + z));
+}
+
 }  // namespace
 }  // namespace rt

@@ -61,6 +61,12 @@ float fresnelReflectance(float cosTheta, float ior);
 // reflection and SurfaceExtras' reflectionMin, reflectionFalloff, reflectionFresnel; POV-Ray 3.7 manual, "Specular Reflection").
 float variableReflection(const Material& m, float cosTheta);
 
+// The tint of light reflected by a `reflection { … metallic M }` surface, cos θ = cosTheta from the normal:
+// 1 + M·(1 − F)·(pigment − 1), with POV-Ray's empirical F(x) = 0.014567225/(x − 1.12)² − 0.011612903 in [0, 1]
+// at x = θ/(π/2): the pigment's colour facing the viewer, the light's own at grazing angles (POV-Ray 3.7
+// manual, "Specular Reflection"; the same function as its metallic highlights'; measured to 10⁻⁵ on its renders).
+Color metallicTint(const Color& pigment, float metallic, float cosTheta);
+
 // How a hit's colour is split between its local shading and its two secondary rays (§c.5): local
 // (1−f)(1−k), reflection (1−f)k + fF, transmission f(1−F) for filter f, reflection k and Fresnel
 // reflectance F. When reflection does not mix (the .cli rule, cs3451 §A.4) local keeps (1−f) whole.

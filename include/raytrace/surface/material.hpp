@@ -29,10 +29,13 @@ struct SurfaceExtras {
   // crand: each light's diffuse term loses crand·u·C·light, u uniform in [0, 1) at each point (fitted to
   // POV-Ray's pictures; its own u is random at each render, ours keyed by the point, the same at each).
   float crand = 0;
+  // `reflection { … metallic M }`: reflected light tinted by the pigment, less so toward grazing angles
+  // (metallicTint(), shading.hpp); 0: not tinted.
+  float reflectionMetallic = 0;
   bool reflectionFresnel = false;
 
   // Whether any of them changes a picture.
-  bool any() const { return fadeDistance > 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0; }
+  bool any() const { return fadeDistance > 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0; }
 };
 
 // The extras of a surface that has none, which every Material points to until given others.

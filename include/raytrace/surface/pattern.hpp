@@ -74,6 +74,7 @@ struct PatternArgs {
   glm::dvec3 brickSize{8, 3, 4.5};  // brick's brick_size and mortar
   double mortar = 0.5;
   FractalArgs fractal;
+  double frequency = 1, phase = 0;  // a normal's, which ripples and waves read themselves
 };
 
 struct PatternKind {
@@ -87,6 +88,9 @@ struct PatternKind {
 
 // The pattern kinds raytrace draws; nothing for any other name.
 const PatternKind* patternKind(std::string_view name);
+// The kinds that bend a normal by a formula of their own (bumps, dents, ripples, waves, wrinkles): in a normal
+// they stand for the pattern of the same name; nothing for any other name.
+const PatternKind* normalPatternKind(std::string_view name);
 
 // A pattern of the kind, displaced by the turbulence unless the kind reads it itself.
 std::unique_ptr<Pattern> makePattern(const PatternKind& kind, const PatternArgs& args);

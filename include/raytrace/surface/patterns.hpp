@@ -26,12 +26,18 @@ std::unique_ptr<Pattern> makeMarble(const PatternArgs&);
 std::unique_ptr<Pattern> makeOnion(const PatternArgs&);
 std::unique_ptr<Pattern> makePlanar(const PatternArgs&);
 std::unique_ptr<Pattern> makeQuilted(const PatternArgs&);
-// Normals only (surface/normal.hpp), not in patternKind(): bumps and dents as POV-Ray bends normals by them.
+// Normals only (surface/normal.hpp), in normalPatternKind(): bumps, dents, ripples, waves and wrinkles as
+// POV-Ray bends normals by them.
 std::unique_ptr<Pattern> makeBumpsNormal(const PatternArgs&);
 std::unique_ptr<Pattern> makeDentsNormal(const PatternArgs&);
+std::unique_ptr<Pattern> makeRipplesNormal(const PatternArgs&);
+std::unique_ptr<Pattern> makeWavesNormal(const PatternArgs&);
+std::unique_ptr<Pattern> makeWrinklesNormal(const PatternArgs&);
 std::unique_ptr<Pattern> makeRadial(const PatternArgs&);
+std::unique_ptr<Pattern> makeRipples(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpherical(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpiral1(const PatternArgs&);
+std::unique_ptr<Pattern> makeWaves(const PatternArgs&);
 std::unique_ptr<Pattern> makeWood(const PatternArgs&);
 std::unique_ptr<Pattern> makeWrinkles(const PatternArgs&);
 

@@ -161,11 +161,12 @@ struct PatternDraft {
   std::vector<WarpMark> warps;
 
   // The pattern of keyword n.items[i] (i moves past its vector), or of a `function { … }` value; nothing if the
-  // item names no pattern, or is a function that did not compile (refused).
-  std::unique_ptr<Pattern> start(const Node& n, size_t& i, Refusals& refusals) {
+  // item names no pattern, or is a function that did not compile (refused). `kinds` finds a keyword's kind.
+  std::unique_ptr<Pattern> start(const Node& n, size_t& i, Refusals& refusals,
+                                 const PatternKind* (*kinds)(std::string_view) = patternKind) {
     const Item& it = n.items[i];
     const bool function = isFunction(it);
-    const PatternKind* k = function ? patternKind("function") : it.kind == Item::Kind::Keyword ? patternKind(it.word) : nullptr;
+    const PatternKind* k = function ? patternKind("function") : it.kind == Item::Kind::Keyword ? kinds(it.word) : nullptr;
     if (!k) return nullptr;
     if (function && !static_cast<const FunctionValue&>(*it.value.ref).compiled) {
       const auto& f = static_cast<const FunctionValue&>(*it.value.ref);
@@ -470,6 +471,8 @@ void readReflection(const Node& n, PovFinish& f, Refusals& refusals) {
       f.reflectionFresnel = !v || v->v[0] != 0;
     } else if (r.kind == Item::Kind::Keyword && r.word == "falloff" && v && v->numeric()) {
       f.reflectionFalloff = v->v[0];
+    } else if (r.kind == Item::Kind::Keyword && r.word == "metallic") {
+      f.reflectionMetallic = v && v->numeric() ? v->v[0] : 1;  // the value is optional
     } else if (r.kind == Item::Kind::Keyword && r.word == "exponent" && v && v->numeric() && v->v[0] == 1) {
       continue;  // POV-Ray's default: reflected light as it is
     } else {
@@ -553,21 +556,64 @@ void readSlopeMap(const Node& n, std::vector<SlopeEntry>& slopes) {
   std::stable_sort(slopes.begin(), slopes.end(), [](const SlopeEntry& a, const SlopeEntry& b) { return a.value < b.value; });
 }
 
+void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, Refusals& refusals);
+
+// A map's or a list's normal, which starts as the #default texture's, as every normal block does.
+std::shared_ptr<const Normal> nestedNormal(const Node& n, const Normal& base, Refusals& refusals) {
+  auto normal = std::make_shared<Normal>(base);
+  std::vector<TransformStep> steps;
+  readNormal(n, *normal, steps, refusals);
+  normal->fromTexture = glm::inverse(composeTransforms<double>(steps));
+  return normal;
+}
+
+// normal_map entries `[value normal items…]`, or a normal_map identifier; an average's may leave out their
+// weight, which is then 1.
+void readNormalMap(const Node& n, std::vector<NormalEntry>& map, bool weightsOptional, const Normal& base,
+                   Refusals& refusals) {
+  for (const Item& it : n.items) {
+    if (it.kind == Item::Kind::Node && it.node->keyword == "normal_map") {
+      readNormalMap(*it.node, map, weightsOptional, base, refusals);
+      continue;
+    }
+    const std::vector<Item>* e = it.kind == Item::Kind::Node && it.node->keyword == "[" ? &it.node->items : nullptr;
+    const bool weighted = e && !e->empty() && (*e)[0].kind == Item::Kind::Value && (*e)[0].value.type == Value::Type::Float;
+    if (!e || (!weighted && !weightsOptional) || e->size() < (weighted ? 2u : 1u)) {
+      throw ParseError(it.loc, "a normal_map entry is [value normal]");
+    }
+    Node body;
+    body.keyword = "normal";
+    body.loc = it.loc;
+    body.items.assign(e->begin() + (weighted ? 1 : 0), e->end());
+    map.push_back({weighted ? (*e)[0].value.v[0] : 1.0, nestedNormal(body, base, refusals)});
+  }
+  // POV-Ray reads the entries in order and expects them sorted; a stable sort keeps equal values' order.
+  if (!weightsOptional) {
+    std::stable_sort(map.begin(), map.end(), [](const NormalEntry& a, const NormalEntry& b) { return a.value < b.value; });
+  }
+}
+
 // `normal { [identifier] pattern [amount] modifiers… }` (POV-Ray 3.7 manual, "Normal").
 void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::vector<TransformStep>& steps,
-                     Refusals& refusals) {
+                     const Normal& base, Refusals& refusals) {
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     if (readTransform(n, i, steps, refusals)) continue;
     if (it.kind == Item::Kind::Node) {
       const std::string_view k = it.node->keyword;
-      if (k == "normal" && !(normal.pattern && normal.pattern->blocks() > 0)) {
-        readNormalItems(*it.node, normal, draft, steps, refusals);  // an identifier, modified by what follows
+      const bool blocks = normal.pattern && normal.pattern->blocks() > 0;
+      if (k == "normal" && blocks && normal.map.size() < size_t(normal.pattern->blocks())) {
+        normal.map.push_back({double(normal.map.size()), nestedNormal(*it.node, base, refusals)});
+      } else if (k == "normal") {
+        readNormalItems(*it.node, normal, draft, steps, base, refusals);  // an identifier, modified by what follows
       } else if (k == "slope_map") {
         normal.slopes.clear();
         readSlopeMap(*it.node, normal.slopes);
+      } else if (k == "normal_map") {
+        normal.map.clear();
+        readNormalMap(*it.node, normal.map, normal.average, base, refusals);
       } else {
-        refusals.refuse(it, "normal");  // normal_map, a block pattern's list of normals
+        refusals.refuse(it, "normal");
       }
       continue;
     }
@@ -576,23 +622,30 @@ void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::ve
       continue;
     }
     const std::string_view w = it.word;
-    // POV-Ray bends the normal by formulas of their own for these, not by their values' slope (bumps and dents:
-    // readNormal).
-    if (w == "wrinkles" || w == "ripples" || w == "waves" || w == "facets") {
+    // POV-Ray bends the normal by a formula of its own for facets, not by its value's slope.
+    if (w == "facets") {
       refusals.refuse(it.loc, w);
       continue;
     }
-    if (std::unique_ptr<Pattern> pattern = draft.start(n, i, refusals)) {
+    std::unique_ptr<Pattern> pattern = draft.start(n, i, refusals, normalPatternKind);
+    if (!pattern) pattern = draft.start(n, i, refusals);
+    if (pattern) {
       normal.pattern = std::move(pattern);
+      normal.average = false;
       normal.wave = draft.kind->wave;
-      const Value* amount = valueAfter(n, i);
-      normal.amount = amount ? amount->v[0] : 0.5;
+      // Without an amount the normal keeps the one it has: 0.5, or the #default normal's bump_size.
+      if (const Value* amount = valueAfter(n, i)) normal.amount = amount->v[0];
       continue;
     }
     if (w == "bump_size" || w == "accuracy") {
       const Value* v = valueAfter(n, i);
       if (!v || v->type != Value::Type::Float) throw ParseError(it.loc, "'" + std::string(w) + "' needs a float");
       (w == "bump_size" ? normal.amount : normal.accuracy) = v->v[0];
+    } else if (w == "average") {
+      normal.pattern.reset();
+      normal.map.clear();
+      normal.average = true;
+      draft = PatternDraft{};
     } else if (w == "no_bump_scale") {
       const Value* v = i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value ? valueAfter(n, i) : nullptr;
       normal.bumpScale = v && v->v[0] == 0;
@@ -604,13 +657,21 @@ void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::ve
 
 void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, Refusals& refusals) {
   PatternDraft draft;
-  readNormalItems(n, normal, draft, steps, refusals);
-  const std::string_view kind = draft.kind ? draft.kind->name : "";
-  if (kind == "bumps" || kind == "dents") {
-    const PatternKind special{kind, false, kind == "bumps" ? makeBumpsNormal : makeDentsNormal};
-    normal.pattern = makePattern(special, draft.args);
-  } else {
-    draft.finish(normal.pattern, n.loc, refusals);
+  Normal base = normal;
+  base.pattern.reset();
+  base.map.clear();
+  base.average = false;
+  readNormalItems(n, normal, draft, steps, base, refusals);
+  // A normal's own formula reads its frequency and phase itself (ripples, waves).
+  if (draft.kind && draft.kind == normalPatternKind(draft.kind->name)) {
+    draft.args.frequency = normal.frequency;
+    draft.args.phase = normal.phase;
+    draft.modified = true;
+  }
+  draft.finish(normal.pattern, n.loc, refusals);
+  if (normal.average && normal.map.empty()) throw ParseError(n.loc, "'average' needs a normal_map");
+  if (!normal.average && !normal.map.empty() && !normal.pattern && !refusals.first) {
+    throw ParseError(n.loc, "a normal_map needs a pattern");
   }
 }
 
@@ -620,6 +681,7 @@ FinishTerms finishTerms(const PovFinish& f, const Surface& s) {
   t.emission = f.emission;
   SurfaceExtras extras;
   extras.crand = float(f.crand);
+  extras.reflectionMetallic = float(f.reflectionMetallic);
   // Fresnel with a single value varies from 0 (POV-Ray: `reflection { 1 fresnel }` is a dielectric's mirror).
   if (f.reflectionMin || f.reflectionFresnel) {
     extras.reflectionMin = float(f.reflectionMin.value_or(f.reflectionFresnel ? 0.0 : f.reflection));
@@ -832,7 +894,7 @@ Texture makeTexture(const Surface& s, const std::vector<TransformStep>& after) {
     auto p = std::make_shared<Pigment>(layer.pigment);
     placeTransforms(*p, layer.steps, layer.warps);
     std::shared_ptr<Normal> normal;
-    if (layer.normal && layer.normal->pattern) {
+    if (layer.normal && (layer.normal->pattern || layer.normal->average)) {
       normal = std::make_shared<Normal>(*layer.normal);
       normal->fromTexture = glm::inverse(composeTransforms<double>(layer.normalSteps));
     }

@@ -188,15 +188,17 @@ sphere { 0, 1 interior { fade_distance 2 } }
   CHECK(scene("sphere { 0, 1 finish { crand 0.05 } }\n").objects[0].material.extras->crand == 0.05f);
 }
 
-TEST_CASE("povray scene: a reflection block: one value, two that vary with the angle, falloff and fresnel",
+TEST_CASE("povray scene: a reflection block: one value, two that vary with the angle, falloff, fresnel, metallic",
           "[povray]") {
   const SceneDesc s = scene(R"(
 sphere { 0, 1 finish { reflection { 0.3 } } }
 sphere { 0, 1 finish { reflection { 0.2, 0.8 falloff 3 } } }
 sphere { 0, 1 finish { reflection { 1 fresnel } } interior { ior 1.5 } }
 sphere { 0, 1 finish { reflection { 0.1, 1 fresnel on exponent 1 } } }
+sphere { 0, 1 finish { reflection { 0.5 metallic } } }
+sphere { 0, 1 finish { reflection { 0.5 metallic 0.25 } } }
 )");
-  REQUIRE(s.objects.size() == 4);
+  REQUIRE(s.objects.size() == 6);
   CHECK(s.objects[0].material.reflection == 0.3f);
   CHECK(s.objects[0].material.extras->reflectionFalloff == 0);  // constant
   CHECK(s.objects[1].material.extras->reflectionMin == 0.2f);
@@ -208,8 +210,9 @@ sphere { 0, 1 finish { reflection { 0.1, 1 fresnel on exponent 1 } } }
   CHECK(s.objects[3].material.extras->reflectionMin == 0.1f);
   CHECK(failure("sphere { 0, 1 finish { reflection { 0.5 exponent 2 } } }\n") ==
         "scene.pov:3:41: error: 'exponent' is not supported yet");
-  CHECK(failure("sphere { 0, 1 finish { reflection { 0.5 metallic } } }\n") ==
-        "scene.pov:3:41: error: 'metallic' is not supported yet");
+  CHECK(s.objects[0].material.extras->reflectionMetallic == 0);
+  CHECK(s.objects[4].material.extras->reflectionMetallic == 1);  // the value is optional
+  CHECK(s.objects[5].material.extras->reflectionMetallic == 0.25f);
 }
 
 TEST_CASE("povray scene: textures take the transforms after them, at every level, and pass to CSG children",
@@ -281,8 +284,11 @@ plane { y, 0 pigment { White } normal { bumps 1 } }
 plane { y, 0 pigment { White } normal { bumps 0.6 scale 0.3 } }
 plane { y, 0 pigment { White } normal { dents 1 } }
 plane { y, 0 pigment { White } normal { bumps 1 turbulence 0.5 } }
+plane { y, 0 pigment { White } normal { ripples 0.5 frequency 3 phase 0.2 } }
+plane { y, 0 pigment { White } normal { gradient x normal_map { [0 gradient z 2] [1 gradient -z 2] } } }
+plane { y, 0 pigment { White } normal { average normal_map { [3 gradient x 6] [gradient z 6] } } }
 )");
-  REQUIRE(s.objects.size() == 13);
+  REQUIRE(s.objects.size() == 16);
   const glm::dvec3 up(0, 1, 0), left(-1, 1, 0), right(1, 1, 0), p(0.5, 0, 0.45);
   CHECK(lit(s, 0, p, up) == Approx(0.9978).margin(1e-4));
   CHECK(lit(s, 0, p, left) == Approx(0.7526).margin(1e-4));
@@ -307,11 +313,21 @@ plane { y, 0 pigment { White } normal { bumps 1 turbulence 0.5 } }
   CHECK(lit(s, 10, {0.95, 0, 0.45}, right) == Approx(0.6567).margin(1e-4));
   CHECK(lit(s, 11, {0.05, 0, 0.45}, up) == Approx(0.9992).margin(1e-4));
   CHECK(lit(s, 11, {0.05, 0, 0.45}, glm::dvec3(0, 1, 1)) == Approx(0.6777).margin(1e-4));
-  CHECK(failure("plane { y, 0 normal { wrinkles 0.4 } }\n") == "scene.pov:3:23: error: 'wrinkles' is not supported yet");
+  CHECK(failure("plane { y, 0 normal { facets 0.4 } }\n") == "scene.pov:3:23: error: 'facets' is not supported yet");
   CHECK(lit(s, 12, {0.95, 0, 0.45}, up) == Approx(0.7177).margin(1e-4));
   CHECK(lit(s, 12, {0.95, 0, 0.45}, right) == Approx(0.0908).margin(1e-4));
-  CHECK(failure("plane { y, 0 normal { gradient x normal_map { [0 gradient y] } } }\n") ==
-        "scene.pov:3:34: error: 'normal_map' is not supported yet");
+  // frequency and phase reach ripples' own formula (surface/test_normal.cpp).
+  CHECK(lit(s, 13, {-1.3125, 0, 1.0625}, up) == Approx(0.9986).margin(1e-4));
+  CHECK(lit(s, 13, {-1.3125, 0, 1.0625}, right) == Approx(0.6929).margin(1e-4));
+  // A normal_map and an average (surface/test_normal.cpp), from POV-Ray's renders; an average's weight is 1
+  // when left out.
+  CHECK(lit(s, 14, {0.125, 0, 0.5}, up) == Approx(0.98058).margin(1e-4));
+  CHECK(lit(s, 15, {0.5, 0, 0.5}, glm::dvec3(0, 1, 1)) == Approx((0.8451514 - 0.1690221) / std::sqrt(2)).margin(1e-4));
+  CHECK(failure("plane { y, 0 normal { gradient x normal_map { gradient y } } }\n") ==
+        "scene.pov:3:47: error: a normal_map entry is [value normal]");
+  CHECK(failure("plane { y, 0 normal { average } }\n") == "scene.pov:3:14: error: 'average' needs a normal_map");
+  CHECK(failure("plane { y, 0 normal { gradient x bump_map { png \"a.png\" } } }\n") ==
+        "scene.pov:3:34: error: 'bump_map' is not supported yet");
   CHECK(failure("plane { y, 0 normal { gradient x slope_map { [0] } } }\n") ==
         "scene.pov:3:46: error: a slope_map entry is [value, <height, slope>]");
 }

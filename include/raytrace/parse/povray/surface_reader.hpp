@@ -51,9 +51,10 @@ struct PovFinish {
   Color ambient{0.1f};
   Color emission{0};
   double crand = 0;
-  // A reflection block's minimum (unset: `reflection` at every angle), falloff and fresnel (Material).
+  // A reflection block's minimum (unset: `reflection` at every angle), falloff, metallic and fresnel (Material).
   std::optional<double> reflectionMin;
   double reflectionFalloff = 1;
+  double reflectionMetallic = 0;
   bool reflectionFresnel = false;
   double diffuse = 0.6, phong = 0, phongSize = 40, specular = 0, roughness = 0.05, reflection = 0, brilliance = 1, metallic = 0;
 };
