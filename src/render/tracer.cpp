@@ -134,7 +134,9 @@ Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRec
       ++counts_.eye;
       raysLeft_ = treeRays_ - 1;
       sampleRaysLeft_ = kSampleRays - 1;
-      sum += trace(camera.sampleRay(x, y, i, j, n), RayRecord::Kind::Primary, path, record).color;
+      const Ray<T> ray = camera.sampleRay(x, y, i, j, n);
+      if (camera.hasBlanks() && camera.blank(ray)) continue;  // black, as POV-Ray leaves it
+      sum += trace(ray, RayRecord::Kind::Primary, path, record).color;
     }
   }
   gathers_ = nullptr;
@@ -173,7 +175,17 @@ template <class T> const Color* Tracer<T>::tile(const Camera<T>& camera, int x0,
     }
   }
   counts_.eye += count;
+  // A projection's blank points are traced along the view and then made black, as POV-Ray leaves them.
+  blanks_.clear();
+  if (camera.hasBlanks()) {
+    for (size_t s = 0; s < count; ++s) {
+      if (!Camera<T>::blank(eye.rays[s])) continue;
+      blanks_.push_back(s);
+      eye.rays[s].dir = Vec3<T>(0, 0, 1);  // any direction: its colour is replaced
+    }
+  }
   traceBatch(eye, int(count), RayRecord::Kind::Primary);
+  for (size_t s : blanks_) eye.colors[s] = Color(0);
   // Each pixel's average in place: pixel p's samples start at p·n² ≥ p.
   std::vector<Color>& colors = eye.colors;
   const size_t pixels = count / size_t(n * n);

@@ -170,6 +170,7 @@ template <class T> class Tracer {
   bool sampledLights_ = false;   // some light is an area or parallel light (Light::sampled)
   bool filteredShadows_ = false;  // shadow rays pass transparent surfaces (POV-Ray, and some surface lets light through)
   std::vector<Batch> batches_;                 // [0] tile()'s eye rays, [1 + b] the gather rays at bounce b
+  std::vector<size_t> blanks_;                 // tile()'s eye rays at the projection's blank points
   RayCounts counts_;
   std::vector<GatherSummary>* gathers_ = nullptr;  // pixel()'s per-bounce summary while it is asked for
   const IrradianceCache<T>* cache_ = nullptr;
