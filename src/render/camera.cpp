@@ -1,5 +1,6 @@
 #include "raytrace/render/camera.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "raytrace/util/error.hpp"
@@ -23,6 +24,10 @@ Camera<T>::Camera(const CameraDesc& desc, int width, int height)
       projection_(desc.projection->ray),
       frame_{desc.location, desc.rightFollowsImage ? desc.right * (double(width) / height) : desc.right, desc.up,
              glm::normalize(desc.lookAt - desc.location), desc.directionLength, desc.angle, desc.verticalAngle},
+      blur_(desc.focalBlur),
+      // The lens's radius is a quarter of the aperture: measured from the discs POV-Ray blurs points into.
+      lensRadius_(T(desc.focalBlur.aperture / 4)),
+      focalDistance_(T(glm::dot(desc.focalBlur.focalPoint - desc.location, glm::normalize(desc.lookAt - desc.location)))),
       offset_(desc.pixelOffset),
       width_(width),
       height_(height) {
@@ -45,6 +50,18 @@ Camera<T>::Camera(const CameraDesc& desc, int width, int height)
     }
   }
   if (problem) throw ParseError(desc.loc, std::string("the camera gives no image: ") + problem);
+  if (!(desc.focalBlur.aperture > 0)) blur_.maxSamples = 0;
+  if (blur_.minSamples <= 0) blur_.minSamples = blur_.maxSamples < 7 ? 4 : 7;
+  blur_.minSamples = std::min(blur_.minSamples, blur_.maxSamples);
+}
+
+template <class T> Ray<T> Camera<T>::throughLens(const Ray<T>& pinhole, glm::vec2 lens) const {
+  // Uniform on the lens's disc: r = R·√u, φ = 2πv.
+  const T r = lensRadius_ * std::sqrt(T(lens.x)), phi = T(2 * M_PI) * T(lens.y);
+  const Vec3<T> across = glm::normalize(right_), up = glm::normalize(up_);
+  const Vec3<T> from = pinhole.origin + r * (std::cos(phi) * across + std::sin(phi) * up);
+  const Vec3<T> focus = pinhole.origin + pinhole.dir * (focalDistance_ / glm::dot(pinhole.dir, forward_));
+  return Ray<T>{from, glm::normalize(focus - from)};
 }
 
 template <class T> Ray<T> Camera<T>::projected(T us, T vs) const {

@@ -122,6 +122,7 @@ template <class T> bool Tracer<T>::matters(float weight, int depth) {
 template <class T>
 Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees,
                        std::vector<GatherSummary>* gathers) {
+  if (camera.blurred()) return blurredPixel(camera, x, y);
   const int n = options_.samples;
   if (gathers) gathers->assign(size_t(options_.gi.enabled ? options_.gi.bounceCount() : 0), GatherSummary{});
   gathers_ = gathers;
@@ -150,6 +151,14 @@ template <class T> Color Tracer<T>::finished(const Color& c) const {
 }
 
 template <class T> const Color* Tracer<T>::tile(const Camera<T>& camera, int x0, int y0, int x1, int y1) {
+  if (camera.blurred()) {
+    std::vector<Color>& colors = batches_[0].colors;
+    colors.clear();
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) colors.push_back(blurredPixel(camera, x, y));
+    }
+    return colors.data();
+  }
   const int n = options_.samples;
   Batch& eye = batches_[0];  // in pixel() order: pixel by pixel, row by row, then sample by sample
   const size_t count = size_t(x1 - x0) * size_t(y1 - y0) * size_t(n * n);

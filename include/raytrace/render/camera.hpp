@@ -37,6 +37,13 @@ template <class T> class Camera {
                T(y) + offset_.y + ((T(j) + T(0.5)) / T(n) - T(0.5)));
   }
 
+  // Focal blur (POV-Ray's aperture; manual, "Focal Blur"): whether it is on, its samples, and the ray from
+  // a point of the lens (`lens` uniform in the unit square) through where `pinhole` meets the plane of focus,
+  // the plane through focal_point facing the view.
+  bool blurred() const { return blur_.maxSamples > 0; }
+  const CameraDesc::FocalBlur& focalBlur() const { return blur_; }
+  Ray<T> throughLens(const Ray<T>& pinhole, glm::vec2 lens) const;
+
   int width() const { return width_; }
   const Vec3<T>& eye() const { return origin_; }
   // The width of a pixel at unit distance from the eye, at the picture's centre.
@@ -52,6 +59,8 @@ template <class T> class Camera {
   bool perspective_, hasBlanks_;
   ProjectionRay projection_;
   ProjectionFrame frame_;
+  CameraDesc::FocalBlur blur_;
+  T lensRadius_, focalDistance_;
   glm::vec<2, T, glm::defaultp> offset_;
   int width_, height_;
 };

@@ -39,6 +39,10 @@ template <class T> class Tracer {
   // rays of each hit. They are the tracer's own memory, valid until its next call.
   const Color* tile(const Camera<T>& camera, int x0, int y0, int x1, int y1);
 
+  // The colour of pixel (x, y) under a camera's focal blur (render/focal_blur.cpp): lens samples until
+  // POV-Ray's confidence test holds or the camera's most are taken.
+  Color blurredPixel(const Camera<T>& camera, int x, int y);
+
   // With --gi-cache the first bounce's gathered light is looked up in `cache` (docs/gi.md), which must outlive
   // the tracer; a point no record covers gathers as without it and, if `made` is given, appends its record
   // there. Null: gather everywhere.

@@ -32,6 +32,13 @@ struct CameraDesc {
   const ProjectionKind* projection = &perspectiveProjection();
   // Radians, for the projections that take them; the direction's length as written (panoramic reads it).
   double angle = 0, verticalAngle = 0, directionLength = 1;
+  // POV-Ray's focal blur (manual, "Focal Blur"): on when aperture and maxSamples are both positive.
+  struct FocalBlur {
+    double aperture = 0;
+    int minSamples = 0, maxSamples = 0;  // minSamples 0: POV-Ray's default, 4 below 7 samples and 7 from there
+    glm::dvec3 focalPoint{0};
+    double confidence = 0.9, variance = 1.0 / 128;
+  } focalBlur;
   SourceLoc loc;  // the `camera` statement (POV) or the `fov` command (.cli) that set it, for messages
 };
 

@@ -465,6 +465,7 @@ class Builder {
     const ProjectionKind* projection = &perspectiveProjection();
     bool angleGiven = false, sizeGiven = false;
     std::vector<TransformStep> steps;
+    CameraDesc::FocalBlur blur;
   };
 
   // POV-Ray's camera: defaults, then angle sets the direction's length, look_at turns direction, right and up
@@ -512,6 +513,8 @@ class Builder {
     c.angle = glm::radians(k.angle.value_or(k.projection->defaultAngle));
     c.verticalAngle = spherical ? glm::radians(k.verticalAngle.value_or(glm::degrees(c.angle) / 2))
                                 : c.angle * glm::length(up) / glm::length(right);
+    c.focalBlur = k.blur;
+    c.focalBlur.focalPoint = glm::dvec3(m * glm::dvec4(k.blur.focalPoint, 1));
     c.loc = n.loc;
   }
 
@@ -552,6 +555,18 @@ class Builder {
       else if (w == "right") k.right = vec3(*v), k.sizeGiven = true;
       else if (w == "sky") k.sky = vec3(*v);
       else if (w == "look_at") k.lookAt = vec3(*v);
+      else if (w == "aperture") k.blur.aperture = v->v[0];
+      else if (w == "focal_point") k.blur.focalPoint = vec3(*v);
+      else if (w == "confidence") k.blur.confidence = v->v[0];
+      else if (w == "variance") k.blur.variance = v->v[0];
+      else if (w == "blur_samples") {
+        // `blur_samples MIN, MAX` or `blur_samples MAX`.
+        k.blur.maxSamples = int(v->v[0]);
+        if (i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value && n.items[i + 1].value.type == Value::Type::Float) {
+          k.blur.minSamples = k.blur.maxSamples;
+          k.blur.maxSamples = int(valueAfter(n, i)->v[0]);
+        }
+      }
       else if (w == "angle") {
         k.angle = v->v[0];
         // `angle H, V` of a spherical camera.
