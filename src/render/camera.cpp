@@ -1,5 +1,6 @@
 #include "raytrace/render/camera.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "raytrace/util/error.hpp"
@@ -18,9 +19,15 @@ Camera<T>::Camera(const CameraDesc& desc, int width, int height)
       right_(desc.rightFollowsImage ? desc.right * (double(width) / height) : desc.right),
       up_(desc.up),
       forward_(glm::normalize(Vec3<T>(desc.lookAt - desc.location))),
-      projection_(desc.projection),
-      angle_(T(desc.angle)),
-      verticalAngle_(T(desc.verticalAngle)),
+      perspective_(desc.projection == &perspectiveProjection()),
+      hasBlanks_(desc.projection->blanks),
+      projection_(desc.projection->ray),
+      frame_{desc.location, desc.rightFollowsImage ? desc.right * (double(width) / height) : desc.right, desc.up,
+             glm::normalize(desc.lookAt - desc.location), desc.directionLength, desc.angle, desc.verticalAngle},
+      blur_(desc.focalBlur),
+      // The lens's radius is a quarter of the aperture: measured from the discs POV-Ray blurs points into.
+      lensRadius_(T(desc.focalBlur.aperture / 4)),
+      focalDistance_(T(glm::dot(desc.focalBlur.focalPoint - desc.location, glm::normalize(desc.lookAt - desc.location)))),
       offset_(desc.pixelOffset),
       width_(width),
       height_(height) {
@@ -43,28 +50,24 @@ Camera<T>::Camera(const CameraDesc& desc, int width, int height)
     }
   }
   if (problem) throw ParseError(desc.loc, std::string("the camera gives no image: ") + problem);
+  if (!(desc.focalBlur.aperture > 0)) blur_.maxSamples = 0;
+  if (blur_.minSamples <= 0) blur_.minSamples = blur_.maxSamples < 7 ? 4 : 7;
+  blur_.minSamples = std::min(blur_.minSamples, blur_.maxSamples);
+}
+
+template <class T> Ray<T> Camera<T>::throughLens(const Ray<T>& pinhole, glm::vec2 lens) const {
+  // Uniform on the lens's disc: r = R·√u, φ = 2πv.
+  const T r = lensRadius_ * std::sqrt(T(lens.x)), phi = T(2 * M_PI) * T(lens.y);
+  const Vec3<T> across = glm::normalize(right_), up = glm::normalize(up_);
+  const Vec3<T> from = pinhole.origin + r * (std::cos(phi) * across + std::sin(phi) * up);
+  const Vec3<T> focus = pinhole.origin + pinhole.dir * (focalDistance_ / glm::dot(pinhole.dir, forward_));
+  return Ray<T>{from, glm::normalize(focus - from)};
 }
 
 template <class T> Ray<T> Camera<T>::projected(T us, T vs) const {
-  using P = CameraDesc::Projection;
-  if (projection_ == P::Orthographic) return Ray<T>{origin_ + us * right_ + vs * up_, forward_};
-  const Vec3<T> r = glm::normalize(right_), u = glm::normalize(up_);
-  if (projection_ == P::UltraWideAngle || projection_ == P::Spherical) {
-    // Angles across and up; fitted to POV-Ray's pictures (tests/render/test_camera.cpp).
-    const T a = us * angle_, b = vs * verticalAngle_;
-    const T across = projection_ == P::Spherical ? std::sin(a) * std::cos(b) : std::sin(a);
-    return Ray<T>{origin_, glm::normalize(across * r + std::sin(b) * u + std::cos(a) * std::cos(b) * forward_)};
-  }
-  // The cylinders: an angle across the picture turns the view about the cylinder's axis (up for 1 and 3,
-  // right for 2 and 4); along the axis the ray climbs (1, 2) or its origin moves (3, 4). Fitted to POV-Ray's
-  // pictures (tests/render/test_camera.cpp).
-  const bool vertical = projection_ == P::Cylinder1 || projection_ == P::Cylinder3;
-  const bool moving = projection_ == P::Cylinder3 || projection_ == P::Cylinder4;
-  const Vec3<T> across = vertical ? r : u, axis = vertical ? up_ : right_;
-  const T turn = (vertical ? us : vs) * angle_, along = vertical ? vs : us;
-  const Vec3<T> turned = std::cos(turn) * forward_ + std::sin(turn) * across;
-  if (moving) return Ray<T>{origin_ + along * axis, turned};
-  return Ray<T>{origin_, glm::normalize(turned + along * axis)};
+  const std::optional<EyeRay> eye = projection_(frame_, double(us), double(vs));
+  if (!eye) return Ray<T>{origin_, Vec3<T>(0)};
+  return Ray<T>{Vec3<T>(eye->origin), Vec3<T>(glm::normalize(eye->dir))};
 }
 
 template class Camera<float>;

@@ -122,6 +122,7 @@ template <class T> bool Tracer<T>::matters(float weight, int depth) {
 template <class T>
 Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees,
                        std::vector<GatherSummary>* gathers) {
+  if (camera.blurred()) return blurredPixel(camera, x, y);
   const int n = options_.samples;
   if (gathers) gathers->assign(size_t(options_.gi.enabled ? options_.gi.bounceCount() : 0), GatherSummary{});
   gathers_ = gathers;
@@ -134,7 +135,9 @@ Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRec
       ++counts_.eye;
       raysLeft_ = treeRays_ - 1;
       sampleRaysLeft_ = kSampleRays - 1;
-      sum += trace(camera.sampleRay(x, y, i, j, n), RayRecord::Kind::Primary, path, record).color;
+      const Ray<T> ray = camera.sampleRay(x, y, i, j, n);
+      if (camera.hasBlanks() && camera.blank(ray)) continue;  // black, as POV-Ray leaves it
+      sum += trace(ray, RayRecord::Kind::Primary, path, record).color;
     }
   }
   gathers_ = nullptr;
@@ -147,6 +150,14 @@ template <class T> Color Tracer<T>::raised(const Color& c) const {
 }
 
 template <class T> const Color* Tracer<T>::tile(const Camera<T>& camera, int x0, int y0, int x1, int y1) {
+  if (camera.blurred()) {
+    std::vector<Color>& colors = batches_[0].colors;
+    colors.clear();
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) colors.push_back(blurredPixel(camera, x, y));
+    }
+    return colors.data();
+  }
   const int n = options_.samples;
   Batch& eye = batches_[0];  // in pixel() order: pixel by pixel, row by row, then sample by sample
   const size_t count = size_t(x1 - x0) * size_t(y1 - y0) * size_t(n * n);
@@ -172,7 +183,17 @@ template <class T> const Color* Tracer<T>::tile(const Camera<T>& camera, int x0,
     }
   }
   counts_.eye += count;
+  // A projection's blank points are traced along the view and then made black, as POV-Ray leaves them.
+  blanks_.clear();
+  if (camera.hasBlanks()) {
+    for (size_t s = 0; s < count; ++s) {
+      if (!Camera<T>::blank(eye.rays[s])) continue;
+      blanks_.push_back(s);
+      eye.rays[s].dir = Vec3<T>(0, 0, 1);  // any direction: its colour is replaced
+    }
+  }
   traceBatch(eye, int(count), RayRecord::Kind::Primary);
+  for (size_t s : blanks_) eye.colors[s] = Color(0);
   // Each pixel's average in place: pixel p's samples start at p·n² ≥ p.
   std::vector<Color>& colors = eye.colors;
   const size_t pixels = count / size_t(n * n);

@@ -144,7 +144,7 @@ TEMPLATE_TEST_CASE("camera: an orthographic camera's rays are parallel, from the
                    float, double) {
   rt::CameraDesc c = camera({0, 0, 14}, {4, 0, 0});
   c.up = {0, 3, 0};
-  c.projection = rt::CameraDesc::Projection::Orthographic;
+  c.projection = rt::projectionNamed("orthographic");
   const rt::Camera<TestType> cam(c, 40, 30);
   // Pixel (0, 0)'s centre is (0.5, 0.5) pixels from the lower-left corner: Us = −½ + 0.5/40.
   const rt::Ray<TestType> corner = cam.pixelRay(0, 0);
@@ -162,16 +162,13 @@ TEMPLATE_TEST_CASE("camera: POV-Ray's cylinder projections, against where POV-Ra
   // back from its pictures of a plane coloured by x and by y, to about ±0.25): type 1, pixel (0, 0) meets
   // (−9.01, 6.06); type 2, (−8.33, 8.63); type 3, (−9.01, 0.36); type 4, (−0.59, 8.63).
   struct Case {
-    rt::CameraDesc::Projection projection;
+    int type;
     double x, y;
-  } cases[] = {{rt::CameraDesc::Projection::Cylinder1, -9.01, 6.06},
-               {rt::CameraDesc::Projection::Cylinder2, -8.33, 8.63},
-               {rt::CameraDesc::Projection::Cylinder3, -9.01, 0.36},
-               {rt::CameraDesc::Projection::Cylinder4, -0.59, 8.63}};
+  } cases[] = {{1, -9.01, 6.06}, {2, -8.33, 8.63}, {3, -9.01, 0.36}, {4, -0.59, 8.63}};
   for (const Case& k : cases) {
     rt::CameraDesc c = camera({0, 0, 0}, {4.0 / 3, 0, 0});
     c.lookAt = {0, 0, 1};
-    c.projection = k.projection;
+    c.projection = rt::projectionNamed("cylinder", k.type);
     c.angle = M_PI / 2;
     const rt::Camera<TestType> cam(c, 16, 12);
     // Pixel (0, 0) of the picture's top row is row 11 counted upward.
@@ -187,14 +184,13 @@ TEMPLATE_TEST_CASE("camera: POV-Ray's ultra wide angle and spherical projections
   // As above; POV-Ray's points for pixel (0, 0): ultra wide angle (−10.62, 8.04), spherical with angle 90
   // (and so 45 up) (−9.01, 4.96).
   struct Case {
-    rt::CameraDesc::Projection projection;
+    const char* projection;
     double vertical, x, y;
-  } cases[] = {{rt::CameraDesc::Projection::UltraWideAngle, 0.75 * M_PI / 2, -10.62, 8.04},
-               {rt::CameraDesc::Projection::Spherical, M_PI / 4, -9.01, 4.96}};
+  } cases[] = {{"ultra_wide_angle", 0.75 * M_PI / 2, -10.62, 8.04}, {"spherical", M_PI / 4, -9.01, 4.96}};
   for (const Case& k : cases) {
     rt::CameraDesc c = camera({0, 0, 0}, {4.0 / 3, 0, 0});
     c.lookAt = {0, 0, 1};
-    c.projection = k.projection;
+    c.projection = rt::projectionNamed(k.projection);
     c.angle = M_PI / 2;
     c.verticalAngle = k.vertical;
     const rt::Ray<TestType> ray = rt::Camera<TestType>(c, 16, 12).pixelRay(0, 11);
@@ -202,4 +198,63 @@ TEMPLATE_TEST_CASE("camera: POV-Ray's ultra wide angle and spherical projections
     CHECK(t * double(ray.dir.x) == Approx(k.x).margin(0.25));
     CHECK(t * double(ray.dir.y) == Approx(k.y).margin(0.25));
   }
+}
+
+TEMPLATE_TEST_CASE("camera: POV-Ray's fisheye, omnimax and panoramic projections, against POV-Ray's rays", "", float,
+                   double) {
+  // A camera at the origin looking along +z, right 4/3, up 1, 16×12 pixels. POV-Ray's directions, read from
+  // its 16-bit pictures of a unit sphere round the camera coloured by the direction (to about ±3e-5);
+  // pixels counted from the picture's top-left corner.
+  struct Case {
+    const char* projection;
+    double angle;
+    int x, row;
+    glm::dvec3 dir;
+  } cases[] = {
+      {"fisheye", 180, 8, 1, {0.10234, 0.92096, 0.37597}},
+      {"fisheye", 180, 2, 6, {-0.98813, -0.08983, 0.12465}},
+      {"fisheye", 180, 4, 3, {-0.73458, 0.52468, 0.43023}},
+      {"fisheye", 270, 8, 1, {0.10808, 0.97263, -0.20574}},
+      {"fisheye", 270, 4, 3, {-0.80804, 0.57717, -0.118}},
+      {"omnimax", 90, 8, 6, {0.09062, 0.21761, 0.97183}},
+      {"omnimax", 90, 0, 6, {-0.987, 0.15801, 0.02971}},
+      {"omnimax", 90, 8, 10, {0.08708, -0.48754, 0.86874}},
+      {"omnimax", 90, 4, 3, {-0.54363, 0.65246, 0.52798}},
+      {"panoramic", 90, 0, 0, {-0.17208, 0.98502, 0.01271}},
+      {"panoramic", 90, 0, 6, {-0.99243, -0.09847, 0.07332}},
+      {"panoramic", 90, 4, 3, {-0.61337, 0.55642, 0.56054}},
+      {"panoramic", 90, 12, 6, {0.84662, -0.10814, 0.52111}},
+  };
+  for (const Case& k : cases) {
+    CAPTURE(k.projection, k.angle, k.x, k.row);
+    rt::CameraDesc c = camera({0, 0, 0}, {4.0 / 3, 0, 0});
+    c.lookAt = {0, 0, 1};
+    c.projection = rt::projectionNamed(k.projection);
+    c.angle = glm::radians(k.angle);
+    const rt::Ray<TestType> ray = rt::Camera<TestType>(c, 16, 12).pixelRay(k.x, 11 - k.row);
+    for (int i = 0; i < 3; ++i) CHECK(double(ray.dir[i]) == Approx(k.dir[i]).margin(1e-4));
+  }
+}
+
+TEMPLATE_TEST_CASE("camera: a fisheye draws nothing outside its circle, an omnimax nothing below its dome", "", float,
+                   double) {
+  rt::CameraDesc c = camera({0, 0, 0}, {4.0 / 3, 0, 0});
+  c.lookAt = {0, 0, 1};
+  c.angle = M_PI;
+  c.projection = rt::projectionNamed("fisheye");
+  const rt::Camera<TestType> fisheye(c, 16, 12);
+  CHECK(fisheye.hasBlanks());
+  // POV-Ray's picture is black at (0, 0) and (0, 6) (x = −0.9375·4/3 is outside the circle) and drawn at (2, 6).
+  CHECK(fisheye.blank(fisheye.pixelRay(0, 11)));
+  CHECK(fisheye.blank(fisheye.pixelRay(0, 5)));
+  CHECK_FALSE(fisheye.blank(fisheye.pixelRay(2, 5)));
+  c.projection = rt::projectionNamed("omnimax");
+  const rt::Camera<TestType> omnimax(c, 16, 12);
+  // POV-Ray's picture is black at (15, 11), outside the circle, and at (4, 11), inside it but more than 45°
+  // below the view; it is drawn at (5, 11).
+  CHECK(omnimax.blank(omnimax.pixelRay(15, 0)));
+  CHECK(omnimax.blank(omnimax.pixelRay(4, 0)));
+  CHECK_FALSE(omnimax.blank(omnimax.pixelRay(5, 0)));
+  c.projection = rt::projectionNamed("panoramic");
+  CHECK_FALSE(rt::Camera<TestType>(c, 16, 12).hasBlanks());
 }

@@ -18,11 +18,16 @@ template <class T> class Camera {
   Ray<T> ray(T px, T py) const {
     const T us = T(-0.5) + px / T(width_);
     const T vs = T(-0.5) + py / T(height_);
-    if (projection_ == CameraDesc::Projection::Perspective) {
+    if (perspective_) {
       return Ray<T>{origin_, glm::normalize(us * right_ + vs * up_ + forward_)};
     }
     return projected(us, vs);
   }
+  // Whether a ray from ray() is one of the picture's points where the projection draws nothing (outside a
+  // fisheye's circle): its direction is zero, and POV-Ray leaves its pixel black.
+  static bool blank(const Ray<T>& ray) { return ray.dir == Vec3<T>(0); }
+  // Whether any of the picture's points can be blank.
+  bool hasBlanks() const { return hasBlanks_; }
   // The eye ray of pixel (x, y), through the pixel's own sample point (CameraDesc::pixelOffset).
   Ray<T> pixelRay(int x, int y) const { return sampleRay(x, y, 0, 0, 1); }
   // Sub-sample (i, j) of an n × n grid over pixel (x, y), centred on the pixel's sample point (§c.12: the
@@ -35,6 +40,12 @@ template <class T> class Camera {
   // The eye ray through the point (dx, dy) pixels away from pixel (x, y)'s sample point: adaptive
   // anti-aliasing's corners and jittered sub-samples (render/antialias).
   Ray<T> offsetRay(int x, int y, T dx, T dy) const { return ray(T(x) + offset_.x + dx, T(y) + offset_.y + dy); }
+  // Focal blur (POV-Ray's aperture; manual, "Focal Blur"): whether it is on, its samples, and the ray from
+  // a point of the lens (`lens` uniform in the unit square) through where `pinhole` meets the plane of focus,
+  // the plane through focal_point facing the view.
+  bool blurred() const { return blur_.maxSamples > 0; }
+  const CameraDesc::FocalBlur& focalBlur() const { return blur_; }
+  Ray<T> throughLens(const Ray<T>& pinhole, glm::vec2 lens) const;
 
   int width() const { return width_; }
   const Vec3<T>& eye() const { return origin_; }
@@ -43,13 +54,16 @@ template <class T> class Camera {
   int height() const { return height_; }
 
  private:
-  // The eye ray of the projections other than the perspective one; out of the way of the perspective one,
-  // which every course scene takes.
+  // The eye ray of the projections other than the perspective one (scene/projection.hpp), in double; out of
+  // the way of the perspective one, which every course scene takes.
   [[gnu::cold]] Ray<T> projected(T us, T vs) const;
 
   Vec3<T> origin_, right_, up_, forward_;
-  CameraDesc::Projection projection_;
-  T angle_, verticalAngle_;
+  bool perspective_, hasBlanks_;
+  ProjectionRay projection_;
+  ProjectionFrame frame_;
+  CameraDesc::FocalBlur blur_;
+  T lensRadius_, focalDistance_;
   glm::vec<2, T, glm::defaultp> offset_;
   int width_, height_;
 };

@@ -46,6 +46,10 @@ template <class T> class Tracer {
   // finishes every pixel's first ray to compare it.
   Color finished(const Color& c) const { return conventions_.gamma == 1 ? c : raised(c); }
 
+  // The colour of pixel (x, y) under a camera's focal blur (render/focal_blur.cpp): lens samples until
+  // POV-Ray's confidence test holds or the camera's most are taken.
+  Color blurredPixel(const Camera<T>& camera, int x, int y);
+
   // With --gi-cache the first bounce's gathered light is looked up in `cache` (docs/gi.md), which must outlive
   // the tracer; a point no record covers gathers as without it and, if `made` is given, appends its record
   // there. Null: gather everywhere.
@@ -181,6 +185,7 @@ template <class T> class Tracer {
   bool sampledLights_ = false;   // some light is an area or parallel light (Light::sampled)
   bool filteredShadows_ = false;  // shadow rays pass transparent surfaces (POV-Ray, and some surface lets light through)
   std::vector<Batch> batches_;                 // [0] tile()'s eye rays, [1 + b] the gather rays at bounce b
+  std::vector<size_t> blanks_;                 // tile()'s eye rays at the projection's blank points
   RayCounts counts_;
   std::vector<GatherSummary>* gathers_ = nullptr;  // pixel()'s per-bounce summary while it is asked for
   const IrradianceCache<T>* cache_ = nullptr;

@@ -11,6 +11,7 @@
 
 #include "raytrace/util/error.hpp"
 #include "raytrace/scene/radiosity.hpp"
+#include "raytrace/scene/projection.hpp"
 #include "raytrace/shapes/shape_desc.hpp"
 #include "raytrace/surface/environment.hpp"
 #include "raytrace/surface/material.hpp"
@@ -28,19 +29,17 @@ struct CameraDesc {
   // .cli: `right` is written for a square image and is stretched by width/height when the image is made, so
   // pixels stay square at any size and `fov` stays the vertical angle (docs/reference/cs3451.md §A.4 leaves this open).
   bool rightFollowsImage = false;
-  // How a picture's point becomes a ray (docs/povray-language.md, "What is drawn, and what is refused").
-  // Perspective: through the point of the picture plane one unit ahead. Orthographic (POV-Ray): parallel rays
-  // along the view, from the picture's point on the plane through `location`; right and up are the picture's
-  // size. Cylinder 1–4
-  // (POV-Ray): the picture wrapped round a vertical (1, 3) or horizontal (2, 4) cylinder over `angle`, seen
-  // from the location (1, 2) or from points along the axis (3, 4); right and up as written. Ultra wide angle
-  // and spherical (POV-Ray): the picture's sides are angles across and up, the ray on a box-like or a
-  // spherical grid of directions.
-  enum class Projection : unsigned char {
-    Perspective, Orthographic, Cylinder1, Cylinder2, Cylinder3, Cylinder4, UltraWideAngle, Spherical
-  };
-  Projection projection = Projection::Perspective;
-  double angle = 0, verticalAngle = 0;  // radians, for the cylinder, ultra wide angle and spherical projections
+  // How a picture's point becomes a ray: one of projectionKinds() (scene/projection.hpp).
+  const ProjectionKind* projection = &perspectiveProjection();
+  // Radians, for the projections that take them; the direction's length as written (panoramic reads it).
+  double angle = 0, verticalAngle = 0, directionLength = 1;
+  // POV-Ray's focal blur (manual, "Focal Blur"): on when aperture and maxSamples are both positive.
+  struct FocalBlur {
+    double aperture = 0;
+    int minSamples = 0, maxSamples = 0;  // minSamples 0: POV-Ray's default, 4 below 7 samples and 7 from there
+    glm::dvec3 focalPoint{0};
+    double confidence = 0.9, variance = 1.0 / 128;
+  } focalBlur;
   SourceLoc loc;  // the `camera` statement (POV) or the `fov` command (.cli) that set it, for messages
 };
 

@@ -463,9 +463,10 @@ class Builder {
     glm::dvec3 location{0}, direction{0, 0, 1}, up{0, 1, 0}, right{1.33, 0, 0}, sky{0, 1, 0};
     std::optional<glm::dvec3> lookAt;
     std::optional<double> angle, verticalAngle;
-    CameraDesc::Projection projection = CameraDesc::Projection::Perspective;
+    const ProjectionKind* projection = &perspectiveProjection();
     bool angleGiven = false, sizeGiven = false;
     std::vector<TransformStep> steps;
+    CameraDesc::FocalBlur blur;
   };
 
   // POV-Ray's camera: defaults, then angle sets the direction's length, look_at turns direction, right and up
@@ -476,9 +477,7 @@ class Builder {
     PovCamera k;
     collectCamera(n, k);
     glm::dvec3 direction = k.direction, right = k.right, up = k.up;
-    const bool planar = k.projection == CameraDesc::Projection::Perspective ||
-                        k.projection == CameraDesc::Projection::Orthographic;
-    if (k.angle && planar) {
+    if (k.angle && k.projection->planar) {
       direction = glm::normalize(direction) * (0.5 * glm::length(right) / std::tan(glm::radians(*k.angle) / 2));
     }
     if (k.lookAt) {
@@ -493,27 +492,30 @@ class Builder {
     // What right and up are divided by: the direction's length for a perspective camera, which makes them the
     // picture's size at unit distance; for an orthographic one, 1 or the look_at point's distance in units
     // of the direction's length.
-    using P = CameraDesc::Projection;
+    const ProjectionKind* orthographic = projectionNamed("orthographic");
     double size = 1;
-    if (k.projection == P::Orthographic && (k.angleGiven || !k.sizeGiven)) {
+    if (k.projection == orthographic && (k.angleGiven || !k.sizeGiven)) {
       size = glm::length(direction) / (k.lookAt ? glm::length(*k.lookAt - k.location) : glm::length(direction));
     }
     const glm::dmat4 m = composeTransforms<double>(k.steps);
     const glm::dvec3 location = glm::dvec3(m * glm::dvec4(k.location, 1));
     direction = glm::dvec3(m * glm::dvec4(direction, 0));
-    if (k.projection == P::Perspective) size = glm::length(direction);
+    if (k.projection == &perspectiveProjection()) size = glm::length(direction);
     CameraDesc& c = scene_.camera;
     c.location = location;
     c.lookAt = location + glm::normalize(direction);
     c.right = glm::dvec3(m * glm::dvec4(right, 0)) / size;
     c.up = glm::dvec3(m * glm::dvec4(up, 0)) / size;
     c.projection = k.projection;
-    // POV-Ray's defaults: 90° for the cylinders and ultra wide angle, 360° by half that for spherical; ultra
-    // wide angle's vertical angle follows up's length against right's.
-    const bool spherical = k.projection == P::Spherical;
-    c.angle = glm::radians(k.angle.value_or(spherical ? 360 : 90));
+    c.directionLength = glm::length(direction);
+    // The kind's default angle; spherical's vertical angle is half the angle unless given, the others' (ultra
+    // wide angle's) follows up's length against right's.
+    const bool spherical = k.projection == projectionNamed("spherical");
+    c.angle = glm::radians(k.angle.value_or(k.projection->defaultAngle));
     c.verticalAngle = spherical ? glm::radians(k.verticalAngle.value_or(glm::degrees(c.angle) / 2))
                                 : c.angle * glm::length(up) / glm::length(right);
+    c.focalBlur = k.blur;
+    c.focalBlur.focalPoint = glm::dvec3(m * glm::dvec4(k.blur.focalPoint, 1));
     c.loc = n.loc;
   }
 
@@ -530,25 +532,19 @@ class Builder {
         continue;
       }
       const std::string_view w = it.word;
-      using P = CameraDesc::Projection;
-      constexpr std::pair<std::string_view, P> kProjections[] = {
-          {"perspective", P::Perspective}, {"orthographic", P::Orthographic},
-          {"ultra_wide_angle", P::UltraWideAngle}, {"spherical", P::Spherical}};
-      const auto named = std::find_if(std::begin(kProjections), std::end(kProjections),
-                                      [&](const auto& p) { return p.first == w; });
-      if (named != std::end(kProjections)) {
-        k.projection = named->second;
+      if (const ProjectionKind* named = projectionNamed(w)) {
+        k.projection = named;
         continue;
       }
       const Value* v = valueAfter(n, i);
       if (w == "cylinder") {
         const int type = v && v->type == Value::Type::Float ? int(v->v[0]) : 0;
-        if (type < 1 || type > 4) throw ParseError(it.loc, "'cylinder' needs a type from 1 to 4");
-        k.projection = CameraDesc::Projection(int(CameraDesc::Projection::Cylinder1) + type - 1);
+        k.projection = projectionNamed(w, type);
+        if (!k.projection) throw ParseError(it.loc, "'cylinder' needs a type from 1 to 4");
         continue;
       }
       if (w == "angle") k.angleGiven = true;
-      if (!v && w == "angle" && k.projection == CameraDesc::Projection::Orthographic) continue;  // optional there
+      if (!v && w == "angle" && k.projection == projectionNamed("orthographic")) continue;  // optional there
       if (!v) {
         refuse(it.loc, w);
         continue;
@@ -560,6 +556,18 @@ class Builder {
       else if (w == "right") k.right = vec3(*v), k.sizeGiven = true;
       else if (w == "sky") k.sky = vec3(*v);
       else if (w == "look_at") k.lookAt = vec3(*v);
+      else if (w == "aperture") k.blur.aperture = v->v[0];
+      else if (w == "focal_point") k.blur.focalPoint = vec3(*v);
+      else if (w == "confidence") k.blur.confidence = v->v[0];
+      else if (w == "variance") k.blur.variance = v->v[0];
+      else if (w == "blur_samples") {
+        // `blur_samples MIN, MAX` or `blur_samples MAX`.
+        k.blur.maxSamples = int(v->v[0]);
+        if (i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value && n.items[i + 1].value.type == Value::Type::Float) {
+          k.blur.minSamples = k.blur.maxSamples;
+          k.blur.maxSamples = int(valueAfter(n, i)->v[0]);
+        }
+      }
       else if (w == "angle") {
         k.angle = v->v[0];
         // `angle H, V` of a spherical camera.

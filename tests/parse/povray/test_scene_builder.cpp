@@ -236,7 +236,7 @@ intersection { sphere { 0, 1 } box { -1, 0.5 } pigment { checker Red Blue } scal
 TEST_CASE("povray scene: an orthographic camera's size: its right and up, or what a perspective camera shows at "
           "look_at", "[povray]") {
   const SceneDesc own = scene("camera { orthographic location <0, 0, -10> look_at 0 right 8*x up 6*y }\n");
-  CHECK(own.camera.projection == CameraDesc::Projection::Orthographic);
+  CHECK(own.camera.projection == rt::projectionNamed("orthographic"));
   CHECK(own.camera.right == glm::dvec3(8, 0, 0));
   CHECK(own.camera.up == glm::dvec3(0, 6, 0));
   // With angle 90 a perspective camera shows 2·10·tan 45° = 20 units across at the look_at point.
