@@ -20,6 +20,8 @@ namespace {
 
 template <class K, class = void> struct HasSturm : std::false_type {};
 template <class K> struct HasSturm<K, std::void_t<decltype(std::declval<K&>().sturm)>> : std::true_type {};
+template <class K, class = void> struct HasOpen : std::false_type {};
+template <class K> struct HasOpen<K, std::void_t<decltype(std::declval<K&>().open)>> : std::true_type {};
 
 class Builder {
  public:
@@ -145,6 +147,8 @@ class Builder {
       for (ObjectDesc& child : csg->children) {
         child.transforms.insert(child.transforms.end(), o.transforms.begin(), o.transforms.end());
         child.noShadow = child.noShadow || o.noShadow;
+        child.noImage = child.noImage || o.noImage;
+        child.noReflection = child.noReflection || o.noReflection;
         add(std::move(child), at);
       }
       return;
@@ -394,6 +398,11 @@ class Builder {
           o.inverse = !o.inverse;
         } else if (it.word == "no_shadow") {
           o.noShadow = true;
+        } else if (it.word == "no_image") {
+          o.noImage = true;
+        } else if (it.word == "no_reflection") {
+          o.noReflection = true;
+        } else if (it.word == "open" && open(o.shape)) {  // set on the kinds that have ends to leave off
         } else if (it.word == "sturm") {
           const Value* v = valueAfter(n, i);
           sturm(o.shape, !v || v->v[0] != 0);
@@ -425,6 +434,17 @@ class Builder {
     std::visit(
         [on](auto& kind) {
           if constexpr (HasSturm<std::decay_t<decltype(kind)>>::value) kind.sturm = on;
+        },
+        shape);
+  }
+
+  // POV-Ray's `open` among an object's modifiers, for the kinds that have ends to leave off (an `open` member);
+  // false for the others, which refuse it.
+  static bool open(ShapeDesc& shape) {
+    return std::visit(
+        [](auto& kind) {
+          if constexpr (HasOpen<std::decay_t<decltype(kind)>>::value) return kind.open = true;
+          return false;
         },
         shape);
   }
