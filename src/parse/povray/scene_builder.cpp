@@ -263,6 +263,24 @@ class Builder {
       if (!into) b_.refuse(f.whyAt, f.why);
       return true;
     }
+    // `function W, H { … }` next (a height field's): its size, and its value at (x, y, 0), a pigment function's
+    // grey (manual, "Height Field"; POV-Ray's heights of a pigment function are its grey); null, and refused,
+    // if it did not compile.
+    bool imageFunction(std::shared_ptr<const Function>& into, double& width, double& height) {
+      if (!functionNext()) return false;
+      const auto& f = static_cast<const FunctionValue&>(*n_.items[i_++].value.ref);
+      width = f.width;
+      height = f.height;
+      into = f.compiled;
+      if (f.colour && f.pigment) {
+        using Op = Function::Op;
+        into = std::make_shared<Function>(std::vector<Function::Instr>{{Op::Param, 0}, {Op::Param, 1}, {Op::Param, 2},
+                                                                        {Op::Colour, Function::Gray, 0, nullptr, f.pigment}},
+                                          3, 3);
+      }
+      if (!into) b_.refuse(f.whyAt, f.why);
+      return true;
+    }
     std::vector<TransformStep> transforms() {
       std::vector<TransformStep> steps;
       while (i_ < n_.items.size() && b_.transformItem(n_, i_, steps)) ++i_;
