@@ -67,6 +67,7 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
   subset([&](size_t i) { return !desc.objects[i].noShadow; }, casters_);
   subset([&](size_t i) { return !desc.objects[i].noImage; }, imaged_);
   subset([&](size_t i) { return !desc.objects[i].noReflection; }, reflected_);
+  subset([&](size_t i) { return !desc.objects[i].noRadiosity; }, gathered_);
 }
 
 // One ray: the packet queries' steps below, straight to the hierarchy's one-ray queries, without the arrays

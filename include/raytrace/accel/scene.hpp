@@ -27,10 +27,11 @@ template <class T> struct Light {
   std::optional<Vec3<T>> parallel;  // a parallel light's unit direction toward the light
 };
 
-// Which objects a ray sees (POV-Ray's no_image and no_reflection, §3.4.5.5 "No_Image, No_Reflection"): an
-// image ray (the eye's, or one refracted from it) does not see no_image objects, a ray reflected on its way
-// does not see no_reflection ones; other rays (gathered light, shadows through transparent surfaces) see all.
-enum class Sight { All, Image, Reflected };
+// Which objects a ray sees (POV-Ray's no_image, no_reflection and no_radiosity, §3.4.5.5 "No_Image,
+// No_Reflection"): an image ray (the eye's, or one refracted from it) does not see no_image objects, a ray
+// reflected on its way does not see no_reflection ones, a gathered ray (-gi) no no_radiosity ones; shadows
+// through transparent surfaces see all.
+enum class Sight { All, Image, Reflected, Gathered };
 
 template <class T> class Scene {
  public:
@@ -83,11 +84,12 @@ template <class T> class Scene {
   };
   // The objects that cast shadows, when some do not (POV-Ray's no_shadow): shadow rays ask these alone.
   std::optional<Subset> casters_;
-  // The objects image rays see and those reflected rays see, when some are hidden from them (Sight).
-  std::optional<Subset> imaged_, reflected_;
+  // The objects image, reflected and gathered rays see, when some are hidden from them (Sight).
+  std::optional<Subset> imaged_, reflected_, gathered_;
   // The subset a ray of that sight asks, or null for all the objects.
   const Subset* seen(Sight sight) const {
-    const std::optional<Subset>& part = sight == Sight::Image ? imaged_ : reflected_;
+    const std::optional<Subset>& part =
+        sight == Sight::Image ? imaged_ : sight == Sight::Reflected ? reflected_ : gathered_;
     return sight != Sight::All && part ? &*part : nullptr;
   }
 };

@@ -74,8 +74,8 @@ template <class T> class Tracer {
     uint64_t key = 0;   // the root of its random numbers (sampler.hpp); 0 without -gi, which reads none
     bool mirrored = false;  // reflected on its way from the eye
     // The objects it sees: a ray from the eye all but no_image ones until it is reflected, then all but
-    // no_reflection ones; a gathered ray all.
-    Sight sight() const { return bounce > 0 ? Sight::All : mirrored ? Sight::Reflected : Sight::Image; }
+    // no_reflection ones; a gathered ray all but no_radiosity ones.
+    Sight sight() const { return bounce > 0 ? Sight::Gathered : mirrored ? Sight::Reflected : Sight::Image; }
   };
 
   struct Local {

@@ -149,6 +149,7 @@ class Builder {
         child.noShadow = child.noShadow || o.noShadow;
         child.noImage = child.noImage || o.noImage;
         child.noReflection = child.noReflection || o.noReflection;
+        child.noRadiosity = child.noRadiosity || o.noRadiosity;
         add(std::move(child), at);
       }
       return;
@@ -420,6 +421,8 @@ class Builder {
           o.noImage = true;
         } else if (it.word == "no_reflection") {
           o.noReflection = true;
+        } else if (it.word == "no_radiosity") {
+          o.noRadiosity = true;
         } else if (it.word == "open" && open(o.shape)) {  // set on the kinds that have ends to leave off
         } else if (it.word == "sturm") {
           const Value* v = valueAfter(n, i);
