@@ -58,19 +58,26 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
     }
   };
   split([](size_t) { return true; }, scanned_, hierarchy_);
-  const auto casts = [&](size_t i) { return !desc.objects[i].noShadow; };
-  bool all = true;
-  for (size_t i = 0; i < n && all; ++i) all = casts(i);
-  if (!all) split(casts, casters_.emplace().scanned, casters_->hierarchy);
+  // A subset of the objects, made when `take` leaves some out.
+  const auto subset = [&](const auto& take, std::optional<Subset>& into) {
+    bool all = true;
+    for (size_t i = 0; i < n && all; ++i) all = take(i);
+    if (!all) split(take, into.emplace().scanned, into->hierarchy);
+  };
+  subset([&](size_t i) { return !desc.objects[i].noShadow; }, casters_);
+  subset([&](size_t i) { return !desc.objects[i].noImage; }, imaged_);
+  subset([&](size_t i) { return !desc.objects[i].noReflection; }, reflected_);
+  subset([&](size_t i) { return !desc.objects[i].noRadiosity; }, gathered_);
 }
 
 // One ray: the packet queries' steps below, straight to the hierarchy's one-ray queries, without the arrays
 // of a packet (docs/performance.md).
 template <class T>
-std::optional<Hit<T>> Scene<T>::closestHit(const Ray<T>& ray, Interval<T> range) const {
+std::optional<Hit<T>> Scene<T>::closestHit(const Ray<T>& ray, Interval<T> range, Sight sight) const {
   std::optional<Hit<T>> hit;
-  for (const Object<T>* object : scanned_) object->closerHits(&ray, 1, range, &hit);
-  if (hierarchy_) hierarchy_->closestHit(ray, range, hit);
+  const Subset* part = seen(sight);
+  for (const Object<T>* object : part ? part->scanned : scanned_) object->closerHits(&ray, 1, range, &hit);
+  if (const auto& hierarchy = part ? part->hierarchy : hierarchy_) hierarchy->closestHit(ray, range, hit);
   if (hit) hit->point = hitPoint(ray, *hit);
   return hit;
 }
@@ -90,10 +97,12 @@ bool Scene<T>::occluded(const Ray<T>& ray, Interval<T> range, const Object<T>** 
 }
 
 template <class T>
-void Scene<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* hits) const {
+void Scene<T>::closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* hits,
+                           Sight sight) const {
   for (int i = 0; i < n; ++i) hits[i].reset();
-  for (const Object<T>* object : scanned_) object->closerHits(rays, n, range, hits);
-  if (hierarchy_) hierarchy_->closestHits(rays, n, range, hits);
+  const Subset* part = seen(sight);
+  for (const Object<T>* object : part ? part->scanned : scanned_) object->closerHits(rays, n, range, hits);
+  if (const auto& hierarchy = part ? part->hierarchy : hierarchy_) hierarchy->closestHits(rays, n, range, hits);
   for (int i = 0; i < n; ++i) {
     if (hits[i]) hits[i]->point = hitPoint(rays[i], *hits[i]);
   }

@@ -160,7 +160,7 @@ int raycast(const Invocation& inv, std::ostream&) {
   withScene(inv, [&](const auto& scene, const auto& camera) {
     for (int y = bottom; y < inv.height - region.y0; ++y) {
       for (int x = region.x0; x < region.x1; ++x) {
-        const auto hit = scene.closestHit(camera.pixelRay(x, y), {});
+        const auto hit = scene.closestHit(camera.pixelRay(x, y), {}, Sight::Image);
         Material textured;
         image.at(x - region.x0, y - bottom) =
             hit ? hit->object->materialAt(hit->point, textured).pigment : inv.scene.conventions.background;

@@ -94,7 +94,7 @@ int firsthit(const Invocation& inv, std::ostream& out) {
   return withScene(inv, [&](const auto& scene, const auto& camera) {
     const auto ray = camera.pixelRay(inv.x, inv.y);
     printPixelRay(out, inv.x, inv.y, glm::dvec3(ray.origin), glm::dvec3(ray.dir));
-    const auto hit = scene.closestHit(ray, {});
+    const auto hit = scene.closestHit(ray, {}, Sight::Image);
     if (!hit) {
       out << "No Hit\n";
       return 0;

@@ -243,6 +243,7 @@ class PovParser {
   template <class S> bool texture(S&, const void*&) const { throw povRayOnly(); }
   template <class F> bool block(std::string_view, F&&) const { throw povRayOnly(); }
   bool function(std::shared_ptr<const Function>&) const { throw povRayOnly(); }
+  bool imageFunction(std::shared_ptr<const Function>&, double&, double&) const { throw povRayOnly(); }
   std::vector<TransformStep> transforms() const { throw povRayOnly(); }
   ParseError povRayOnly() const {
     return ParseError(here(), "'" + std::string(kind_) + "' is read only in POV-Ray 3.7 scenes");

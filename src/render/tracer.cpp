@@ -233,7 +233,7 @@ template <class T> void Tracer<T>::traceBatch(Batch& batch, int count, RayRecord
     const int size = std::min(kPacket, count - first);
     const Ray<T>* packet = &batch.rays[size_t(first)];
     std::optional<Hit<T>> hits[kPacket];
-    scene_.closestHits(packet, size, {}, hits);
+    scene_.closestHits(packet, size, {}, hits, batch.paths[size_t(first)].sight());  // one sight a batch
     // The shadow rays of the packet's hits toward each light, asked together: shadows[i · lights + l]. Shadows
     // through transparent surfaces are followed one ray at a time instead (direct()).
     for (size_t l = 0; l < lights && !filteredShadows_; ++l) {
@@ -273,7 +273,7 @@ template <class T> void Tracer<T>::traceBatch(Batch& batch, int count, RayRecord
 template <class T>
 typename Tracer<T>::Traced Tracer<T>::trace(const Ray<T>& ray, RayRecord::Kind kind, const Path& path,
                                             RayRecord* record) {
-  return follow(ray, scene_.closestHit(ray, {}), kind, path, record, nullptr);
+  return follow(ray, scene_.closestHit(ray, {}, path.sight()), kind, path, record, nullptr);
 }
 
 template <class T>
@@ -579,6 +579,7 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
     RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
     if (options_.gi.enabled) child.key = childKey(path.key, kReflectionBranch);
     ++counts_.secondary;
+    child.mirrored = true;
     const Ray<T> mirrored = spawnRay(hit, reflectDirection(ray.dir, n), *scene_.arithmetic().offset);
     const Traced r = trace(mirrored, RayRecord::Kind::Reflection, child, sub);
     reflection = w.reflection * reflectTint * r.color;

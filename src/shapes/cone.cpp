@@ -30,8 +30,10 @@ std::optional<Hit<T>> Cone<T>::intersect(const Ray<T>& ray, Interval<T> range) c
     if (a != 0 && frame_.withinHeight(s, T(q / a))) nearest.consider(T(q / a), Part::Side);
     if (q != 0 && frame_.withinHeight(s, T(c / q))) nearest.consider(T(c / q), Part::Side);
   }
-  if (const auto t = frame_.diskT(s, Part::Base, baseRadius_)) nearest.consider(*t, Part::Base);
-  if (const auto t = frame_.diskT(s, Part::Cap, capRadius_)) nearest.consider(*t, Part::Cap);
+  if (!open_) {
+    if (const auto t = frame_.diskT(s, Part::Base, baseRadius_)) nearest.consider(*t, Part::Base);
+    if (const auto t = frame_.diskT(s, Part::Cap, capRadius_)) nearest.consider(*t, Part::Cap);
+  }
   if (!nearest.part) return std::nullopt;
 
   const T t = nearest.t();

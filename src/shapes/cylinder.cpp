@@ -17,8 +17,10 @@ std::optional<Hit<T>> Cylinder<T>::intersect(const Ray<T>& ray, Interval<T> rang
     if (frame_.withinHeight(s, t0)) nearest.consider(t0, Part::Side);
     if (frame_.withinHeight(s, t1)) nearest.consider(t1, Part::Side);
   }
-  if (const auto t = frame_.diskT(s, Part::Base, radius_)) nearest.consider(*t, Part::Base);
-  if (const auto t = frame_.diskT(s, Part::Cap, radius_)) nearest.consider(*t, Part::Cap);
+  if (!open_) {
+    if (const auto t = frame_.diskT(s, Part::Base, radius_)) nearest.consider(*t, Part::Base);
+    if (const auto t = frame_.diskT(s, Part::Cap, radius_)) nearest.consider(*t, Part::Cap);
+  }
   if (!nearest.part) return std::nullopt;
 
   const T t = nearest.t();

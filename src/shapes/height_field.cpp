@@ -1,6 +1,8 @@
 #include "raytrace/shapes/height_field.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -8,6 +10,7 @@
 // stb_image decodes the files (compiled once, in src/image/stb_image.cpp).
 #include <stb/stb_image.h>
 
+#include "raytrace/util/limits.hpp"
 #include "raytrace/util/palette_image.hpp"
 
 namespace rt {
@@ -44,6 +47,31 @@ HeightImage readHeightImage(const std::string& path, const SourceLoc& at) {
     }
   }
   stbi_image_free(pixels);
+  return image;
+}
+
+HeightImage functionHeights(const Function& f, double width, double height, const SourceLoc& at) {
+  if (!(width >= 2 && height >= 2)) {
+    throw ParseError(at, "a height field function's size must be at least 2 by 2, as in `function 100, 100 { … }`");
+  }
+  // The heights, the mesh's vertices and its triangles: about 200 bytes a point.
+  const double points = std::floor(width) * std::floor(height);
+  const std::string shortage =
+      memoryShortage("a height field function of " + std::to_string(int64_t(std::min(points, 9e18))) + " points",
+                     uint64_t(std::min(points * 200, 1.8e19)), availableMemory());
+  if (!shortage.empty()) throw ParseError(at, shortage);
+  const int w = int(width), h = int(height);
+  HeightImage image{w, h, {}};
+  image.heights.reserve(size_t(w) * size_t(h));
+  for (int j = 0; j < h; ++j) {
+    for (int i = 0; i < w; ++i) {
+      // POV-Ray keeps each height as a 16-bit number: the value times 65535 cut toward zero, modulo 65536, and
+      // reads it over 65536 (its trace() finds 32767/65536 where f = 0.5, 32769/65536 where f = −0.5).
+      const double scaled = f.at({double(i) / (w - 1), double(j) / (h - 1), 0}) * 65535;
+      const int64_t whole = std::abs(scaled) < 9e18 ? int64_t(scaled) : 0;
+      image.heights.push_back(uint16_t(uint64_t(whole)) / 65536.0);
+    }
+  }
   return image;
 }
 

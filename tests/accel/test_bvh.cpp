@@ -401,3 +401,42 @@ TEMPLATE_TEST_CASE("scene: an object with no_shadow is hit but casts no shadow, 
     CHECK(scene.occluded(other, range));
   }
 }
+
+TEMPLATE_TEST_CASE("scene: no_image, no_reflection and no_radiosity hide an object from image, reflected or "
+                   "gathered rays alone", "",
+                   float, double) {
+  rt::SceneDesc desc;
+  for (int i = 0; i < 12; ++i) desc.objects.push_back(sphereDesc({0, 0, 3.0 * i}, 1));
+  desc.objects[0].noImage = true;
+  desc.objects[1].noReflection = true;
+  desc.objects[2].noRadiosity = true;
+  const rt::Ray<TestType> ray{{0, 0, -5}, {0, 0, 1}};
+  for (const Hierarchy h : {Hierarchy::Never, Hierarchy::Always}) {
+    const rt::Scene<TestType> scene(desc, robustArithmetic<TestType>(), h);
+    const auto nearest = [&](rt::Sight sight) {
+      const auto hit = scene.closestHit(ray, {}, sight);
+      REQUIRE(hit);
+      return hit->object->id();
+    };
+    CHECK(nearest(rt::Sight::All) == 1);
+    CHECK(nearest(rt::Sight::Image) == 2);
+    CHECK(nearest(rt::Sight::Reflected) == 1);
+    CHECK(nearest(rt::Sight::Gathered) == 1);
+    std::optional<rt::Hit<TestType>> hit;
+    scene.closestHits(&ray, 1, {}, &hit, rt::Sight::Image);
+    REQUIRE(hit);
+    CHECK(hit->object->id() == 2);
+    // Both still cast shadows.
+    CHECK(scene.occluded(ray, {TestType(0), TestType(10)}));
+    const rt::Ray<TestType> behind{{0, 0, 1.5}, {0, 0, 1}};
+    const auto second = scene.closestHit(behind, {}, rt::Sight::Reflected);
+    REQUIRE(second);
+    CHECK(second->object->id() == 3);
+    const auto gathered = scene.closestHit(behind, {}, rt::Sight::Gathered);
+    REQUIRE(gathered);
+    CHECK(gathered->object->id() == 2);
+    const auto past = scene.closestHit({{0, 0, 4.5}, {0, 0, 1}}, {}, rt::Sight::Gathered);
+    REQUIRE(past);
+    CHECK(past->object->id() == 4);
+  }
+}

@@ -182,3 +182,20 @@ TEMPLATE_TEST_CASE("cone: radii below the arithmetic's resolution give no NaN hi
   const Cone<T> c(Vec3<T>(0, -1, 0), tiny, Vec3<T>(0, 1, 0), T(0), Material{}, 1);
   CHECK_FALSE(shoot(c, Vec3<T>(0, 0, 5), Vec3<T>(0, 0, -1)));
 }
+
+TEMPLATE_TEST_CASE("an open cone has no end disks, and its inside is the solid's", "[cone]", float, double) {
+  using T = TestType;
+  // Radius 2 at y = 0 to radius 1 at y = 2.
+  const Cone<T> c(Vec3<T>(0), T(2), Vec3<T>(0, 2, 0), T(1), Material{}, 1, true);
+  CHECK_FALSE(c.intersect(Ray<T>{Vec3<T>(T(0.5), 5, 0), Vec3<T>(0, -1, 0)}, Interval<T>{}));
+  // In through the top at x = 0.4 (a closed cone's cap there), out to the inner wall at (1.2, 1.6), where the
+  // radius 2 − y/2 is 1.2; the normal still outward, tilted up by the slope.
+  const T root5 = std::sqrt(T(5));
+  const auto wall = c.intersect(Ray<T>{Vec3<T>(0, T(2.2), 0), Vec3<T>(2, -1, 0) / root5}, Interval<T>{});
+  REQUIRE(wall);
+  CHECK(wall->t == Approx(T(0.6) * root5));
+  CHECK(wall->normal.x == Approx(2 / root5));
+  CHECK(wall->normal.y == Approx(1 / root5));
+  CHECK(c.inside(Vec3<T>(0, 1, 0)));
+  CHECK_FALSE(c.inside(Vec3<T>(0, 3, 0)));
+}

@@ -183,3 +183,22 @@ TEMPLATE_TEST_CASE("cylinder: a radius below the arithmetic's resolution gives n
   const Cylinder<T> c(Vec3<T>(0), Vec3<T>(0, 2, 0), tiny, Material{}, 1);
   CHECK_FALSE(shoot(c, Vec3<T>(0, 1, 5), Vec3<T>(0, 0, -1)));
 }
+
+TEMPLATE_TEST_CASE("an open cylinder has no end disks, and its inside is the solid's", "[cylinder]", float, double) {
+  using T = TestType;
+  const Cylinder<T> c(Vec3<T>(0), Vec3<T>(0, 2, 0), T(1), Material{}, 1, true);
+  // Along the axis, through both open ends: nothing.
+  CHECK_FALSE(shoot(c, Vec3<T>(T(0.5), 5, 0), Vec3<T>(0, -1, 0)));
+  // Slanting in through the top: the inner wall, its normal still outward.
+  const auto wall = shoot(c, Vec3<T>(0, 3, 0), Vec3<T>(3, -4, 0) / T(5));
+  REQUIRE(wall);
+  CHECK(wall->t == Approx(T(5) / 3));
+  CHECK(wall->normal == Vec3<T>(1, 0, 0));
+  // Across: both sides, as a closed one.
+  const auto side = shoot(c, Vec3<T>(5, 1, 0), Vec3<T>(-1, 0, 0));
+  REQUIRE(side);
+  CHECK(side->t == T(4));
+  // POV-Ray's picture of an open cylinder intersected with a sphere shows the sphere inside the tube.
+  CHECK(c.inside(Vec3<T>(0, 1, 0)));
+  CHECK_FALSE(c.inside(Vec3<T>(0, 3, 0)));
+}

@@ -106,7 +106,8 @@ TEST_CASE("a height field's water level removes what lies under it, and smooth b
   CHECK(hit->normal.z == Approx(-std::sqrt(0.5)));
 }
 
-TEST_CASE("a height field's missing image, or a function, is an error where it is named", "[height_field]") {
+TEST_CASE("a height field's missing image, or a function's size below 2 by 2, is an error where it is named",
+          "[height_field]") {
   const test::TempDir dir;
   const auto failure = [&](const std::string& body) {
     try {
@@ -118,6 +119,25 @@ TEST_CASE("a height field's missing image, or a function, is an error where it i
   };
   CHECK(failure("height_field { png \"nowhere.png\" }\n") ==
         dir.file("scene.pov") + ":2:20: error: cannot find the height field image \"nowhere.png\"");
-  CHECK(failure("height_field { function 10, 10 { x } }\n") ==
-        dir.file("scene.pov") + ":2:16: error: 'height_field function' is not supported yet");
+  CHECK(failure("height_field { function 1, 10 { x } }\n") ==
+        dir.file("scene.pov") +
+            ":2:16: error: a height field function's size must be at least 2 by 2, as in `function 100, 100 { … }`");
+}
+
+TEST_CASE("a height field of a function: f(x, y, 0) over the grid, y from the top row, in 16 bits, a pigment's grey",
+          "[height_field]") {
+  const test::TempDir dir;
+  const auto field = [&](const std::string& f) {
+    return makeObject<double>(povIn(dir, "height_field { function 3, 3 { " + f + " } }\n").objects[0],
+                              SphereMethod::Auto, 1, false);
+  };
+  // POV-Ray's trace() straight down at these points, to its 6 decimals.
+  CHECK(heightAt(*field("x"), 0.5, 0.5) == Approx(0.499985).margin(1e-6));
+  CHECK(heightAt(*field("y"), 0.5, 0) == Approx(0.999985).margin(1e-6));
+  CHECK(heightAt(*field("y"), 0.5, 0.5) == Approx(0.499985).margin(1e-6));
+  CHECK(heightAt(*field("pigment { rgb <0.2, 0.5, 0.8> }"), 0.5, 0.5) == Approx(0.445084).margin(1e-6));
+  // Values past [0, 1] wrap around, as 16-bit numbers do.
+  const auto wrapped = field("2 * x - 0.5");
+  CHECK(heightAt(*wrapped, 0.01, 0.5) == Approx(0.500015).margin(1e-6));
+  CHECK(heightAt(*wrapped, 0.99, 0.5) == Approx(0.499970).margin(1e-6));
 }

@@ -27,6 +27,12 @@ template <class T> struct Light {
   std::optional<Vec3<T>> parallel;  // a parallel light's unit direction toward the light
 };
 
+// Which objects a ray sees (POV-Ray's no_image, no_reflection and no_radiosity, §3.4.5.5 "No_Image,
+// No_Reflection"): an image ray (the eye's, or one refracted from it) does not see no_image objects, a ray
+// reflected on its way does not see no_reflection ones, a gathered ray (-gi) no no_radiosity ones; shadows
+// through transparent surfaces see all.
+enum class Sight { All, Image, Reflected, Gathered };
+
 template <class T> class Scene {
  public:
   using Real = T;
@@ -36,7 +42,7 @@ template <class T> class Scene {
 
   // The closest hit strictly inside `range` over all objects. Equal t resolve to the object that comes first
   // in the file, so results never depend on traversal order (docs/reference/stability.md F13).
-  std::optional<Hit<T>> closestHit(const Ray<T>& ray, Interval<T> range) const;
+  std::optional<Hit<T>> closestHit(const Ray<T>& ray, Interval<T> range, Sight sight = Sight::All) const;
   // Whether anything at all lies strictly inside `range`: the any-hit query of shadow rays. `lastOccluder`, when
   // given, is the object that occluded the previous shadow ray toward the same light, tested first
   // (neighbouring shadow rays are mostly occluded by the same object: the shadow cache of Haines & Greenberg,
@@ -46,7 +52,8 @@ template <class T> class Scene {
   // The same two queries for a packet of n ≤ Bvh<T>::kPacket coherent rays (bvh.hpp), each answered exactly as
   // the one-ray query answers it: hits[i] = closestHit(rays[i], range); shadowed[i] = occluded(rays[i],
   // ranges[i], lastOccluder).
-  void closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* hits) const;
+  void closestHits(const Ray<T>* rays, int n, Interval<T> range, std::optional<Hit<T>>* hits,
+                   Sight sight = Sight::All) const;
   void occluded(const Ray<T>* rays, const Interval<T>* ranges, int n, bool* shadowed,
                 const Object<T>** lastOccluder) const;
 
@@ -70,12 +77,21 @@ template <class T> class Scene {
   std::vector<std::unique_ptr<Object<T>>> objects_;
   std::vector<const Object<T>*> scanned_;  // tested one by one in file order: planes, or all without hierarchy
   std::optional<Bvh<T>> hierarchy_;
-  // The objects that cast shadows, when some do not (POV-Ray's no_shadow): shadow rays ask these alone.
-  struct Casters {
+  // A part of the objects, in turn and in a hierarchy as the whole is.
+  struct Subset {
     std::vector<const Object<T>*> scanned;
     std::optional<Bvh<T>> hierarchy;
   };
-  std::optional<Casters> casters_;
+  // The objects that cast shadows, when some do not (POV-Ray's no_shadow): shadow rays ask these alone.
+  std::optional<Subset> casters_;
+  // The objects image, reflected and gathered rays see, when some are hidden from them (Sight).
+  std::optional<Subset> imaged_, reflected_, gathered_;
+  // The subset a ray of that sight asks, or null for all the objects.
+  const Subset* seen(Sight sight) const {
+    const std::optional<Subset>& part =
+        sight == Sight::Image ? imaged_ : sight == Sight::Reflected ? reflected_ : gathered_;
+    return sight != Sight::All && part ? &*part : nullptr;
+  }
 };
 
 }  // namespace rt

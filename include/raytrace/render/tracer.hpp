@@ -82,6 +82,10 @@ template <class T> class Tracer {
     int bounce = 0;     // gather rays between the eye and this ray (docs/gi.md)
     float weight = 1;   // the accumulated weight of its colour in the pixel (docs/reference/stability.md F12)
     uint64_t key = 0;   // the root of its random numbers (sampler.hpp); 0 without -gi, which reads none
+    bool mirrored = false;  // reflected on its way from the eye
+    // The objects it sees: a ray from the eye all but no_image ones until it is reflected, then all but
+    // no_reflection ones; a gathered ray all but no_radiosity ones.
+    Sight sight() const { return bounce > 0 ? Sight::Gathered : mirrored ? Sight::Reflected : Sight::Image; }
   };
 
   struct Local {

@@ -14,12 +14,13 @@ namespace rt {
 
 template <class T> class Cone;
 
-// What a file says of a cone: `cone { base, base radius, cap, cap radius }`.
+// What a file says of a cone: `cone { base, base radius, cap, cap radius [open] }`.
 struct ConeDesc {
   glm::dvec3 base;
   double baseRadius;
   glm::dvec3 cap;
   double capRadius;
+  bool open = false;  // POV-Ray's `open`: no end disks; inside() stays the solid's, as POV-Ray's does
 
   static bool named(std::string_view word) { return word == "cone"; }
   static const char* name() { return "Cone"; }
@@ -47,22 +48,26 @@ struct ConeDesc {
   void describe(std::ostream& out) const {
     out << "- Center 1: " << braces(base) << "\n- Radius 1: " << fixed4(baseRadius) << "\n- Center 2: "
         << braces(cap) << "\n- Radius 2: " << fixed4(capRadius) << "\n";
+    if (open) out << "- Open\n";
   }
   template <class T> std::unique_ptr<Object<T>> make(const ObjectBuild& b) const {
-    return std::make_unique<Cone<T>>(Vec3<T>(base), T(baseRadius), Vec3<T>(cap), T(capRadius), b.material, b.id);
+    return std::make_unique<Cone<T>>(Vec3<T>(base), T(baseRadius), Vec3<T>(cap), T(capRadius), b.material, b.id,
+                                     open);
   }
 };
 
 // POV-Ray's `cone { base, r1, cap, r2 }`: a truncated cone whose radius goes linearly from r1 at the base to r2
-// at the cap, closed by disks at both ends (a radius of 0 is a point, with no disk).
+// at the cap, closed by disks at both ends (a radius of 0 is a point, with no disk) unless `open`.
 template <class T> class Cone final : public Object<T> {
  public:
-  Cone(const Vec3<T>& base, T baseRadius, const Vec3<T>& cap, T capRadius, const Material& material, int id)
+  Cone(const Vec3<T>& base, T baseRadius, const Vec3<T>& cap, T capRadius, const Material& material, int id,
+       bool open = false)
       : Object<T>(material, id),
         frame_(base, cap),
         baseRadius_(baseRadius),
         capRadius_(capRadius),
-        slope_((capRadius - baseRadius) / frame_.height()) {}
+        slope_((capRadius - baseRadius) / frame_.height()),
+        open_(open) {}
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
   std::optional<Aabb<T>> bounds() const override { return frame_.bounds(baseRadius_, capRadius_); }
@@ -75,6 +80,7 @@ template <class T> class Cone final : public Object<T> {
   Axial<T> frame_;
   T baseRadius_, capRadius_;
   T slope_;  // k: the radius at height y is r1 + k·y
+  bool open_;
 };
 
 }  // namespace rt

@@ -14,10 +14,11 @@ namespace rt {
 
 template <class T> class Cylinder;
 
-// What a file says of a cylinder: `cylinder { base, cap, radius }`, capped at both ends.
+// What a file says of a cylinder: `cylinder { base, cap, radius [open] }`, capped at both ends unless open.
 struct CylinderDesc {
   glm::dvec3 base, cap;
   double radius;
+  bool open = false;  // POV-Ray's `open`: no end disks; inside() stays the solid's, as POV-Ray's does
 
   static bool named(std::string_view word) { return word == "cylinder"; }
   static const char* name() { return "Cylinder"; }
@@ -39,18 +40,20 @@ struct CylinderDesc {
   FlatFaces flatFaces() const { return {}; }  // curved: left out of the offset check (docs/accuracy.md)
   void describe(std::ostream& out) const {
     out << "- Base: " << braces(base) << "\n- Cap: " << braces(cap) << "\n- Radius: " << fixed4(radius) << "\n";
+    if (open) out << "- Open\n";
   }
   template <class T> std::unique_ptr<Object<T>> make(const ObjectBuild& b) const {
-    return std::make_unique<Cylinder<T>>(Vec3<T>(base), Vec3<T>(cap), T(radius), b.material, b.id);
+    return std::make_unique<Cylinder<T>>(Vec3<T>(base), Vec3<T>(cap), T(radius), b.material, b.id, open);
   }
 };
 
 // A cylinder of radius r around the segment base→cap, closed at both ends by disks (POV-Ray's `cylinder`
-// without `open`). The .cli language's vertical `cylinder r x z ymin ymax` is the same shape.
+// without `open`; an open one is the side alone). The .cli language's vertical `cylinder r x z ymin ymax` is the
+// same shape.
 template <class T> class Cylinder final : public Object<T> {
  public:
-  Cylinder(const Vec3<T>& base, const Vec3<T>& cap, T radius, const Material& material, int id)
-      : Object<T>(material, id), frame_(base, cap), radius_(radius) {}
+  Cylinder(const Vec3<T>& base, const Vec3<T>& cap, T radius, const Material& material, int id, bool open = false)
+      : Object<T>(material, id), frame_(base, cap), radius_(radius), open_(open) {}
 
   std::optional<Hit<T>> intersect(const Ray<T>& ray, Interval<T> range) const override;
   std::optional<Aabb<T>> bounds() const override { return frame_.bounds(radius_, radius_); }
@@ -60,6 +63,7 @@ template <class T> class Cylinder final : public Object<T> {
  private:
   Axial<T> frame_;
   T radius_;
+  bool open_;
 };
 
 }  // namespace rt

@@ -2,11 +2,13 @@
 // image's pixels, y in [0, 1], two triangles to each square of four neighbouring pixels.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "raytrace/shapes/triangle_mesh.hpp"
+#include "raytrace/surface/function.hpp"
 
 namespace rt {
 
@@ -21,11 +23,16 @@ struct HeightImage {
 // The heights of the image file at `path`; a ParseError at `at` when it cannot be read.
 HeightImage readHeightImage(const std::string& path, const SourceLoc& at);
 
+// The heights of POV-Ray's `function W, H { … }`: f(x, y, 0) at x = i/(W − 1), y = j/(H − 1), the row j = 0 the
+// image's top row, kept in 16 bits as POV-Ray keeps them; a ParseError at `at` when the size is below 2 by 2 or
+// does not fit in memory.
+HeightImage functionHeights(const Function& f, double width, double height, const SourceLoc& at);
+
 // The triangles over `image`: smooth ones with normals from the neighbouring heights when `smooth`; the
 // squares wholly below `waterLevel` left out.
 MeshData heightFieldMesh(const HeightImage& image, bool smooth, double waterLevel);
 
-// `height_field { [type] "file" [smooth] [water_level w] [hierarchy b] … }`.
+// `height_field { [type] "file" | function W, H { … } [smooth] [water_level w] [hierarchy b] … }`.
 template <class Reader> MeshData readHeightField(Reader& r) {
   static constexpr std::string_view kTypes[] = {"exr", "gif", "hdr", "iff", "jpeg", "pgm", "png",
                                                 "pot", "ppm", "sys", "tga", "tiff"};
@@ -33,10 +40,18 @@ template <class Reader> MeshData readHeightField(Reader& r) {
     if (r.keyword(type)) break;
   }
   const SourceLoc at = r.here();
-  if (r.functionNext()) throw ParseError(at, "'height_field function' is not supported yet");
-  const std::string name = r.string("the height field's image file");
-  const std::string path = r.findFile(name);
-  if (path.empty()) throw ParseError(at, "cannot find the height field image \"" + name + "\"");
+  HeightImage image;
+  std::shared_ptr<const Function> f;
+  double width = 0, height = 0;
+  if (r.imageFunction(f, width, height)) {
+    // A refused function, reported once the file is read, stands as a flat field until then.
+    image = f ? functionHeights(*f, width, height, at) : HeightImage{2, 2, {0, 0, 0, 0}};
+  } else {
+    const std::string name = r.string("the height field's image file");
+    const std::string path = r.findFile(name);
+    if (path.empty()) throw ParseError(at, "cannot find the height field image \"" + name + "\"");
+    image = readHeightImage(path, at);
+  }
   bool smooth = false;
   double waterLevel = 0;
   for (;;) {
@@ -48,7 +63,7 @@ template <class Reader> MeshData readHeightField(Reader& r) {
       break;
     }
   }
-  return heightFieldMesh(readHeightImage(path, at), smooth, waterLevel);
+  return heightFieldMesh(image, smooth, waterLevel);
 }
 
 }  // namespace rt

@@ -67,6 +67,10 @@ struct ObjectBuild {
 //                                           it was read from (the same for two uses of one declared texture)
 //   bool function(std::shared_ptr<const Function>& into);   a `function { … }` next: its compiled form (null,
 //                                           and refused, if it did not compile) (an isosurface's)
+//   bool imageFunction(std::shared_ptr<const Function>& into, double& width, double& height);   `function W, H
+//                                           { … }` next: its size and its value at (x, y, 0), a pigment
+//                                           function's grey (null, and refused, if it did not compile) (a
+//                                           height field's)
 // The course language has no strings, keywords inside a shape or blocks: its parser refuses the calls for them.
 // A template parameter rather than a base class: the parser's calls stay inline in its per-object loop.
 

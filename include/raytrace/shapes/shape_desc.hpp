@@ -50,6 +50,9 @@ struct ObjectDesc {
   SourceLoc loc;  // where the object starts, for messages
   bool textured = false;  // the file gave it a pigment or finish of its own (a CSG child without takes its group's)
   bool noShadow = false;  // POV-Ray's no_shadow: it casts no shadow
+  bool noImage = false;       // POV-Ray's no_image: image rays do not see it (accel/scene's Sight)
+  bool noReflection = false;  // POV-Ray's no_reflection: reflected rays do not see it
+  bool noRadiosity = false;   // POV-Ray's no_radiosity: gathered rays (-gi) do not see it
   bool inverse = false;   // POV-Ray's inverse: inside and outside swap (shapes/inverted)
   // A texture that varies over the surface, in world space; none when `material` is the same everywhere.
   std::shared_ptr<const Texture> texture;

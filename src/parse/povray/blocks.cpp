@@ -140,8 +140,9 @@ Value Interpreter::functionValue(const SourceLoc& at) {
   } else {
     f->params = {"x", "y", "z"};
     // An image function's size, `function 256, 256 { … }`.
-    while (!peek().is("{") && peek().kind != Token::Kind::End) {
-      expression();
+    for (int n = 0; !peek().is("{") && peek().kind != Token::Kind::End; ++n) {
+      const Value size = expression();
+      if (size.numeric() && n < 2) (n == 0 ? f->width : f->height) = size.v[0];
       if (peek().is(",")) next();
     }
   }

@@ -21,6 +21,8 @@ namespace {
 
 template <class K, class = void> struct HasSturm : std::false_type {};
 template <class K> struct HasSturm<K, std::void_t<decltype(std::declval<K&>().sturm)>> : std::true_type {};
+template <class K, class = void> struct HasOpen : std::false_type {};
+template <class K> struct HasOpen<K, std::void_t<decltype(std::declval<K&>().open)>> : std::true_type {};
 
 class Builder {
  public:
@@ -146,6 +148,9 @@ class Builder {
       for (ObjectDesc& child : csg->children) {
         child.transforms.insert(child.transforms.end(), o.transforms.begin(), o.transforms.end());
         child.noShadow = child.noShadow || o.noShadow;
+        child.noImage = child.noImage || o.noImage;
+        child.noReflection = child.noReflection || o.noReflection;
+        child.noRadiosity = child.noRadiosity || o.noRadiosity;
         add(std::move(child), at);
       }
       return;
@@ -257,6 +262,24 @@ class Builder {
       }
       const auto& f = static_cast<const FunctionValue&>(*n_.items[i_++].value.ref);
       into = f.compiled;
+      if (!into) b_.refuse(f.whyAt, f.why);
+      return true;
+    }
+    // `function W, H { … }` next (a height field's): its size, and its value at (x, y, 0), a pigment function's
+    // grey (manual, "Height Field"; POV-Ray's heights of a pigment function are its grey); null, and refused,
+    // if it did not compile.
+    bool imageFunction(std::shared_ptr<const Function>& into, double& width, double& height) {
+      if (!functionNext()) return false;
+      const auto& f = static_cast<const FunctionValue&>(*n_.items[i_++].value.ref);
+      width = f.width;
+      height = f.height;
+      into = f.compiled;
+      if (f.colour && f.pigment) {
+        using Op = Function::Op;
+        into = std::make_shared<Function>(std::vector<Function::Instr>{{Op::Param, 0}, {Op::Param, 1}, {Op::Param, 2},
+                                                                        {Op::Colour, Function::Gray, 0, nullptr, f.pigment}},
+                                          3, 3);
+      }
       if (!into) b_.refuse(f.whyAt, f.why);
       return true;
     }
@@ -395,6 +418,13 @@ class Builder {
           o.inverse = !o.inverse;
         } else if (it.word == "no_shadow") {
           o.noShadow = true;
+        } else if (it.word == "no_image") {
+          o.noImage = true;
+        } else if (it.word == "no_reflection") {
+          o.noReflection = true;
+        } else if (it.word == "no_radiosity") {
+          o.noRadiosity = true;
+        } else if (it.word == "open" && open(o.shape)) {  // set on the kinds that have ends to leave off
         } else if (it.word == "sturm") {
           const Value* v = valueAfter(n, i);
           sturm(o.shape, !v || v->v[0] != 0);
@@ -426,6 +456,17 @@ class Builder {
     std::visit(
         [on](auto& kind) {
           if constexpr (HasSturm<std::decay_t<decltype(kind)>>::value) kind.sturm = on;
+        },
+        shape);
+  }
+
+  // POV-Ray's `open` among an object's modifiers, for the kinds that have ends to leave off (an `open` member);
+  // false for the others, which refuse it.
+  static bool open(ShapeDesc& shape) {
+    return std::visit(
+        [](auto& kind) {
+          if constexpr (HasOpen<std::decay_t<decltype(kind)>>::value) return kind.open = true;
+          return false;
         },
         shape);
   }

@@ -448,8 +448,8 @@ TEST_CASE("povray scene: a camera whose up lies along its direction has right fl
 
 TEST_CASE("povray scene: a shape or group that cannot be drawn yet is refused where it is written", "[povray]") {
   CHECK(failure("union { sphere { 0, 1 }\n ovus { 1, 0.5 } }\n") == "scene.pov:4:2: error: 'ovus' is not supported yet");
-  CHECK(failure("intersection { sphere { 0, 1 } plane { y, 0 } no_image }\n") ==
-        "scene.pov:3:47: error: 'no_image' is not supported yet");
+  CHECK(failure("intersection { sphere { 0, 1 } plane { y, 0 } double_illuminate }\n") ==
+        "scene.pov:3:47: error: 'double_illuminate' is not supported yet");
   CHECK(failure("sphere { 0 }\n") == "scene.pov:3:1: error: 'sphere' needs the sphere radius");
   CHECK(failure("sphere { 0, -1 }\n") == "scene.pov:3:13: error: the sphere radius must be greater than 0, found -1");
   CHECK(failure("difference { pigment { Red } }\n") == "scene.pov:3:14: error: expected an object inside 'difference'");
@@ -497,6 +497,23 @@ TEST_CASE("povray scene: impossible polynomial shapes, each refused where it is 
         "scene.pov:3:11: error: the poly coefficients of x, y and z are all zero");
   CHECK(failure("quadric { 0, 0, 0, 1 }\n") == "scene.pov:3:11: error: the quadric's coefficients of x, y and z are all zero");
   CHECK(failure("cubic { <1, 2, x> }\n") == "scene.pov:3:16: error: a coefficient must be a float, found a vector");
+}
+
+TEST_CASE("povray scene: open on cylinders and cones, no_image and no_reflection on any object and a union's parts",
+          "[povray]") {
+  const SceneDesc s = scene(
+      "cylinder { 0, y, 1 open }\ncone { 0, 1, y, 0.5 pigment { Red } open }\n"
+      "union { sphere { 0, 1 } sphere { x, 1 no_shadow } no_image }\nbox { 0, 1 no_reflection }\n");
+  REQUIRE(s.objects.size() == 5);
+  CHECK(std::get<CylinderDesc>(s.objects[0].shape).open);
+  CHECK(std::get<ConeDesc>(s.objects[1].shape).open);
+  CHECK(s.objects[2].noImage);
+  CHECK(s.objects[3].noImage);
+  CHECK(s.objects[3].noShadow);
+  CHECK_FALSE(s.objects[3].noReflection);
+  CHECK(s.objects[4].noReflection);
+  CHECK_FALSE(s.objects[4].noImage);
+  CHECK(failure("sphere { 0, 1 open }\n") == "scene.pov:3:15: error: 'open' is not supported yet");
 }
 
 }  // namespace

@@ -102,6 +102,7 @@ struct FunctionValue : Shared {
   std::shared_ptr<const Pigment> pigment;
   std::string why;
   SourceLoc whyAt;
+  double width = 0, height = 0;  // an image function's size, `function W, H { … }` (a height field's); else 0
 };
 
 // `array[N][M]…`: elements in row-major order, unset ones of type None.
