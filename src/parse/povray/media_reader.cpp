@@ -25,6 +25,13 @@ std::optional<Media> readMedia(const Node& n, Refusals& refusals) {
   };
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
+    if (it.kind == Item::Kind::Node && it.node->keyword == "media") {
+      // A declared medium, which the rest of the block modifies.
+      const std::optional<Media> declared = readMedia(*it.node, refusals);
+      if (declared) media = *declared;
+      refused = refused || !declared;
+      continue;
+    }
     if (it.kind != Item::Kind::Keyword) {
       refuse(it.loc, it.kind == Item::Kind::Node ? std::string(it.node->keyword) : "a value in media");
       continue;

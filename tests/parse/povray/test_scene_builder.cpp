@@ -168,6 +168,13 @@ sphere { 0, 1 }
   CHECK(e.media->emission == Color(0.2f));
   CHECK(e.media->samples == 4);
   CHECK_FALSE(s.objects[1].material.extras->media);
+  // A declared medium, modified where it is used.
+  const SceneDesc d = scene("#declare M = media { emission 0.5 samples 3 }\n"
+                            "sphere { 0, 1 interior { media { M absorption 2 } } }\n");
+  const Media& m = *d.objects[0].material.extras->media;
+  CHECK(m.emission == Color(0.5f));
+  CHECK(m.absorption == Color(2));
+  CHECK(m.samples == 3);
   CHECK(failure("box { -1, 1 interior { media { emission 1 density { spherical } } } }\n") ==
         "scene.pov:3:43: error: 'density' is not supported yet");
   CHECK(failure("box { -1, 1 interior { media { scattering { 1, 0.5 } } } }\n") ==
