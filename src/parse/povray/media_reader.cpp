@@ -54,6 +54,7 @@ std::optional<Media> readMedia(const Node& n, Refusals& refusals) {
     }
   }
   if (refused) return std::nullopt;
+  refusals.media = true;
   return media;
 }
 

@@ -183,6 +183,10 @@ sphere { 0, 1 }
         "scene.pov:3:43: error: 'media method other than 3' is not supported yet");
   CHECK(failure("box { -1, 1 interior { media { emission 1 } media { absorption 1 } } }\n") ==
         "scene.pov:3:45: error: 'media' is not supported yet");
+  CHECK(failure("light_source { 0, White media_attenuation on }\n"
+                "box { -1, 1 interior { media { absorption 1 } } }\n") ==
+        "scene.pov:3:25: error: 'media_attenuation' is not supported yet");
+  CHECK(failure("light_source { 0, White media_attenuation on }\n") == "no error");  // nothing to dim it
   CHECK(failure("media { emission 1 }\n") == "scene.pov:3:1: error: 'media' is not supported yet");
   CHECK(failure("box { -1, 1 interior { media { samples 0 } } }\n") ==
         "scene.pov:3:32: error: 'samples' needs at least 1");

@@ -30,6 +30,7 @@ struct Refusals {
     std::string what;
   };
   std::optional<Unsupported> first;
+  bool media = false;  // whether some interior has a medium, which a light's media_attenuation would dim it by
   void refuse(const SourceLoc& loc, std::string_view what) {
     if (!first) first = Unsupported{loc, std::string(what)};
   }
