@@ -566,6 +566,11 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
     const Traced t =
         trace(spawnRay(hit, *refracted, *scene_.arithmetic().offset), RayRecord::Kind::Refraction, child, sub);
     Color gathered = transmitTint * t.color;
+    // Through the interior's medium up to the next surface; a ray that never leaves the object keeps its colour.
+    if (entering && m.extras->media && std::isfinite(t.distance)) {
+      const float length = float(t.distance * glm::length(*refracted));
+      gathered = transmitTint * m.extras->media->through(t.color, length);
+    }
     if (entering && options_.beers) gathered *= beerAttenuation(m.pigment, float(t.distance));
     if (entering && m.extras->fadeDistance > 0) gathered *= interiorFade(m, float(t.distance));
     refraction = w.transmission * gathered;

@@ -451,3 +451,14 @@ TEST_CASE("A scene's gamma raises each pixel's colour before it is written, in r
   Tracer<double> tracer(built, RenderOptions{});
   checkColor(tracer.pixel(Camera<double>(scene.camera, 1, 1), 0, 0), expected);
 }
+
+TEST_CASE("An eye ray across a hollow box of media gets POV-Ray's method 3 colour", "[render][media]") {
+  // POV-Ray 3.7's picture of this scene, 16-bit and linear: 0.27451 emitted plus e^-1 of the white background.
+  const SceneDesc scene = povray::parsePovRay(R"(#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { orthographic location <0, 0, -5> look_at 0 right x * 2 up y * 2 }
+background { rgb 1 }
+box { <-5, -5, -1>, <5, 5, 1> hollow pigment { rgbt 1 } interior { media { absorption 0.5 emission 0.2 } } }
+)", "scene.pov", povray::PovRayOptions{{}, 1, 1, false});
+  checkColor(centre(scene), Color(float(0.27451 + std::exp(-1.0))));
+}

@@ -1,7 +1,10 @@
 // Surface appearance as shading reads it, whichever scene language described it.
 #pragma once
 
+#include <optional>
+
 #include "raytrace/geometry/math.hpp"
+#include "raytrace/surface/media.hpp"
 
 namespace rt {
 
@@ -33,9 +36,14 @@ struct SurfaceExtras {
   // (metallicTint(), shading.hpp); 0: not tinted.
   float reflectionMetallic = 0;
   bool reflectionFresnel = false;
+  // The interior's medium, which a ray that enters the object crosses up to its next hit.
+  std::optional<Media> media;
 
   // Whether any of them changes a picture.
-  bool any() const { return fadeDistance > 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0; }
+  bool any() const {
+    return fadeDistance > 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0 ||
+           media.has_value();
+  }
 };
 
 // The extras of a surface that has none, which every Material points to until given others.

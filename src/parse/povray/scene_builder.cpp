@@ -137,6 +137,8 @@ class Builder {
   }
 
   void finish() {
+    // Media do not dim the lights yet: a light that asks them to is refused, once some object has a medium.
+    if (mediaAttenuation_ && refusals_.media) refusals_.refuse(*mediaAttenuation_, "media_attenuation");
     if (refusals_.first) throw ParseError(refusals_.first->loc, "'" + refusals_.first->what + "' is not supported yet");
   }
 
@@ -656,7 +658,8 @@ class Builder {
       }
       const std::string_view w = it.word;
       if (w == "media_interaction" || w == "media_attenuation") {
-        valueAfter(n, i);
+        const Value* v = valueAfter(n, i);
+        if (w == "media_attenuation" && (!v || v->v[0] != 0)) mediaAttenuation_ = it.loc;
       } else if (w == "shadowless") {
         l.shadowless = true;
       } else if (w == "spotlight" || w == "cylinder") {
@@ -862,6 +865,7 @@ class Builder {
   bool asciiStrings_ = true;  // global_settings' charset
   Surface default_;
   Refusals refusals_;
+  std::optional<SourceLoc> mediaAttenuation_;  // the first light's `media_attenuation on`
   struct Asked {
     std::shared_ptr<const Node> node;  // held, so that its address names no other node
     std::unique_ptr<Object<double>> object;

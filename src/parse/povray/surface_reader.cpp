@@ -691,6 +691,7 @@ FinishTerms finishTerms(const PovFinish& f, const Surface& s) {
   extras.fadeDistance = s.fadePower > 0 ? float(s.fadeDistance) : 0;  // both 0 by default: no fade
   extras.fadePower = float(s.fadePower);
   extras.fadeColor = s.fadeColor;
+  extras.media = s.media;
   if (extras.any()) t.extras = keptExtras(extras);
   t.diffuse = float(f.diffuse);
   // POV-Ray's highlights are white; `specular` has exponent 1/roughness, `phong` its phong_size.
@@ -862,6 +863,8 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
         (it.word == "ior" ? s.ior : it.word == "fade_distance" ? s.fadeDistance : s.fadePower) = v->v[0];
       } else if (it.kind == Item::Kind::Node && it.node->keyword == "interior") {
         readSurfaceItem(*it.node, s, defaults, refusals);
+      } else if (it.kind == Item::Kind::Node && it.node->keyword == "media" && !s.media) {
+        s.media = readMedia(*it.node, refusals);
       } else {
         refusals.refuse(it, "interior");
       }

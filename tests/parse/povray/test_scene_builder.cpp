@@ -156,6 +156,42 @@ TEST_CASE("povray scene: a fog's turbulence and its modifiers; the scene's noise
         "scene.pov:3:37: error: 'warp' is not supported yet");
 }
 
+TEST_CASE("povray scene: an interior's media; density, scattering and other methods are refused", "[povray][media]") {
+  const SceneDesc s = scene(R"(
+box { -1, 1 hollow pigment { rgbt 1 }
+      interior { media { absorption <0.5, 1, 0> emission 0.2 intervals 3 samples 4, 8 method 3 } } }
+sphere { 0, 1 }
+)");
+  const SurfaceExtras& e = *s.objects[0].material.extras;
+  REQUIRE(e.media);
+  CHECK(e.media->absorption == Color(0.5f, 1, 0));
+  CHECK(e.media->emission == Color(0.2f));
+  CHECK(e.media->samples == 4);
+  CHECK_FALSE(s.objects[1].material.extras->media);
+  // A declared medium, modified where it is used.
+  const SceneDesc d = scene("#declare M = media { emission 0.5 samples 3 }\n"
+                            "sphere { 0, 1 interior { media { M absorption 2 } } }\n");
+  const Media& m = *d.objects[0].material.extras->media;
+  CHECK(m.emission == Color(0.5f));
+  CHECK(m.absorption == Color(2));
+  CHECK(m.samples == 3);
+  CHECK(failure("box { -1, 1 interior { media { emission 1 density { spherical } } } }\n") ==
+        "scene.pov:3:43: error: 'density' is not supported yet");
+  CHECK(failure("box { -1, 1 interior { media { scattering { 1, 0.5 } } } }\n") ==
+        "scene.pov:3:32: error: 'scattering' is not supported yet");
+  CHECK(failure("box { -1, 1 interior { media { emission 1 method 2 } } }\n") ==
+        "scene.pov:3:43: error: 'media method other than 3' is not supported yet");
+  CHECK(failure("box { -1, 1 interior { media { emission 1 } media { absorption 1 } } }\n") ==
+        "scene.pov:3:45: error: 'media' is not supported yet");
+  CHECK(failure("light_source { 0, White media_attenuation on }\n"
+                "box { -1, 1 interior { media { absorption 1 } } }\n") ==
+        "scene.pov:3:25: error: 'media_attenuation' is not supported yet");
+  CHECK(failure("light_source { 0, White media_attenuation on }\n") == "no error");  // nothing to dim it
+  CHECK(failure("media { emission 1 }\n") == "scene.pov:3:1: error: 'media' is not supported yet");
+  CHECK(failure("box { -1, 1 interior { media { samples 0 } } }\n") ==
+        "scene.pov:3:32: error: 'samples' needs at least 1");
+}
+
 TEST_CASE("povray scene: light modifiers that are not drawn yet are refused where they are written", "[povray]") {
   CHECK(failure("light_source { 0, White area_light x, z, 2, 2 area_illumination }\n") ==
         "scene.pov:3:47: error: 'area_illumination' is not supported yet");

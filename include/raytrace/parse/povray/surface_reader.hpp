@@ -30,6 +30,7 @@ struct Refusals {
     std::string what;
   };
   std::optional<Unsupported> first;
+  bool media = false;  // whether some interior has a medium, which a light's media_attenuation would dim it by
   void refuse(const SourceLoc& loc, std::string_view what) {
     if (!first) first = Unsupported{loc, std::string(what)};
   }
@@ -38,6 +39,9 @@ struct Refusals {
 
 // `image_map { [type] "file" … }` (image_map_reader.cpp); nothing when something in it is refused.
 std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals);
+
+// `media { … }` in an interior (media_reader.cpp); nothing when something in it is refused.
+std::optional<Media> readMedia(const Node& n, Refusals& refusals);
 
 glm::dvec3 vec3(const Value& v);
 Rgbft colourOf(const Value& v);
@@ -83,6 +87,7 @@ struct Surface {
   double ior = 1;
   double fadeDistance = 0, fadePower = 0;  // the interior's fade (Material)
   Color fadeColor{0};
+  std::optional<Media> media;  // the interior's (Material)
   bool patterned() const;  // whether some layer's colour varies, or there are layers: a Texture is needed
 };
 
