@@ -73,7 +73,6 @@ TEST_CASE("povray radiosity: a count out of its range or a setting without its n
         "scene.pov:2:31: error: radiosity's 'nearest_count' must be from 1 to 10000000");
   CHECK(povFailure("global_settings { radiosity { brightness } }\n") ==
         "scene.pov:2:31: error: radiosity's 'brightness' needs a number");
-  CHECK(povFailure("sphere { 0, 1 no_radiosity }\n") == "scene.pov:2:15: error: 'no_radiosity' is not supported yet");
 }
 
 TEST_CASE("povray radiosity: a 3.7 scene's ambient is 0 and its emission stays; an older scene's ambient stays",
