@@ -1,15 +1,13 @@
 #include <cmath>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
 #include "raytrace/app/arguments.hpp"
-#include "raytrace/app/commands.hpp"
 #include "raytrace/render/antialias.hpp"
 #include "raytrace/render/renderer.hpp"
-#include "raytrace/util/error.hpp"
+#include "command_error.hpp"
 #include "pov_scene.hpp"
 
 using namespace rt;
@@ -142,23 +140,15 @@ TEST_CASE("anti-aliased pictures are the same for any threads, tiles and regions
 }
 
 TEST_CASE("anti-aliasing's options are checked before anything is read", "[antialias]") {
-  const auto error = [](std::vector<std::string> args) -> std::string {
-    std::ostringstream out, err;
-    try {
-      runCommand(args, out, err);
-    } catch (const Error& e) {
-      return e.what();
-    }
-    return "no error";
-  };
-  CHECK(error({"render", "scene.pov", "4", "4", "--aa=3"}) == "--aa must be between 1 and 2, found 3");
-  CHECK(error({"render", "scene.pov", "4", "4", "--aa-threshold=3.5"}) ==
+  using test::errorOf;
+  CHECK(errorOf({"render", "scene.pov", "4", "4", "--aa=3"}) == "--aa must be between 1 and 2, found 3");
+  CHECK(errorOf({"render", "scene.pov", "4", "4", "--aa-threshold=3.5"}) ==
         "--aa-threshold must be a number from 0 to 3, found '3.5'");
-  CHECK(error({"render", "scene.pov", "4", "4", "--aa-depth=10"}) == "--aa-depth must be between 1 and 9, found 10");
-  CHECK(error({"render", "scene.pov", "4", "4", "--jitter=x"}) == "--jitter must be a number from 0 to 1, found 'x'");
-  CHECK(error({"render", "scene.pov", "4", "4", "--aa=1", "-ss=3"}) ==
+  CHECK(errorOf({"render", "scene.pov", "4", "4", "--aa-depth=10"}) == "--aa-depth must be between 1 and 9, found 10");
+  CHECK(errorOf({"render", "scene.pov", "4", "4", "--jitter=x"}) == "--jitter must be a number from 0 to 1, found 'x'");
+  CHECK(errorOf({"render", "scene.pov", "4", "4", "--aa=1", "-ss=3"}) ==
         "--aa and -ss both choose the rays per pixel: give one");
-  CHECK(error({"pixelcolor", "scene.pov", "4", "4", "0", "0", "--aa=1"}) == "--aa is for the render command only");
+  CHECK(errorOf({"pixelcolor", "scene.pov", "4", "4", "0", "0", "--aa=1"}) == "--aa is for the render command only");
 }
 
 TEST_CASE("a tile records anti-aliasing's settings among the options that change pixels", "[antialias]") {

@@ -6,6 +6,7 @@
 #include "raytrace/render/renderer.hpp"
 #include "raytrace/render/tracer.hpp"
 #include "raytrace/scene/arithmetic.hpp"
+#include "same_on_any_threads.hpp"
 
 using namespace rt;
 
@@ -74,24 +75,5 @@ TEST_CASE("focal blur: the same picture on any threads, pixel() agrees, and vari
           "[render]") {
   const SceneDesc scene = pov("camera { location <0, 3, -4> look_at 0 aperture 0.8 blur_samples 4, 9 "
                               "focal_point <0, 0.7, 0> variance 0 }\n");
-  RenderOptions options;
-  options.threads = 1;
-  const Image one = render(scene, 24, 18, options);
-  options.threads = 3;
-  const Image three = render(scene, 24, 18, options);
-  const Arithmetic arithmetic = chooseArithmetic(scene, options.arithmetic);
-  withPrecision(arithmetic.tier, [&](auto tag) {
-    using T = decltype(tag);
-    const Scene<T> s(scene, arithmetic);
-    const Camera<T> camera(scene.camera, 24, 18);
-    Tracer<T> tracer(s, options);
-    for (int y = 0; y < 18; ++y) {
-      for (int x = 0; x < 24; ++x) {
-        CAPTURE(x, y);
-        REQUIRE(one.at(x, y) == three.at(x, y));
-        REQUIRE(one.at(x, y) == tracer.pixel(camera, x, y));
-      }
-    }
-    CHECK(tracer.counts().eye == 24 * 18 * 9);
-  });
+  CHECK(test::checkSameOnAnyThreads(scene, 24, 18, RenderOptions{}) == 24 * 18 * 9);
 }

@@ -10,6 +10,7 @@
 #include "raytrace/parse/scene_file.hpp"
 #include "raytrace/render/renderer.hpp"
 #include "raytrace/render/tracer.hpp"
+#include "same_on_any_threads.hpp"
 #include "scene_builder.hpp"
 
 using namespace rt;
@@ -339,25 +340,7 @@ TEST_CASE("A jittered area light gives the same picture on any threads, and pixe
       "sphere { <0, 0.7, 0>, 0.7 pigment { rgb <1, 0.5, 0.2> } }\n"
       "plane { y, 0 pigment { rgb 1 } }\n";
   const SceneDesc scene = rt::povray::parsePovRay(text, "jitter.pov", rt::povray::PovRayOptions{{}, 45, 37, false});
-  RenderOptions options;
-  options.threads = 1;
-  const Image one = render(scene, 45, 37, options);
-  options.threads = 3;
-  const Image three = render(scene, 45, 37, options);
-  const Arithmetic arithmetic = chooseArithmetic(scene, options.arithmetic);
-  withPrecision(arithmetic.tier, [&](auto tag) {
-    using T = decltype(tag);
-    const Scene<T> s(scene, arithmetic);
-    const Camera<T> camera(scene.camera, 45, 37);
-    Tracer<T> tracer(s, options);
-    for (int y = 0; y < 37; ++y) {
-      for (int x = 0; x < 45; ++x) {
-        CAPTURE(x, y);
-        REQUIRE(one.at(x, y) == three.at(x, y));
-        REQUIRE(one.at(x, y) == tracer.pixel(camera, x, y));
-      }
-    }
-  });
+  test::checkSameOnAnyThreads(scene, 45, 37, RenderOptions{});
 }
 
 TEST_CASE("Bad shading flags are reported with the accepted values", "[render]") {
