@@ -1,4 +1,5 @@
 // The commands that write images: raycast (Program 1) and render, whole or one tile of the picture.
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -244,7 +245,14 @@ int renderImage(const Invocation& inv, std::ostream&) {
     RenderStats stats;
     stats.width = inv.width;
     stats.height = inv.height;
-    stats.eyeRays = options.samples * options.samples;
+    // Adaptive anti-aliasing and focal blur trace as many eye rays as each pixel needs: their mean.
+    const CameraDesc::FocalBlur& blur = inv.scene.camera.focalBlur;
+    if (options.aa.method != 0 || (blur.aperture > 0 && blur.maxSamples > 0)) {
+      const Region r = inv.region.value_or(wholeImage(inv.width, inv.height));
+      stats.eyeRays = double(rays.eye) / (double(r.width()) * double(r.height()) * double(std::max<size_t>(writable.size(), 1)));
+    } else {
+      stats.eyeRays = options.samples * options.samples;
+    }
     stats.threads = options.threads;
     stats.cache = options.gi.enabled && options.gi.cache;
     stats.load = inv.loadSeconds;

@@ -301,6 +301,10 @@ TEST_CASE("cli: the stats' text and JSON of the same figures") {
         "raytrace: irradiance cache 3 records, 40 lookups, 0 gathered uncached\n");
   CHECK(rt::statsJson(s).find(", \"irradiance_cache\": {\"records\": 3, \"lookups\": 40, \"gathered_uncached\": 0}, "
                               "\"peak_memory_bytes\"") != std::string::npos);
+  // Adaptive anti-aliasing and focal blur give the mean.
+  s.eyeRays = 2.4375;
+  CHECK(rt::statsText(s).find("(640x480, 2.44 eye rays per pixel, 2 threads)") != std::string::npos);
+  CHECK(rt::statsJson(s).find("\"eye_rays_per_pixel\": 2.44,") != std::string::npos);
 }
 
 TEST_CASE("cli: 30,000 identical warnings are one line with their count") {

@@ -11,7 +11,7 @@ namespace rt {
 // A render's figures: its size and settings, how long each step took (seconds) and what it traced.
 struct RenderStats {
   int width = 0, height = 0;
-  int eyeRays = 1;  // per pixel
+  double eyeRays = 1;  // per pixel: the samples' grid, or the mean where it varies (--aa, focal blur)
   int threads = 1;
   bool cache = false;  // --gi-cache: the cache's figures are reported too
   double load = 0, build = 0, trace = 0, write = 0;
