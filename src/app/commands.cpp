@@ -254,7 +254,10 @@ int mergeCommand(const std::vector<std::string>& args, std::ostream& err) {
   load.height = inv.height;
   inv.scene = loadScene(inv.scenePath, inv.options.threads, load);
   useRadiosity(inv.options, inv.scene);
-  return merge(own, TileRequest{tileHeader(inv, "render"), inv.width, inv.height});
+  TileRequest wanted{{}, inv.width, inv.height};
+  for (const WriteDesc& w : inv.scene.writes) wanted.headers.push_back(tileHeader(inv, "render", &w));
+  if (wanted.headers.empty()) wanted.headers.push_back(tileHeader(inv, "render"));
+  return merge(own, wanted);
 }
 
 // Runs `command`, one that reads a scene, with what its words say.

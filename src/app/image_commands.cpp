@@ -41,8 +41,9 @@ struct Target {
 };
 
 // Where the images go: -o or output.png; for a .cli scene with `write`s (when `sceneWrites`), each to its own
-// name, inside the -o folder if there is one, or to the -o file if the scene writes one image. A name the
-// scene gives must stay in the folder (staysInFolder, linksOut) unless --allow-write-anywhere.
+// name, inside the -o folder if there is one, or to the -o file if the scene writes one image; a tile of each
+// goes into the -o folder as its name with .exr for its extension. A name the scene gives must stay in the
+// folder (staysInFolder, linksOut) unless --allow-write-anywhere.
 std::vector<Target> targets(const Invocation& inv, bool sceneWrites) {
   const std::vector<WriteDesc>& writes = inv.scene.writes;
   const bool folder = !inv.output.empty() && isFolder(inv.output);
@@ -69,7 +70,15 @@ std::vector<Target> targets(const Invocation& inv, bool sceneWrites) {
         throw ParseError(w.loc, "'write' names " + quote(w.path) + ", but a folder on its way is a symbolic link "
                                 "out of the folder the scene is rendered into (--allow-write-anywhere allows it)");
       }
-      out.push_back({folder && w.path[0] != '/' ? inv.output + "/" + w.path : w.path, &w});
+      std::string path = folder && w.path[0] != '/' ? inv.output + "/" + w.path : w.path;
+      if (inv.region) {
+        const size_t ext = extension(path).size();
+        path = path.substr(0, path.size() - (ext ? ext + 1 : 0)) + ".exr";
+      }
+      for (const Target& t : out) {
+        if (t.path == path) throw ParseError(w.loc, "this image's tile would be " + quote(path) + " too");
+      }
+      out.push_back({path, &w});
     }
   }
   return out;
@@ -77,11 +86,12 @@ std::vector<Target> targets(const Invocation& inv, bool sceneWrites) {
 
 // The image of inv's picture, or of its region, written to `path`. An OpenEXR file carries the render's
 // attributes (tile_header.hpp), so that merge takes a whole image as a tile of itself.
-void write(const Invocation& inv, const char* command, Image&& image, const std::string& path,
+void write(const Invocation& inv, const char* command, Image&& image, const Target& target,
            Conventions::ToByte mode) {
-  if (imageFormat(path) != ImageFormat::Exr) return writeImage(image, path, mode, inv.options.threads);
+  if (imageFormat(target.path) != ImageFormat::Exr) return writeImage(image, target.path, mode, inv.options.threads);
   const Region region = inv.region.value_or(wholeImage(inv.width, inv.height));
-  writeExr(ExrImage{inv.width, inv.height, region, std::move(image), tileHeader(inv, command)}, path);
+  writeExr(ExrImage{inv.width, inv.height, region, std::move(image), tileHeader(inv, command, target.write)},
+           target.path);
 }
 
 // checkImagePath(path), and that `path` is not the scene file (under any name): the image must not replace it.
@@ -126,10 +136,10 @@ void writeDataFiles(const Invocation& inv) {
 
 // With --resume, whether the tile at `path` is already the one this render makes, so that it is kept; either
 // way the user is told, and why a tile is rendered again.
-bool keptTile(const Invocation& inv, const char* command, const std::string& path) {
+bool keptTile(const Invocation& inv, const char* command, const Target& target) {
   if (!inv.resume) return false;
-  const std::string why = tileStaleness(inv, command, path);
-  *inv.errors << "raytrace: " << quote(path, kMaxQuotedPath)
+  const std::string why = tileStaleness(inv, command, target.path, target.write);
+  *inv.errors << "raytrace: " << quote(target.path, kMaxQuotedPath)
               << (why.empty() ? " is already this tile: kept" : " is " + why + ": rendering it") << "\n";
   return why.empty();
 }
@@ -139,7 +149,7 @@ bool keptTile(const Invocation& inv, const char* command, const std::string& pat
 void checkOutput(const Invocation& inv) {
   if (inv.region) {
     if (inv.output.empty()) throw Error("a tile is written as OpenEXR: name it with -o NAME.exr");
-    if (imageFormat(inv.output) != ImageFormat::Exr) {
+    if (!isFolder(inv.output) && imageFormat(inv.output) != ImageFormat::Exr) {
       throw Error("cannot write " + quote(inv.output, kMaxQuotedPath) +
                   ": a tile is written as OpenEXR (name it .exr)");
     }
@@ -153,7 +163,7 @@ int raycast(const Invocation& inv, std::ostream&) {
   const Target target = targets(inv, false).front();
   checkTarget(inv, target.path);
   checkDataFiles(inv, target.path);
-  if (keptTile(inv, "raycast", target.path)) return 0;
+  if (keptTile(inv, "raycast", target)) return 0;
   const Region region = inv.region.value_or(wholeImage(inv.width, inv.height));
   Image image(region.width(), region.height());
   // Image::at counts rows upward from the bottom; the region's rows counted from the top.
@@ -169,7 +179,7 @@ int raycast(const Invocation& inv, std::ostream&) {
     }
     return 0;
   });
-  write(inv, "raycast", std::move(image), target.path, inv.scene.conventions.toByte);
+  write(inv, "raycast", std::move(image), target, inv.scene.conventions.toByte);
   writeDataFiles(inv);
   return 0;
 }
@@ -183,7 +193,6 @@ int renderImage(const Invocation& inv, std::ostream&) {
   RayCounts rays;
   const RenderOptions& options = inv.options;
   const std::vector<Target> all = targets(inv, true);
-  if (inv.region && all.size() != 1) throw Error("a tile is of one image, but the scene writes several");
   for (const Target& t : all) checkDataFiles(inv, t.path);
   int status = 0;
   // Runs `step` for target t. The Error of a scene's own write is reported at the write and the others go on.
@@ -203,11 +212,13 @@ int renderImage(const Invocation& inv, std::ostream&) {
   };
   std::vector<const Target*> writable;
   for (const Target& t : all) {
-    if (attempt(t, [&] { checkTarget(inv, t.path); })) writable.push_back(&t);
+    if (attempt(t, [&] { checkTarget(inv, t.path); }) && !(inv.region && keptTile(inv, "render", t))) {
+      writable.push_back(&t);
+    }
   }
-  if (inv.region && !writable.empty() && keptTile(inv, "render", writable.front()->path)) return status;
   double writing = 0;
-  const auto renderTo = [&](const SceneDesc& scene, const std::string& path) {
+  const auto renderTo = [&](const SceneDesc& scene, const Target& target) {
+    const std::string& path = target.path;
     // --display and --preview watch the picture fill in. The preview's last write comes before the image's, so
     // that no two files are written at once (one temporary file is removed on an interrupt); the window
     // closes once the image is written.
@@ -230,14 +241,14 @@ int renderImage(const Invocation& inv, std::ostream&) {
       Image image = render(scene, inv.width, inv.height, region, options, monitor);
       preview.reset();
       Stopwatch watch;
-      write(inv, "render", std::move(image), path, scene.conventions.toByte);
+      write(inv, "render", std::move(image), target, scene.conventions.toByte);
       writing += watch.lap();
     }
   };
   for (const Target* t : writable) {
     attempt(*t, [&] {
-      if (t->write) renderTo(sceneAt(inv.scene, *t->write), t->path);
-      else renderTo(inv.scene, t->path);
+      if (t->write) renderTo(sceneAt(inv.scene, *t->write), *t);
+      else renderTo(inv.scene, *t);
     });
   }
   writeDataFiles(inv);

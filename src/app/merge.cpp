@@ -67,7 +67,15 @@ int merge(const std::vector<std::string>& args, const std::optional<TileRequest>
       throw Error(quote(name, kMaxQuotedPath) + " is not a raytrace tile: it has no raytrace.command attribute");
     }
     if (request) {
-      std::string why = headerDifference(tile.attributes, request->header, true);
+      // A tile of one of the scene's own images is checked against that image's request.
+      const auto& headers = request->headers;
+      const auto image = tile.attributes.find(kImageAttribute);
+      auto wanted = headers.begin();
+      while (image != tile.attributes.end() && wanted + 1 != headers.end() &&
+             wanted->at(kImageAttribute) != image->second) {
+        ++wanted;
+      }
+      std::string why = headerDifference(tile.attributes, *wanted, true);
       if (why.empty() && (tile.width != request->width || tile.height != request->height)) {
         why = "its picture is " + std::to_string(tile.width) + "x" + std::to_string(tile.height) + ", not " +
               std::to_string(request->width) + "x" + std::to_string(request->height);

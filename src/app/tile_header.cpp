@@ -51,9 +51,10 @@ std::string baseName(const std::string& path) {
 
 }  // namespace
 
-std::map<std::string, std::string> tileHeader(const Invocation& inv, const std::string& command) {
+std::map<std::string, std::string> tileHeader(const Invocation& inv, const std::string& command,
+                                              const WriteDesc* write) {
   const Region r = inv.region.value_or(wholeImage(inv.width, inv.height));
-  return {
+  std::map<std::string, std::string> header{
       {"raytrace.version", RAYTRACE_VERSION},
       {"raytrace.command", command},
       {"raytrace.scene", baseName(inv.scenePath)},
@@ -65,6 +66,8 @@ std::map<std::string, std::string> tileHeader(const Invocation& inv, const std::
                                                   std::to_string(r.x1) + "," + std::to_string(r.y1)
                                             : inv.tile},
   };
+  if (write) header[kImageAttribute] = write->path;
+  return header;
 }
 
 std::string headerDifference(const std::map<std::string, std::string>& mine,
@@ -81,7 +84,8 @@ std::string headerDifference(const std::map<std::string, std::string>& mine,
   return "";
 }
 
-std::string tileStaleness(const Invocation& inv, const std::string& command, const std::string& path) {
+std::string tileStaleness(const Invocation& inv, const std::string& command, const std::string& path,
+                          const WriteDesc* write) {
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) return "missing";
   std::optional<ExrImage> read;
@@ -91,7 +95,7 @@ std::string tileStaleness(const Invocation& inv, const std::string& command, con
     return "unreadable (" + printable(e.what(), kMaxQuotedPath) + ")";
   }
   const ExrImage& tile = *read;
-  const std::string why = headerDifference(tile.attributes, tileHeader(inv, command), false);
+  const std::string why = headerDifference(tile.attributes, tileHeader(inv, command, write), false);
   if (!why.empty()) return "stale (" + why + ")";
   const Region r = inv.region.value_or(wholeImage(inv.width, inv.height));
   if (tile.width != inv.width || tile.height != inv.height || !(tile.window == r)) {

@@ -111,6 +111,33 @@ TEST_CASE("image commands: -o and a .cli scene's own images") {
         "-o '" + dir.path() + "' is a folder, but '" + pov + "' names no images of its own: give -o the image's file name");
 }
 
+TEST_CASE("image commands: a .cli scene's images are tiled into -o's folder, each merged into its one-machine bytes") {
+  const rt::test::TempDir dir;
+  const std::string two = dir.write("two.cli", "fov 60\nlight 1 1 1 1 1 1\nsurface .2 .2 .2 1 1 1 0 0 0 1 0\n"
+                                               "sphere 0 0 -4 1\nwrite a.png\nsphere 1 0 -4 0.5\nwrite b.png\n");
+  for (const std::string part : {"0", "1"}) {
+    REQUIRE(mkdir(dir.file("t" + part).c_str(), 0755) == 0);
+    REQUIRE(outputOf({"render", two, "16", "12", "--tile", part + "/2", "-o", dir.file("t" + part)}).empty());
+  }
+  REQUIRE(mkdir(dir.file("whole").c_str(), 0755) == 0);
+  REQUIRE(outputOf({"render", two, "16", "12", "-o", dir.file("whole")}).empty());
+  for (const std::string image : {"a", "b"}) {
+    const std::string merged = dir.file(image + ".png");
+    REQUIRE(outputOf({"merge", "-o", merged, dir.file("t0/" + image + ".exr"), dir.file("t1/" + image + ".exr"),
+                      "--for", two, "16", "12"}).empty());
+    CHECK(rt::test::readAll(merged) == rt::test::readAll(dir.file("whole/" + image + ".png")));
+  }
+  CHECK(errorOf({"merge", "-o", dir.file("x.png"), dir.file("t0/a.exr"), dir.file("t1/b.exr")}) ==
+        "'" + dir.file("t1/b.exr") + "' is a tile of another render than '" + dir.file("t0/a.exr") +
+            "': its raytrace.image is 'b.png', not 'a.png'");
+  CHECK(messagesOf({"render", two, "16", "12", "--tile", "0/2", "-o", dir.file("t0"), "--resume"}) ==
+        "raytrace: '" + dir.file("t0/a.exr") + "' is already this tile: kept\nraytrace: '" + dir.file("t0/b.exr") +
+            "' is already this tile: kept\n");
+  const std::string same = dir.write("same.cli", "fov 60\nwrite c.png\nwrite c.png\n");
+  CHECK(errorOf({"render", same, "16", "12", "--tile", "0/2", "-o", dir.file("t0")}) ==
+        same + ":3:1: error: this image's tile would be '" + dir.file("t0/c.exr") + "' too");
+}
+
 TEST_CASE("image commands: -o's folder keeps a .cli scene's writes in it, and a failed write does not stop the others") {
   const rt::test::TempDir dir, outDir;
   const std::string out = outDir.path();

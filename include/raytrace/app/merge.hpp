@@ -17,7 +17,8 @@ namespace rt {
 // tile of that render: what a resumed render on many machines checks, so that no tile of an older request is
 // merged. A merged OpenEXR image keeps the tiles' attributes, so it is a tile of its render in turn.
 struct TileRequest {
-  std::map<std::string, std::string> header;  // tileHeader() of the whole picture
+  // tileHeader() of the whole picture; of each image a .cli scene writes, in its order.
+  std::vector<std::map<std::string, std::string>> headers;
   int width = 0, height = 0;
 };
 int merge(const std::vector<std::string>& args, const std::optional<TileRequest>& request = std::nullopt);

@@ -16,9 +16,13 @@ constexpr const char* kTilePartAttribute = "raytrace.part";
 // bytes, the scene language's (Conventions::ToByte).
 constexpr const char* kToByteAttribute = "raytrace.toByte";
 
-// Every attribute of a tile of `command` ("render" or "raycast") with `inv`, or of the whole image. The scene file is read again for
-// its hash (FNV-1a, 64 bits).
-std::map<std::string, std::string> tileHeader(const Invocation& inv, const std::string& command);
+// The attribute naming which of a .cli scene's own images (its `write`) a tile is of.
+constexpr const char* kImageAttribute = "raytrace.image";
+
+// Every attribute of a tile of `command` ("render" or "raycast") with `inv`, or of the whole image; of the image
+// `write` names if the scene writes its own. The scene file is read again for its hash (FNV-1a, 64 bits).
+std::map<std::string, std::string> tileHeader(const Invocation& inv, const std::string& command,
+                                              const WriteDesc* write = nullptr);
 
 // The first attribute in which header `mine` differs from `wanted`, the part too unless `ignorePart`:
 // "its raytrace.size is '61x43', not '80x60'", or "" if none. Values are quoted and bounded.
@@ -27,7 +31,8 @@ std::string headerDifference(const std::map<std::string, std::string>& mine,
 
 // Why the file at `path` is not the tile of `command` with `inv` (its header, picture size and data window):
 // "" when it is; "missing", "unreadable (<error>)" or "stale (its <attribute> is ..., not ...)".
-std::string tileStaleness(const Invocation& inv, const std::string& command, const std::string& path);
+std::string tileStaleness(const Invocation& inv, const std::string& command, const std::string& path,
+                          const WriteDesc* write = nullptr);
 
 // The byte conversion a header names, or an Error naming `file` for another value.
 Conventions::ToByte toByteOf(const std::map<std::string, std::string>& header, const std::string& file);
