@@ -28,6 +28,7 @@
 #include "raytrace/shapes/quadric.hpp"
 #include "raytrace/shapes/sor.hpp"
 #include "raytrace/shapes/sphere.hpp"
+#include "raytrace/shapes/sphere_sweep.hpp"
 #include "raytrace/shapes/superellipsoid.hpp"
 #include "raytrace/shapes/torus.hpp"
 #include "raytrace/shapes/text.hpp"
@@ -39,7 +40,8 @@ namespace rt {
 
 using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc, CsgDesc, TorusDesc,
                                QuadricDesc, PolyDesc, TextDesc, PrismDesc, LatheDesc, SorDesc, DiscDesc,
-                               SuperellipsoidDesc, BlobDesc, MeshDesc, PolygonDesc, IsosurfaceDesc>;
+                               SuperellipsoidDesc, BlobDesc, MeshDesc, PolygonDesc, IsosurfaceDesc,
+                               SphereSweepDesc>;
 
 struct ClipDesc;
 
