@@ -115,6 +115,10 @@ Color interiorFade(const Material& m, float distance) {
   return a + (1 - a) * e.fadeColor;
 }
 
+float fakedCaustics(float caustics, float cosTheta) {
+  return 1 + std::pow(std::abs(cosTheta), 45 * caustics);
+}
+
 Color beerAttenuation(const Color& pigment, float distance) {
   Color kept(1.0f);
   for (int c = 0; c < 3; ++c) {

@@ -533,8 +533,10 @@ template <class T> Color Tracer<T>::transmittance(const Ray<T>& ray, Interval<T>
     const std::optional<Hit<T>> hit = scene_.closestHit(ray, segment);
     if (!hit) return through;
     Material textured;
-    const Material& m = hit->object->materialAt(hit->point, textured);
+    Vec3<T> n = hit->normal;
+    const Material& m = hit->object->materialAt(hit->point, textured, n);
     through *= m.filter * m.pigment;
+    if (m.extras->caustics != 0) through *= fakedCaustics(m.extras->caustics, float(glm::dot(n, ray.dir) / glm::length(ray.dir)));
     // Leaving an object with an interior fade: the light faded over its way inside, from the surface before.
     if (m.extras->fadeDistance > 0 && glm::dot(ray.dir, hit->normal) > T(0)) {
       through *= interiorFade(m, float((hit->t - segment.min) * glm::length(ray.dir)));

@@ -383,3 +383,20 @@ TEST_CASE("cli: a POV-Ray scene's shadows pass transparent surfaces, each tintin
   CHECK(colour("rgbft <1, 0, 0, 0.5, 0.25>") == "Color: (198, 71, 71)\n");
   CHECK(colour("rgb <1, 0, 0>") == "Color: (0, 0, 0)\n");
 }
+
+TEST_CASE("cli: a POV-Ray interior's caustics brighten the shadow by how the surface faces the light") {
+  const rt::test::TempDir dir;
+  // A disc of filter 0.5, tilted by the angle A, between a parallel light straight above and the plane seen from
+  // above: 1 + cos(A)^(45·caustics) of the shadow's light. POV-Ray gave the colours.
+  const std::string scene = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+                            "camera { orthographic location <0, 10, 0> look_at 0 right x * 2 up z * 2 }\n"
+                            "light_source { <0, 1000, 0> rgb 1 parallel point_at 0 }\n"
+                            "plane { y, 0 pigment { rgb 0.5 } finish { ambient 0 diffuse 1 } }\n"
+                            "disc { <0, 1, 0>, y, 100 INTERIOR pigment { rgbf <1, 1, 1, 0.5> } finish { ambient 0 "
+                            "diffuse 0 } no_image }\n";
+  const auto colour = [&](const std::string& interior) { return centreColour(dir, scene, "INTERIOR", interior); };
+  CHECK(colour("") == "Color: (137, 137, 137)\n");  // sRGB(0.25)
+  CHECK(colour("rotate x * 5 interior { caustics 1 }") == "Color: (181, 181, 181)\n");
+  CHECK(colour("rotate x * 20 interior { caustics 0.25 }") == "Color: (165, 165, 165)\n");
+  CHECK(colour("interior { caustics 1 }") == "Color: (188, 188, 188)\n");  // facing the light: twice the light
+}

@@ -178,6 +178,13 @@ TEST_CASE("POV-Ray's interior fade: half at the fade distance, tinted by the fad
   CHECK(interiorFade(m, std::numeric_limits<float>::infinity()) == e.fadeColor);
 }
 
+TEST_CASE("POV-Ray's faked caustics: up to twice the light where the surface faces it", "[shading]") {
+  CHECK(fakedCaustics(1, 1) == 2);
+  CHECK(fakedCaustics(1, -1) == 2);  // either side of the surface
+  CHECK(fakedCaustics(2, 0) == 1);
+  CHECK_THAT(fakedCaustics(0.5f, -0.5f), WithinAbs(1 + std::pow(0.5, 22.5), 1e-6));
+}
+
 TEST_CASE("POV-Ray's variable reflection: from its minimum to its maximum by the falloff, or by Fresnel",
           "[shading]") {
   Material m;

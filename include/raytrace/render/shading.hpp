@@ -52,6 +52,11 @@ Color beerAttenuation(const Color& pigment, float distance);
 // or a = exp(−distance/fadeDistance) for a fadePower of 1000 or more. An infinite path keeps fadeColor.
 Color interiorFade(const Material& m, float distance);
 
+// POV-Ray's faked caustics (SurfaceExtras::caustics, POV-Ray 3.7 manual "Simulated Caustics"): a shadow ray that
+// crosses the surface lets through 1 + |cos θ|^(45·caustics) times the light, θ between the (bent) normal and the
+// ray. The exponent 45·caustics was measured on real POV-Ray (a tilted disc over a plane, docs/povray-language.md).
+float fakedCaustics(float caustics, float cosTheta);
+
 // Fresnel's reflectance of unpolarized light at a dielectric of relative index `ior`, cos θ = cosTheta (the
 // exact formula, Cook and Torrance 1982, eq. 12 form): ½((g − c)/(g + c))²(1 + ((c(g + c) − 1)/(c(g − c) + 1))²)
 // with g = √(ior² + c² − 1); 1 where g is not real (total internal reflection).

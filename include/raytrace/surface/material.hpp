@@ -25,6 +25,9 @@ struct SurfaceExtras {
   // a = 1 / (1 + (d / fadeDistance)^fadePower) (POV-Ray 3.7 manual, "Attenuation"); fadeDistance 0: none.
   float fadeDistance = 0, fadePower = 0;
   Color fadeColor{0};
+  // The interior's faked caustics (POV-Ray 3.7 manual, "Simulated Caustics"): a shadow ray crossing the surface
+  // takes fakedCaustics() of the light it lets through; 0: none.
+  float caustics = 0;
   // Variable reflection (`reflection { min, max falloff F fresnel }`): reflectionMin facing the viewer up to
   // the Material's `reflection` at grazing angles, by (1 − cos θ)^reflectionFalloff or by Fresnel's reflectance
   // at its `ior` (variableReflection(), shading.hpp). reflectionFalloff 0: a constant `reflection`.
@@ -41,7 +44,7 @@ struct SurfaceExtras {
 
   // Whether any of them changes a picture.
   bool any() const {
-    return fadeDistance > 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0 ||
+    return fadeDistance > 0 || caustics != 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0 ||
            media.has_value();
   }
 };

@@ -691,6 +691,7 @@ FinishTerms finishTerms(const PovFinish& f, const Surface& s) {
   extras.fadeDistance = s.fadePower > 0 ? float(s.fadeDistance) : 0;  // both 0 by default: no fade
   extras.fadePower = float(s.fadePower);
   extras.fadeColor = s.fadeColor;
+  extras.caustics = float(s.caustics);
   extras.media = s.media;
   if (extras.any()) t.extras = keptExtras(extras);
   t.diffuse = float(f.diffuse);
@@ -854,13 +855,17 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
   } else if (k == "interior") {
     for (size_t i = 0; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
-      const bool known = it.kind == Item::Kind::Keyword && (it.word == "ior" || it.word == "fade_distance" ||
-                                                            it.word == "fade_power" || it.word == "fade_color");
+      const bool known = it.kind == Item::Kind::Keyword &&
+                         (it.word == "ior" || it.word == "fade_distance" || it.word == "fade_power" ||
+                          it.word == "fade_color" || it.word == "caustics");
       const Value* v = known ? valueAfter(n, i) : nullptr;
       if (v && v->numeric() && it.word == "fade_color") {
         s.fadeColor = colourOf(*v).rgb;
       } else if (v && v->type == Value::Type::Float) {
-        (it.word == "ior" ? s.ior : it.word == "fade_distance" ? s.fadeDistance : s.fadePower) = v->v[0];
+        (it.word == "ior"             ? s.ior
+         : it.word == "fade_distance" ? s.fadeDistance
+         : it.word == "caustics"      ? s.caustics
+                                      : s.fadePower) = v->v[0];
       } else if (it.kind == Item::Kind::Node && it.node->keyword == "interior") {
         readSurfaceItem(*it.node, s, defaults, refusals);
       } else if (it.kind == Item::Kind::Node && it.node->keyword == "media" && !s.media) {

@@ -204,7 +204,7 @@ TEST_CASE("povray scene: light modifiers that are not drawn yet are refused wher
 }
 
 TEST_CASE("povray scene: a finish's emission is added to its ambient, which alone ambient_light scales; an "
-          "interior's fade", "[povray]") {
+          "interior's fade and caustics", "[povray]") {
   const SceneDesc s = scene(R"(
 global_settings { ambient_light 0.5 }
 sphere { 0, 1 pigment { rgb <1, 0.5, 0.25> } finish { ambient 0.2 emission 0.5 }
@@ -221,6 +221,7 @@ sphere { 0, 1 interior { fade_distance 2 } }
   CHECK(m.extras->fadePower == 3);
   CHECK(m.extras->fadeColor == Color(1, 0, 0));
   CHECK(s.objects[1].material.extras->fadeDistance == 0);  // fade_power 0, its default: no fade
+  CHECK(scene("sphere { 0, 1 interior { caustics 0.5 } }\n").objects[0].material.extras->caustics == 0.5f);
   CHECK(scene("sphere { 0, 1 finish { crand 0.05 } }\n").objects[0].material.extras->crand == 0.05f);
 }
 

@@ -87,6 +87,7 @@ struct Surface {
   double ior = 1;
   double fadeDistance = 0, fadePower = 0;  // the interior's fade (Material)
   Color fadeColor{0};
+  double caustics = 0;         // the interior's faked caustics (Material)
   std::optional<Media> media;  // the interior's (Material)
   bool patterned() const;  // whether some layer's colour varies, or there are layers: a Texture is needed
 };
