@@ -83,11 +83,10 @@ Value Interpreter::relation() {
   SourceLoc at = here();
   Value a = sum();
   for (;;) {
-    std::string_view op;
-    for (std::string_view o : {"<", "<=", "=", "!=", ">=", ">"}) {
-      if (peekOperator(o)) op = o;
-    }
-    if (op.empty()) return a;
+    const char first = peekSymbol();
+    if (first != '<' && first != '=' && first != '!' && first != '>') return a;
+    const std::string_view op = rawPeek().text;
+    if (op == "!") return a;
     next();
     const SourceLoc bAt = here();
     const Value b = sum();
@@ -298,11 +297,13 @@ Value Interpreter::colour(const SourceLoc& at) {
       const SourceLoc vAt = here();
       const Value v = expression();
       if (!v.numeric()) fail(vAt, "expected a colour value, found a " + std::string(typeName(v)));
-      std::vector<size_t> slots{0, 1, 2};
-      if (kind == "rgbf") slots.push_back(3);
-      if (kind == "rgbt") slots.push_back(4);
-      if (kind == "rgbft") slots = {0, 1, 2, 3, 4};
-      for (size_t k = 0; k < slots.size(); ++k) {
+      // The components the value fills: red, green, blue, then filter and/or transmit.
+      std::array<size_t, 5> slots{0, 1, 2, 3, 4};
+      size_t count = 3;
+      if (kind == "rgbf") count = 4;
+      if (kind == "rgbt") slots[count++] = 4;
+      if (kind == "rgbft") count = 5;
+      for (size_t k = 0; k < count; ++k) {
         const double x = v.type == Value::Type::Float ? v.v[0] : (int(k) < v.size ? v.v[k] : 0);
         c[slots[k]] = srgb && k < 3 ? fromSrgb(x) : x;
       }
@@ -336,9 +337,11 @@ Value Interpreter::identifierValue(const Token& t, const SourceLoc& at) {
   Slot* slot = find(t.text);
   if (!slot) fail(at, "undeclared identifier '" + std::string(t.text) + "'");
   const std::string_view name = t.text;
-  next();
   // A copy: reading what follows may end the identifier's scope (a macro's #end after its returned value).
-  const Value held = slot->value;
+  Value held = slot->value;
+  next();
+  // A number, vector or colour is the value itself: nothing after it can index or call it.
+  if (held.type == Value::Type::Float || held.type == Value::Type::Vector || held.type == Value::Type::Colour) return held;
   const Value* v = &held;
   while (v->type == Value::Type::Array && peekOperator("[")) {
     const auto& a = static_cast<const ArrayValue&>(*v->ref);

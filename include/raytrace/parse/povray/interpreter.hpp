@@ -100,12 +100,38 @@ class Interpreter {
     return t.kind != Token::Kind::End ? t : endOfFrame();
   }
   const Token& endOfFrame();
-  const Token& peek();
-  Token next(SourceLoc* loc = nullptr);
+  // peek, next and peekSymbol run for every token, several times: what most tokens need is inline here, the
+  // directives and macros in the out-of-line parts.
+  const Token& peek() {
+    const Token& t = rawPeek();
+    if (t.kind == Token::Kind::Directive ||
+        (t.kind == Token::Kind::Word && !t.keyword && macroInitial_[static_cast<unsigned char>(t.text[0])])) {
+      return peekExpanding();
+    }
+    return t;
+  }
+  const Token& peekExpanding();
+  Token next(SourceLoc* loc = nullptr) {
+    const Token& t = peek();
+    if (loc) *loc = locOf(t);
+    if (t.kind != Token::Kind::End) ++frames_.back().pos;
+    if (++tokensRead_ == options_.maxTokens) tooManyTokens(t);
+    return t;
+  }
+  [[noreturn]] void tooManyTokens(const Token& t) const;
   SourceLoc here();
-  SourceLoc locOf(const Token& t) const;
-  bool peekOperator(std::string_view op);
-  char peekSymbol();  // the next token's first character if it is a symbol, else 0 (as peekOperator)
+  SourceLoc locOf(const Token& t) const { return frames_.back().file->loc(t); }
+  bool peekOperator(std::string_view op) {
+    peekSymbol();
+    return rawPeek().is(op);
+  }
+  // The next token's first character if it is a symbol, else 0 (as peekOperator).
+  char peekSymbol() {
+    const Token& t = rawPeek();
+    if (t.kind == Token::Kind::Symbol) return t.text[0];
+    return t.kind == Token::Kind::Directive ? peekSymbolAfterDirectives() : 0;
+  }
+  char peekSymbolAfterDirectives();
   void expect(std::string_view symbol, const char* what);
   std::string_view expectWord(const char* what, SourceLoc* loc = nullptr);
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
