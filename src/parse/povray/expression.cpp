@@ -110,6 +110,17 @@ Value Interpreter::relation() {
 }
 
 Value Interpreter::sum() {
+  // A lone number or identifier, most of a scene's operands: when the token after it can continue no operand
+  // (no operator, '.', '(' or '[', and neither a directive nor the frame's end, which may run on elsewhere), the
+  // precedence levels below would each read it and return it unchanged.
+  const Token& t = peek();
+  if (t.kind == Token::Kind::Number || (t.kind == Token::Kind::Word && !t.keyword)) {
+    const Frame& f = frames_.back();
+    const Token& after = f.file->tokens[f.pos + 1];
+    const bool ends = after.kind != Token::Kind::End && after.kind != Token::Kind::Directive &&
+                      !(after.kind == Token::Kind::Symbol && std::string_view("+-*/.([").find(after.text[0]) != std::string_view::npos);
+    if (ends) return t.kind == Token::Kind::Number ? Value::number(next().number) : identifierValue(t, locOf(t));
+  }
   Value a = product();
   for (;;) {
     const char op = peekSymbol();
