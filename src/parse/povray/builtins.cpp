@@ -84,20 +84,31 @@ Value vec3(const glm::dvec3& v) { return Value::vector({v.x, v.y, v.z, 0, 0}, 3)
 
 }  // namespace
 
-std::vector<Value> Interpreter::arguments(const SourceLoc& at) {
-  (void)at;
+Interpreter::Arguments::Arguments(Interpreter& interpreter) : in(interpreter) {
+  if (!in.spareArguments_.empty()) {
+    values = std::move(in.spareArguments_.back());
+    in.spareArguments_.pop_back();
+  }
+  in.readArguments(values);
+}
+
+Interpreter::Arguments::~Arguments() {
+  if (in.spareArguments_.size() == kSpareArguments) return;
+  values.clear();
+  in.spareArguments_.push_back(std::move(values));
+}
+
+void Interpreter::readArguments(std::vector<Value>& args) {
   expect("(", "before the arguments");
-  std::vector<Value> args;
-  args.reserve(3);
   if (peek().is(")")) {
     next();
-    return args;
+    return;
   }
   for (;;) {
     args.push_back(expression());
     SourceLoc sepAt;
     const Token sep = next(&sepAt);
-    if (sep.is(")")) return args;
+    if (sep.is(")")) return;
     if (!sep.is(",")) fail(sepAt, "expected ',' or ')' between arguments, found " + quote(sep.text));
   }
 }
@@ -201,13 +212,15 @@ Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
     return Value::number(arr.dims[size_t(d) - 1]);
   }
   if (id == B::seed_) {
-    const std::vector<Value> a = arguments(at);
+    const Arguments args(*this);
+    const std::vector<Value>& a = args.values;
     if (a.size() != 1 || a[0].type != Value::Type::Float) fail(at, "seed takes one float");
     randStates_.push_back(std::uint32_t(std::int64_t(a[0].v[0])));
     return Value::number(double(randStates_.size() - 1));
   }
 
-  const std::vector<Value> a = arguments(at);
+  const Arguments args(*this);
+  const std::vector<Value>& a = args.values;
   auto count = [&](size_t low, size_t high) {
     if (a.size() < low || a.size() > high) {
       fail(at, std::string(name) + " takes " +

@@ -14,6 +14,18 @@ constexpr double kEpsilon = 1e-10;
 // sRGB-encoded to linear, for srgb, srgbf …
 double fromSrgb(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 
+// Whether the token after a number or an identifier may make it part of a larger operand (sum's shortcut).
+bool continuesOperand(const Token& after) {
+  if (after.kind == Token::Kind::End || after.kind == Token::Kind::Directive) return true;
+  if (after.kind != Token::Kind::Symbol) return false;
+  switch (after.text[0]) {
+    case '+': case '-': case '*': case '/': case '.': case '(': case '[':
+      return true;
+    default:
+      return false;
+  }
+}
+
 }  // namespace
 
 int componentIndex(std::string_view c) {
@@ -117,9 +129,7 @@ Value Interpreter::sum() {
   if (t.kind == Token::Kind::Number || (t.kind == Token::Kind::Word && !t.keyword)) {
     const Frame& f = frames_.back();
     const Token& after = f.file->tokens[f.pos + 1];
-    const bool ends = after.kind != Token::Kind::End && after.kind != Token::Kind::Directive &&
-                      !(after.kind == Token::Kind::Symbol && std::string_view("+-*/.([").find(after.text[0]) != std::string_view::npos);
-    if (ends) return t.kind == Token::Kind::Number ? Value::number(next().number) : identifierValue(t, locOf(t));
+    if (!continuesOperand(after)) return t.kind == Token::Kind::Number ? Value::number(next().number) : identifierValue(t, locOf(t));
   }
   Value a = product();
   for (;;) {
@@ -383,7 +393,8 @@ Value Interpreter::identifierValue(const Token& t, const SourceLoc& at) {
 }
 
 Value Interpreter::callFunction(const FunctionDef& f, std::string_view name, const SourceLoc& at) {
-  const std::vector<Value> args = arguments(at);
+  const Arguments arguments(*this);
+  const std::vector<Value>& args = arguments.values;
   // A pigment function's value is its colour at the point.
   if (f.pigment) {
     if (args.size() > 3) {

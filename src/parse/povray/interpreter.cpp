@@ -6,7 +6,10 @@
 
 namespace rt::povray {
 
-Interpreter::Interpreter(InterpreterOptions options) : options_(std::move(options)) { scopes_.emplace_back(); }
+Interpreter::Interpreter(InterpreterOptions options) : options_(std::move(options)) {
+  scopes_.emplace_back();
+  spareArguments_.reserve(kSpareArguments);
+}
 
 Interpreter::~Interpreter() = default;
 

@@ -200,7 +200,16 @@ class Interpreter {
 
   // Built-in functions (builtins.cpp).
   Value builtin(std::string_view name, const SourceLoc& at);
-  std::vector<Value> arguments(const SourceLoc& at);
+  // A call's `(a, b …)`, read into a vector an earlier call has given back: calls in a loop allocate none.
+  struct Arguments {
+    Interpreter& in;
+    std::vector<Value> values;
+    explicit Arguments(Interpreter& interpreter);
+    ~Arguments();
+    Arguments(const Arguments&) = delete;
+    Arguments& operator=(const Arguments&) = delete;
+  };
+  void readArguments(std::vector<Value>& args);
 
   // Values that are more than an expression (blocks.cpp).
   Value declarable();
@@ -218,6 +227,10 @@ class Interpreter {
   std::vector<Cond> conds_;
   std::vector<Scope> scopes_;
   std::vector<std::uint32_t> randStates_;
+  // Arguments' vectors, given back: a few (one per call nested in another's arguments), at most kSpareArguments,
+  // room for which is made at the start so that giving one back never allocates.
+  static constexpr size_t kSpareArguments = 16;
+  std::vector<std::vector<Value>> spareArguments_;
   std::vector<DataFileDesc> dataFiles_;  // what #write wrote, kept until the scene has parsed
   std::vector<std::string> filesFound_;
   size_t bytesWritten_ = 0;
