@@ -83,8 +83,6 @@ void Interpreter::tooManyTokens(const Token& t) const {
   fail(locOf(t), "the scene reads more than " + std::to_string(options_.maxTokens) + " tokens");
 }
 
-SourceLoc Interpreter::here() { return locOf(peek()); }
-
 // Whether the next token is an operator (peekOperator, peekSymbol). Directives that only move on (#end, #else …)
 // are carried out first, so that a macro used in an expression returns into it; any other directive ends the
 // expression, as it would be carried out before the value it follows is stored.

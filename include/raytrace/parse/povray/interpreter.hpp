@@ -119,7 +119,7 @@ class Interpreter {
     return t;
   }
   [[noreturn]] void tooManyTokens(const Token& t) const;
-  SourceLoc here();
+  SourceLoc here() { return locOf(peek()); }
   SourceLoc locOf(const Token& t) const { return frames_.back().file->loc(t); }
   bool peekOperator(std::string_view op) {
     peekSymbol();
