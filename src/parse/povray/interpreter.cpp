@@ -97,12 +97,14 @@ char Interpreter::peekSymbolAfterDirectives() {
 }
 
 void Interpreter::expect(std::string_view symbol, const char* what) {
+  if (peek().is(symbol)) {
+    next();
+    return;
+  }
   SourceLoc at;
   const Token t = next(&at);
-  if (!t.is(symbol)) {
-    fail(at, "expected '" + std::string(symbol) + "' " + what + ", found " +
-                 (t.kind == Token::Kind::End ? std::string("the end of the file") : quote(t.text)));
-  }
+  fail(at, "expected '" + std::string(symbol) + "' " + what + ", found " +
+               (t.kind == Token::Kind::End ? std::string("the end of the file") : quote(t.text)));
 }
 
 std::string_view Interpreter::expectWord(const char* what, SourceLoc* loc) {
