@@ -202,6 +202,7 @@ std::shared_ptr<const Node> Interpreter::block(std::string_view keyword, const S
   auto node = std::make_shared<Node>();
   node->keyword = keyword;
   node->loc = at;
+  node->items.reserve(4);  // most blocks hold a few items: one allocation rather than growing 1, 2, 4
   for (;;) {
     const Token& t = peek();
     if (t.is(close)) {

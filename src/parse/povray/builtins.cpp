@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <unordered_map>
 
 #include <sys/stat.h>
 
@@ -32,53 +33,113 @@ std::string format(double x, double width, double precision) {
   return buffer;
 }
 
+// The built-ins by name, looked up once per call rather than compared with each name in turn.
+enum class B {
+  none,
+  abs_, acos_, acosh_, asc_, asin_, asinh_, atan_, atan2_, atanh_, bitwise_and_, bitwise_or_, bitwise_xor_, ceil_,
+  chr_, clock_, clock_delta_, clock_on_, concat_, cos_, cosh_, datetime_, defined_, degrees_, dimension_size_,
+  dimensions_, div_, exp_, false_, file_exists_, final_clock_, final_frame_, floor_, frame_number_, image_height_,
+  image_width_, initial_clock_, initial_frame_, input_file_name_, inside_, int_, internal_, ln_, log_, max_,
+  max_extent_, min_, min_extent_, mod_, no_, now_, off_, on_, pi_, pow_, prod_, radians_, rand_, seed_, select_,
+  sin_, sinh_, sqrt_, str_, strcmp_, strlen_, strlwr_, strupr_, substr_, sum_, t_, tan_, tanh_, trace_, true_, u_,
+  v_, val_, vaxis_rotate_, vcross_, vdot_, version_, vlength_, vnormalize_, vrotate_, vstr_, vturbulence_, x_, y_,
+  yes_, z_,
+};
+
+B builtinId(std::string_view name) {
+  static const std::unordered_map<std::string_view, B> ids = [] {
+    std::unordered_map<std::string_view, B> m;
+    const std::pair<std::string_view, B> all[] = {
+        {"abs", B::abs_}, {"acos", B::acos_}, {"acosh", B::acosh_}, {"asc", B::asc_}, {"asin", B::asin_},
+        {"asinh", B::asinh_}, {"atan", B::atan_}, {"atan2", B::atan2_}, {"atanh", B::atanh_},
+        {"bitwise_and", B::bitwise_and_}, {"bitwise_or", B::bitwise_or_}, {"bitwise_xor", B::bitwise_xor_},
+        {"ceil", B::ceil_}, {"chr", B::chr_}, {"clock", B::clock_}, {"clock_delta", B::clock_delta_},
+        {"clock_on", B::clock_on_}, {"concat", B::concat_}, {"cos", B::cos_}, {"cosh", B::cosh_},
+        {"datetime", B::datetime_}, {"defined", B::defined_}, {"degrees", B::degrees_},
+        {"dimension_size", B::dimension_size_}, {"dimensions", B::dimensions_}, {"div", B::div_}, {"exp", B::exp_},
+        {"false", B::false_}, {"file_exists", B::file_exists_}, {"final_clock", B::final_clock_},
+        {"final_frame", B::final_frame_}, {"floor", B::floor_}, {"frame_number", B::frame_number_},
+        {"image_height", B::image_height_}, {"image_width", B::image_width_}, {"initial_clock", B::initial_clock_},
+        {"initial_frame", B::initial_frame_}, {"input_file_name", B::input_file_name_}, {"inside", B::inside_},
+        {"int", B::int_}, {"internal", B::internal_}, {"ln", B::ln_}, {"log", B::log_}, {"max", B::max_},
+        {"max_extent", B::max_extent_}, {"min", B::min_}, {"min_extent", B::min_extent_}, {"mod", B::mod_},
+        {"no", B::no_}, {"now", B::now_}, {"off", B::off_}, {"on", B::on_}, {"pi", B::pi_}, {"pow", B::pow_},
+        {"prod", B::prod_}, {"radians", B::radians_}, {"rand", B::rand_}, {"seed", B::seed_}, {"select", B::select_},
+        {"sin", B::sin_}, {"sinh", B::sinh_}, {"sqrt", B::sqrt_}, {"str", B::str_}, {"strcmp", B::strcmp_},
+        {"strlen", B::strlen_}, {"strlwr", B::strlwr_}, {"strupr", B::strupr_}, {"substr", B::substr_},
+        {"sum", B::sum_}, {"t", B::t_}, {"tan", B::tan_}, {"tanh", B::tanh_}, {"trace", B::trace_},
+        {"true", B::true_}, {"u", B::u_}, {"v", B::v_}, {"val", B::val_}, {"vaxis_rotate", B::vaxis_rotate_},
+        {"vcross", B::vcross_}, {"vdot", B::vdot_}, {"version", B::version_}, {"vlength", B::vlength_},
+        {"vnormalize", B::vnormalize_}, {"vrotate", B::vrotate_}, {"vstr", B::vstr_},
+        {"vturbulence", B::vturbulence_}, {"x", B::x_}, {"y", B::y_}, {"yes", B::yes_}, {"z", B::z_},
+    };
+    for (const auto& [n, id] : all) m.emplace(n, id);
+    return m;
+  }();
+  const auto it = ids.find(name);
+  return it == ids.end() ? B::none : it->second;
+}
+
 Value vec3(const glm::dvec3& v) { return Value::vector({v.x, v.y, v.z, 0, 0}, 3); }
 
 }  // namespace
 
-std::vector<Value> Interpreter::arguments(const SourceLoc& at) {
-  (void)at;
+Interpreter::Arguments::Arguments(Interpreter& interpreter) : in(interpreter) {
+  if (!in.spareArguments_.empty()) {
+    values = std::move(in.spareArguments_.back());
+    in.spareArguments_.pop_back();
+  }
+  in.readArguments(values);
+}
+
+Interpreter::Arguments::~Arguments() {
+  if (in.spareArguments_.size() == kSpareArguments) return;
+  values.clear();
+  in.spareArguments_.push_back(std::move(values));
+}
+
+void Interpreter::readArguments(std::vector<Value>& args) {
   expect("(", "before the arguments");
-  std::vector<Value> args;
   if (peek().is(")")) {
     next();
-    return args;
+    return;
   }
   for (;;) {
     args.push_back(expression());
     SourceLoc sepAt;
     const Token sep = next(&sepAt);
-    if (sep.is(")")) return args;
+    if (sep.is(")")) return;
     if (!sep.is(",")) fail(sepAt, "expected ',' or ')' between arguments, found " + quote(sep.text));
   }
 }
 
 Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
+  const B id = builtinId(name);
   // Constants.
-  if (name == "pi") return Value::number(kPi);
-  if (name == "true" || name == "yes" || name == "on") return Value::number(1);
-  if (name == "false" || name == "no" || name == "off") return Value::number(0);
-  if (name == "x") return Value::vector({1, 0, 0, 0, 0}, 3);
-  if (name == "y") return Value::vector({0, 1, 0, 0, 0}, 3);
-  if (name == "z") return Value::vector({0, 0, 1, 0, 0}, 3);
-  if (name == "t") return Value::vector({0, 0, 0, 1, 0}, 4);
-  if (name == "u") return Value::vector({1, 0, 0, 0, 0}, 2);
-  if (name == "v") return Value::vector({0, 1, 0, 0, 0}, 2);
+  if (id == B::pi_) return Value::number(kPi);
+  if (id == B::true_ || id == B::yes_ || id == B::on_) return Value::number(1);
+  if (id == B::false_ || id == B::no_ || id == B::off_) return Value::number(0);
+  if (id == B::x_) return Value::vector({1, 0, 0, 0, 0}, 3);
+  if (id == B::y_) return Value::vector({0, 1, 0, 0, 0}, 3);
+  if (id == B::z_) return Value::vector({0, 0, 1, 0, 0}, 3);
+  if (id == B::t_) return Value::vector({0, 0, 0, 1, 0}, 4);
+  if (id == B::u_) return Value::vector({1, 0, 0, 0, 0}, 2);
+  if (id == B::v_) return Value::vector({0, 1, 0, 0, 0}, 2);
   const Clock& c = options_.clock;
-  if (name == "clock") return Value::number(c.clock);
-  if (name == "clock_delta") return Value::number(c.delta);
-  if (name == "clock_on") return Value::number(c.on);
-  if (name == "frame_number") return Value::number(c.frame);
-  if (name == "initial_clock") return Value::number(c.initialClock);
-  if (name == "final_clock") return Value::number(c.finalClock);
-  if (name == "initial_frame") return Value::number(c.initialFrame);
-  if (name == "final_frame") return Value::number(c.finalFrame);
-  if (name == "image_width") return Value::number(options_.imageWidth);
-  if (name == "image_height") return Value::number(options_.imageHeight);
-  if (name == "version") return Value::number(version_);
-  if (name == "input_file_name") return Value::string(files_.front()->name.str());
-  if (name == "now") return Value::number((double(std::time(nullptr)) - 946684800.0) / 86400.0);
-  if ((name == "min_extent" || name == "max_extent") && options_.extent) {
+  if (id == B::clock_) return Value::number(c.clock);
+  if (id == B::clock_delta_) return Value::number(c.delta);
+  if (id == B::clock_on_) return Value::number(c.on);
+  if (id == B::frame_number_) return Value::number(c.frame);
+  if (id == B::initial_clock_) return Value::number(c.initialClock);
+  if (id == B::final_clock_) return Value::number(c.finalClock);
+  if (id == B::initial_frame_) return Value::number(c.initialFrame);
+  if (id == B::final_frame_) return Value::number(c.finalFrame);
+  if (id == B::image_width_) return Value::number(options_.imageWidth);
+  if (id == B::image_height_) return Value::number(options_.imageHeight);
+  if (id == B::version_) return Value::number(version_);
+  if (id == B::input_file_name_) return Value::string(files_.front()->name.str());
+  if (id == B::now_) return Value::number((double(std::time(nullptr)) - 946684800.0) / 86400.0);
+  if ((id == B::min_extent_ || id == B::max_extent_) && options_.extent) {
     expect("(", "after the function's name");
     const SourceLoc oAt = here();
     const Value o = expression();
@@ -86,12 +147,12 @@ Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
     if (o.type != Value::Type::Node) fail(oAt, "expected an object, found a " + std::string(typeName(o)));
     const auto box = options_.extent(std::static_pointer_cast<const Node>(o.ref));
     if (!box) fail(oAt, "'" + std::string(name) + "' of an object without bounds, such as a plane");
-    const size_t k = name == "min_extent" ? 0 : 3;
+    const size_t k = id == B::min_extent_ ? 0 : 3;
     return Value::vector({(*box)[k], (*box)[k + 1], (*box)[k + 2], 0, 0}, 3);
   }
   // trace(Object, Start, Direction [, Normal]): the first point on the object, or <0,0,0>; Normal receives
   // the normal there, or <0,0,0>.
-  if (name == "trace" && options_.trace) {
+  if (id == B::trace_ && options_.trace) {
     expect("(", "after trace");
     const SourceLoc oAt = here();
     const Value o = expression();
@@ -122,25 +183,25 @@ Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
     expect(")", "after trace's arguments");
     return hit ? vector((*hit)[0]) : vector({0, 0, 0});
   }
-  if (name == "inside" || name == "trace" || name == "vturbulence" || name == "min_extent" || name == "max_extent" ||
-      name == "sum" || name == "prod" || name == "internal" || name == "datetime") {
+  if (id == B::inside_ || id == B::trace_ || id == B::vturbulence_ || id == B::min_extent_ || id == B::max_extent_ ||
+      id == B::sum_ || id == B::prod_ || id == B::internal_ || id == B::datetime_) {
     fail(at, "'" + std::string(name) + "' is not supported yet");
   }
 
   // Functions whose arguments are not plain expressions.
-  if (name == "defined") {
+  if (id == B::defined_) {
     expect("(", "after defined");
     const std::string_view id = expectWord("an identifier");
     expect(")", "after the identifier");
     return Value::number(find(id) != nullptr);
   }
-  if (name == "dimensions" || name == "dimension_size") {
+  if (id == B::dimensions_ || id == B::dimension_size_) {
     expect("(", "after the function's name");
     const SourceLoc aAt = here();
     const Value a = expression();
     if (a.type != Value::Type::Array) fail(aAt, "expected an array, found a " + std::string(typeName(a)));
     const auto& arr = static_cast<const ArrayValue&>(*a.ref);
-    if (name == "dimensions") {
+    if (id == B::dimensions_) {
       expect(")", "after the array");
       return Value::number(double(arr.dims.size()));
     }
@@ -150,14 +211,16 @@ Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
     if (!(d >= 1 && d <= arr.dims.size())) fail(at, "the array has no dimension " + format(d, 0, 0));
     return Value::number(arr.dims[size_t(d) - 1]);
   }
-  if (name == "seed") {
-    const std::vector<Value> a = arguments(at);
+  if (id == B::seed_) {
+    const Arguments args(*this);
+    const std::vector<Value>& a = args.values;
     if (a.size() != 1 || a[0].type != Value::Type::Float) fail(at, "seed takes one float");
     randStates_.push_back(std::uint32_t(std::int64_t(a[0].v[0])));
     return Value::number(double(randStates_.size() - 1));
   }
 
-  const std::vector<Value> a = arguments(at);
+  const Arguments args(*this);
+  const std::vector<Value>& a = args.values;
   auto count = [&](size_t low, size_t high) {
     if (a.size() < low || a.size() > high) {
       fail(at, std::string(name) + " takes " +
@@ -185,55 +248,55 @@ Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
     return glm::dvec3(a[i].v[0], a[i].size > 1 ? a[i].v[1] : 0, a[i].size > 2 ? a[i].v[2] : 0);
   };
   using Fn = double (*)(double);
-  static const std::pair<std::string_view, Fn> kOneFloat[] = {
-      {"abs", [](double x) { return std::abs(x); }},     {"acos", [](double x) { return std::acos(x); }},
-      {"acosh", [](double x) { return std::acosh(x); }}, {"asin", [](double x) { return std::asin(x); }},
-      {"asinh", [](double x) { return std::asinh(x); }}, {"atan", [](double x) { return std::atan(x); }},
-      {"atanh", [](double x) { return std::atanh(x); }}, {"ceil", [](double x) { return std::ceil(x); }},
-      {"cos", [](double x) { return std::cos(x); }},     {"cosh", [](double x) { return std::cosh(x); }},
-      {"degrees", [](double x) { return x * 180 / kPi; }}, {"exp", [](double x) { return std::exp(x); }},
-      {"floor", [](double x) { return std::floor(x); }}, {"int", [](double x) { return std::trunc(x); }},
-      {"ln", [](double x) { return std::log(x); }},      {"log", [](double x) { return std::log10(x); }},
-      {"radians", [](double x) { return x * kPi / 180; }}, {"sin", [](double x) { return std::sin(x); }},
-      {"sinh", [](double x) { return std::sinh(x); }},   {"sqrt", [](double x) { return std::sqrt(x); }},
-      {"tan", [](double x) { return std::tan(x); }},     {"tanh", [](double x) { return std::tanh(x); }},
+  static const std::pair<B, Fn> kOneFloat[] = {
+      {B::abs_, [](double x) { return std::abs(x); }},     {B::acos_, [](double x) { return std::acos(x); }},
+      {B::acosh_, [](double x) { return std::acosh(x); }}, {B::asin_, [](double x) { return std::asin(x); }},
+      {B::asinh_, [](double x) { return std::asinh(x); }}, {B::atan_, [](double x) { return std::atan(x); }},
+      {B::atanh_, [](double x) { return std::atanh(x); }}, {B::ceil_, [](double x) { return std::ceil(x); }},
+      {B::cos_, [](double x) { return std::cos(x); }},     {B::cosh_, [](double x) { return std::cosh(x); }},
+      {B::degrees_, [](double x) { return x * 180 / kPi; }}, {B::exp_, [](double x) { return std::exp(x); }},
+      {B::floor_, [](double x) { return std::floor(x); }}, {B::int_, [](double x) { return std::trunc(x); }},
+      {B::ln_, [](double x) { return std::log(x); }},      {B::log_, [](double x) { return std::log10(x); }},
+      {B::radians_, [](double x) { return x * kPi / 180; }}, {B::sin_, [](double x) { return std::sin(x); }},
+      {B::sinh_, [](double x) { return std::sinh(x); }},   {B::sqrt_, [](double x) { return std::sqrt(x); }},
+      {B::tan_, [](double x) { return std::tan(x); }},     {B::tanh_, [](double x) { return std::tanh(x); }},
   };
   for (const auto& [n, fn] : kOneFloat) {
-    if (n == name) {
+    if (n == id) {
       count(1, 1);
       return Value::number(fn(f(0)));
     }
   }
-  if (name == "atan2" || name == "pow" || name == "mod" || name == "div") {
+  if (id == B::atan2_ || id == B::pow_ || id == B::mod_ || id == B::div_) {
     count(2, 2);
     const double p = f(0), q = f(1);
-    if (name == "atan2") return Value::number(std::atan2(p, q));
-    if (name == "pow") return Value::number(std::pow(p, q));
-    if (name == "mod") return Value::number(std::fmod(p, q));
+    if (id == B::atan2_) return Value::number(std::atan2(p, q));
+    if (id == B::pow_) return Value::number(std::pow(p, q));
+    if (id == B::mod_) return Value::number(std::fmod(p, q));
     return Value::number(std::trunc(p / q));
   }
-  if (name == "min" || name == "max") {
+  if (id == B::min_ || id == B::max_) {
     count(1, 1000);
     double r = f(0);
-    for (size_t i = 1; i < a.size(); ++i) r = name == "min" ? std::min(r, f(i)) : std::max(r, f(i));
+    for (size_t i = 1; i < a.size(); ++i) r = id == B::min_ ? std::min(r, f(i)) : std::max(r, f(i));
     return Value::number(r);
   }
-  if (name == "bitwise_and" || name == "bitwise_or" || name == "bitwise_xor") {
+  if (id == B::bitwise_and_ || id == B::bitwise_or_ || id == B::bitwise_xor_) {
     count(1, 1000);
     long r = long(f(0));
     for (size_t i = 1; i < a.size(); ++i) {
       const long b = long(f(i));
-      r = name == "bitwise_and" ? (r & b) : name == "bitwise_or" ? (r | b) : (r ^ b);
+      r = id == B::bitwise_and_ ? (r & b) : id == B::bitwise_or_ ? (r | b) : (r ^ b);
     }
     return Value::number(double(r));
   }
-  if (name == "select") {
+  if (id == B::select_) {
     count(3, 4);
     const double c = f(0);
     if (a.size() == 3) return c < 0 ? a[1] : a[2];
     return c < 0 ? a[1] : c == 0 ? a[2] : a[3];
   }
-  if (name == "rand") {
+  if (id == B::rand_) {
     count(1, 1);
     const double i = f(0);
     if (!(i >= 0 && i < double(randStates_.size()))) fail(at, "rand needs a stream made by seed()");
@@ -242,19 +305,19 @@ Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
     state = state * 1812433253u + 12345u;
     return Value::number(double(state) / 4294967295.0);
   }
-  if (name == "vlength" || name == "vnormalize") {
+  if (id == B::vlength_ || id == B::vnormalize_) {
     count(1, 1);
     const glm::dvec3 v = vec(0);
-    if (name == "vlength") return Value::number(glm::length(v));
+    if (id == B::vlength_) return Value::number(glm::length(v));
     const double l = glm::length(v);
     return vec3(l > 0 ? v / l : glm::dvec3(0));
   }
-  if (name == "vdot" || name == "vcross") {
+  if (id == B::vdot_ || id == B::vcross_) {
     count(2, 2);
-    if (name == "vdot") return Value::number(glm::dot(vec(0), vec(1)));
+    if (id == B::vdot_) return Value::number(glm::dot(vec(0), vec(1)));
     return vec3(glm::cross(vec(0), vec(1)));
   }
-  if (name == "vrotate") {
+  if (id == B::vrotate_) {
     count(2, 2);
     glm::dvec3 p = vec(0);
     const glm::dvec3 r = glm::radians(vec(1));
@@ -263,17 +326,17 @@ Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
     p = glm::dvec3(p.x * std::cos(r.z) - p.y * std::sin(r.z), p.x * std::sin(r.z) + p.y * std::cos(r.z), p.z);
     return vec3(p);
   }
-  if (name == "vaxis_rotate") {
+  if (id == B::vaxis_rotate_) {
     count(3, 3);
     const glm::dvec3 p = vec(0), k = glm::normalize(vec(1));
     const double th = f(2) * kPi / 180, c = std::cos(th), sn = std::sin(th);
     return vec3(p * c + glm::cross(k, p) * sn + k * glm::dot(k, p) * (1 - c));
   }
-  if (name == "str") {
+  if (id == B::str_) {
     count(3, 3);
     return Value::string(format(f(0), f(1), f(2)));
   }
-  if (name == "vstr") {
+  if (id == B::vstr_) {
     count(5, 5);
     if (!a[1].numeric()) fail(at, "argument 2 of vstr must be a vector");
     const int n = std::clamp(int(f(0)), 1, 5);
@@ -285,46 +348,46 @@ Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
     }
     return Value::string(r);
   }
-  if (name == "concat") {
+  if (id == B::concat_) {
     count(1, 1000);
     std::string r;
     for (size_t i = 0; i < a.size(); ++i) r += s(i);
     return Value::string(r);
   }
-  if (name == "chr") {
+  if (id == B::chr_) {
     count(1, 1);
     return Value::string(std::string(1, char(int(f(0)))));
   }
-  if (name == "asc") {
+  if (id == B::asc_) {
     count(1, 1);
     return Value::number(s(0).empty() ? 0 : double(static_cast<unsigned char>(s(0)[0])));
   }
-  if (name == "strlen") {
+  if (id == B::strlen_) {
     count(1, 1);
     return Value::number(double(s(0).size()));
   }
-  if (name == "val") {
+  if (id == B::val_) {
     count(1, 1);
     return Value::number(std::atof(s(0).c_str()));
   }
-  if (name == "strcmp") {
+  if (id == B::strcmp_) {
     count(2, 2);
     return Value::number(std::strcmp(s(0).c_str(), s(1).c_str()));
   }
-  if (name == "strupr" || name == "strlwr") {
+  if (id == B::strupr_ || id == B::strlwr_) {
     count(1, 1);
     std::string r = s(0);
-    for (char& c : r) c = char(name == "strupr" ? std::toupper(static_cast<unsigned char>(c)) : std::tolower(static_cast<unsigned char>(c)));
+    for (char& c : r) c = char(id == B::strupr_ ? std::toupper(static_cast<unsigned char>(c)) : std::tolower(static_cast<unsigned char>(c)));
     return Value::string(r);
   }
-  if (name == "substr") {
+  if (id == B::substr_) {
     count(3, 3);
     const std::string& text = s(0);
     const double p = f(1), l = f(2);
     if (!(p >= 1 && l >= 0 && p - 1 + l <= double(text.size()))) fail(at, "substr reaches outside its string");
     return Value::string(text.substr(size_t(p) - 1, size_t(l)));
   }
-  if (name == "file_exists") {
+  if (id == B::file_exists_) {
     count(1, 1);
     struct stat st;
     const std::string& file = s(0);

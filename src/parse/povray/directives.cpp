@@ -158,14 +158,17 @@ void Interpreter::directive(std::string_view name, const SourceLoc& at) {
 
 void Interpreter::declareDirective(bool local) {
   SourceLoc idAt;
+  // The lexer has marked the keywords: no search of the keyword list for each #declare.
+  bool keyword = rawPeek().keyword;
   std::string_view id = expectWord("an identifier after #declare", &idAt);
   // `#declare deprecated once "message" Name = …` warns when Name is used; the warning is not kept.
   if (id == "deprecated") {
     if (rawPeek().isWord("once")) ++frames_.back().pos;
     if (rawPeek().kind == Token::Kind::String) ++frames_.back().pos;
+    keyword = rawPeek().keyword;
     id = expectWord("an identifier after #declare deprecated", &idAt);
   }
-  if (isKeyword(id)) fail(idAt, "'" + std::string(id) + "' is a keyword and cannot be declared");
+  if (keyword) fail(idAt, "'" + std::string(id) + "' is a keyword and cannot be declared");
   std::vector<double> index;
   while (rawPeek().is("[")) {
     next();

@@ -14,6 +14,18 @@ constexpr double kEpsilon = 1e-10;
 // sRGB-encoded to linear, for srgb, srgbf …
 double fromSrgb(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 
+// Whether the token after a number or an identifier may make it part of a larger operand (sum's shortcut).
+bool continuesOperand(const Token& after) {
+  if (after.kind == Token::Kind::End || after.kind == Token::Kind::Directive) return true;
+  if (after.kind != Token::Kind::Symbol) return false;
+  switch (after.text[0]) {
+    case '+': case '-': case '*': case '/': case '.': case '(': case '[':
+      return true;
+    default:
+      return false;
+  }
+}
+
 }  // namespace
 
 int componentIndex(std::string_view c) {
@@ -83,11 +95,10 @@ Value Interpreter::relation() {
   SourceLoc at = here();
   Value a = sum();
   for (;;) {
-    std::string_view op;
-    for (std::string_view o : {"<", "<=", "=", "!=", ">=", ">"}) {
-      if (peekOperator(o)) op = o;
-    }
-    if (op.empty()) return a;
+    const char first = peekSymbol();
+    if (first != '<' && first != '=' && first != '!' && first != '>') return a;
+    const std::string_view op = rawPeek().text;
+    if (op == "!") return a;
     next();
     const SourceLoc bAt = here();
     const Value b = sum();
@@ -111,6 +122,15 @@ Value Interpreter::relation() {
 }
 
 Value Interpreter::sum() {
+  // A lone number or identifier, most of a scene's operands: when the token after it can continue no operand
+  // (no operator, '.', '(' or '[', and neither a directive nor the frame's end, which may run on elsewhere), the
+  // precedence levels below would each read it and return it unchanged.
+  const Token& t = peek();
+  if (t.kind == Token::Kind::Number || (t.kind == Token::Kind::Word && !t.keyword)) {
+    const Frame& f = frames_.back();
+    const Token& after = f.file->tokens[f.pos + 1];
+    if (!continuesOperand(after)) return t.kind == Token::Kind::Number ? Value::number(next().number) : identifierValue(t, locOf(t));
+  }
   Value a = product();
   for (;;) {
     const char op = peekSymbol();
@@ -298,11 +318,13 @@ Value Interpreter::colour(const SourceLoc& at) {
       const SourceLoc vAt = here();
       const Value v = expression();
       if (!v.numeric()) fail(vAt, "expected a colour value, found a " + std::string(typeName(v)));
-      std::vector<size_t> slots{0, 1, 2};
-      if (kind == "rgbf") slots.push_back(3);
-      if (kind == "rgbt") slots.push_back(4);
-      if (kind == "rgbft") slots = {0, 1, 2, 3, 4};
-      for (size_t k = 0; k < slots.size(); ++k) {
+      // The components the value fills: red, green, blue, then filter and/or transmit.
+      std::array<size_t, 5> slots{0, 1, 2, 3, 4};
+      size_t count = 3;
+      if (kind == "rgbf") count = 4;
+      if (kind == "rgbt") slots[count++] = 4;
+      if (kind == "rgbft") count = 5;
+      for (size_t k = 0; k < count; ++k) {
         const double x = v.type == Value::Type::Float ? v.v[0] : (int(k) < v.size ? v.v[k] : 0);
         c[slots[k]] = srgb && k < 3 ? fromSrgb(x) : x;
       }
@@ -336,9 +358,11 @@ Value Interpreter::identifierValue(const Token& t, const SourceLoc& at) {
   Slot* slot = find(t.text);
   if (!slot) fail(at, "undeclared identifier '" + std::string(t.text) + "'");
   const std::string_view name = t.text;
-  next();
   // A copy: reading what follows may end the identifier's scope (a macro's #end after its returned value).
-  const Value held = slot->value;
+  Value held = slot->value;
+  next();
+  // A number, vector or colour is the value itself: nothing after it can index or call it.
+  if (held.type == Value::Type::Float || held.type == Value::Type::Vector || held.type == Value::Type::Colour) return held;
   const Value* v = &held;
   while (v->type == Value::Type::Array && peekOperator("[")) {
     const auto& a = static_cast<const ArrayValue&>(*v->ref);
@@ -369,7 +393,8 @@ Value Interpreter::identifierValue(const Token& t, const SourceLoc& at) {
 }
 
 Value Interpreter::callFunction(const FunctionDef& f, std::string_view name, const SourceLoc& at) {
-  const std::vector<Value> args = arguments(at);
+  const Arguments arguments(*this);
+  const std::vector<Value>& args = arguments.values;
   // A pigment function's value is its colour at the point.
   if (f.pigment) {
     if (args.size() > 3) {

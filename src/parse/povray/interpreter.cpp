@@ -6,7 +6,10 @@
 
 namespace rt::povray {
 
-Interpreter::Interpreter(InterpreterOptions options) : options_(std::move(options)) { scopes_.emplace_back(); }
+Interpreter::Interpreter(InterpreterOptions options) : options_(std::move(options)) {
+  scopes_.emplace_back();
+  spareArguments_.reserve(kSpareArguments);
+}
 
 Interpreter::~Interpreter() = default;
 
@@ -61,7 +64,7 @@ const Token& Interpreter::endOfFrame() {
 }
 
 // The next token once the directives before it have been carried out and macros expanded.
-const Token& Interpreter::peek() {
+const Token& Interpreter::peekExpanding() {
   for (;;) {
     const Token& t = rawPeek();
     if (t.kind == Token::Kind::Directive) {
@@ -76,27 +79,14 @@ const Token& Interpreter::peek() {
   }
 }
 
-Token Interpreter::next(SourceLoc* loc) {
-  const Token t = peek();
-  if (loc) *loc = locOf(t);
-  if (t.kind != Token::Kind::End) ++frames_.back().pos;
-  if (++tokensRead_ == options_.maxTokens) fail(locOf(t), "the scene reads more than " + std::to_string(options_.maxTokens) + " tokens");
-  return t;
+void Interpreter::tooManyTokens(const Token& t) const {
+  fail(locOf(t), "the scene reads more than " + std::to_string(options_.maxTokens) + " tokens");
 }
 
-SourceLoc Interpreter::here() { return locOf(peek()); }
-
-SourceLoc Interpreter::locOf(const Token& t) const { return frames_.back().file->loc(t); }
-
-// Whether the next token is the operator `op`. Directives that only move on (#end, #else …) are carried out
-// first, so that a macro used in an expression returns into it; any other directive ends the expression, as it
-// would be carried out before the value it follows is stored.
-bool Interpreter::peekOperator(std::string_view op) {
-  peekSymbol();
-  return rawPeek().is(op);
-}
-
-char Interpreter::peekSymbol() {
+// Whether the next token is an operator (peekOperator, peekSymbol). Directives that only move on (#end, #else …)
+// are carried out first, so that a macro used in an expression returns into it; any other directive ends the
+// expression, as it would be carried out before the value it follows is stored.
+char Interpreter::peekSymbolAfterDirectives() {
   for (;;) {
     const Token& t = rawPeek();
     if (t.kind == Token::Kind::Symbol) return t.text[0];
@@ -107,12 +97,14 @@ char Interpreter::peekSymbol() {
 }
 
 void Interpreter::expect(std::string_view symbol, const char* what) {
+  if (peek().is(symbol)) {
+    next();
+    return;
+  }
   SourceLoc at;
   const Token t = next(&at);
-  if (!t.is(symbol)) {
-    fail(at, "expected '" + std::string(symbol) + "' " + what + ", found " +
-                 (t.kind == Token::Kind::End ? std::string("the end of the file") : quote(t.text)));
-  }
+  fail(at, "expected '" + std::string(symbol) + "' " + what + ", found " +
+               (t.kind == Token::Kind::End ? std::string("the end of the file") : quote(t.text)));
 }
 
 std::string_view Interpreter::expectWord(const char* what, SourceLoc* loc) {

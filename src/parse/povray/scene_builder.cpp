@@ -443,7 +443,11 @@ class Builder {
       o.clip = std::move(bound);
     }
     const std::vector<TransformStep> own(o.transforms.begin() + long(ownTransforms), o.transforms.end());
-    moveTextures(o, glm::inverse(composeTransforms<double>(own)));
+    // Only a texture already there, or a CSG's or a mesh's, moves: most objects take theirs just below, and
+    // a million spheres need no matrix inverse each.
+    if (o.texture || std::holds_alternative<CsgDesc>(o.shape) || std::holds_alternative<MeshDesc>(o.shape)) {
+      moveTextures(o, glm::inverse(composeTransforms<double>(own)));
+    }
     if (textureFrom || k != "object") surface(o, s, std::vector(o.transforms.begin() + long(textureFrom.value_or(o.transforms.size())), o.transforms.end()));
     if (textureFrom) o.textured = true;
     passTextureDown(o);

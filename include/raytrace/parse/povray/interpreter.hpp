@@ -100,12 +100,38 @@ class Interpreter {
     return t.kind != Token::Kind::End ? t : endOfFrame();
   }
   const Token& endOfFrame();
-  const Token& peek();
-  Token next(SourceLoc* loc = nullptr);
-  SourceLoc here();
-  SourceLoc locOf(const Token& t) const;
-  bool peekOperator(std::string_view op);
-  char peekSymbol();  // the next token's first character if it is a symbol, else 0 (as peekOperator)
+  // peek, next and peekSymbol run for every token, several times: what most tokens need is inline here, the
+  // directives and macros in the out-of-line parts.
+  const Token& peek() {
+    const Token& t = rawPeek();
+    if (t.kind == Token::Kind::Directive ||
+        (t.kind == Token::Kind::Word && !t.keyword && macroInitial_[static_cast<unsigned char>(t.text[0])])) {
+      return peekExpanding();
+    }
+    return t;
+  }
+  const Token& peekExpanding();
+  Token next(SourceLoc* loc = nullptr) {
+    const Token& t = peek();
+    if (loc) *loc = locOf(t);
+    if (t.kind != Token::Kind::End) ++frames_.back().pos;
+    if (++tokensRead_ == options_.maxTokens) tooManyTokens(t);
+    return t;
+  }
+  [[noreturn]] void tooManyTokens(const Token& t) const;
+  SourceLoc here() { return locOf(peek()); }
+  SourceLoc locOf(const Token& t) const { return frames_.back().file->loc(t); }
+  bool peekOperator(std::string_view op) {
+    peekSymbol();
+    return rawPeek().is(op);
+  }
+  // The next token's first character if it is a symbol, else 0 (as peekOperator).
+  char peekSymbol() {
+    const Token& t = rawPeek();
+    if (t.kind == Token::Kind::Symbol) return t.text[0];
+    return t.kind == Token::Kind::Directive ? peekSymbolAfterDirectives() : 0;
+  }
+  char peekSymbolAfterDirectives();
   void expect(std::string_view symbol, const char* what);
   std::string_view expectWord(const char* what, SourceLoc* loc = nullptr);
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
@@ -174,7 +200,16 @@ class Interpreter {
 
   // Built-in functions (builtins.cpp).
   Value builtin(std::string_view name, const SourceLoc& at);
-  std::vector<Value> arguments(const SourceLoc& at);
+  // A call's `(a, b …)`, read into a vector an earlier call has given back: calls in a loop allocate none.
+  struct Arguments {
+    Interpreter& in;
+    std::vector<Value> values;
+    explicit Arguments(Interpreter& interpreter);
+    ~Arguments();
+    Arguments(const Arguments&) = delete;
+    Arguments& operator=(const Arguments&) = delete;
+  };
+  void readArguments(std::vector<Value>& args);
 
   // Values that are more than an expression (blocks.cpp).
   Value declarable();
@@ -192,6 +227,10 @@ class Interpreter {
   std::vector<Cond> conds_;
   std::vector<Scope> scopes_;
   std::vector<std::uint32_t> randStates_;
+  // Arguments' vectors, given back: a few (one per call nested in another's arguments), at most kSpareArguments,
+  // room for which is made at the start so that giving one back never allocates.
+  static constexpr size_t kSpareArguments = 16;
+  std::vector<std::vector<Value>> spareArguments_;
   std::vector<DataFileDesc> dataFiles_;  // what #write wrote, kept until the scene has parsed
   std::vector<std::string> filesFound_;
   size_t bytesWritten_ = 0;
