@@ -478,11 +478,21 @@ class Builder {
     o.material = constantMaterial(s);
     o.finish = writtenFinish(s);
     o.texture = s.patterned() ? std::make_shared<const Texture>(bounded(makeTexture(s, after))) : nullptr;
+    moveMedia(o.material, glm::inverse(composeTransforms<double>(after)));
+  }
+
+  // A medium's densities move with the object as a texture does; `undo` as in moveTextures.
+  static void moveMedia(Material& m, const glm::dmat4& undo) {
+    if (!m.extras->media || m.extras->media->densities.empty()) return;
+    SurfaceExtras moved = *m.extras;
+    moved.media->fromWorld = moved.media->fromWorld * undo;
+    m.extras = keptExtras(moved);
   }
 
   // Textures made at a deeper level (a child's, or a declared object's) moved with this level's transforms:
   // `undo` takes this level's world back to the one they were made in.
   static void moveTextures(ObjectDesc& o, const glm::dmat4& undo) {
+    moveMedia(o.material, undo);
     if (o.texture) {
       auto t = std::make_shared<Texture>(*o.texture);
       t->fromWorld = t->fromWorld * undo;
