@@ -160,7 +160,7 @@ TEST_CASE("povray scene: an interior's media and its densities; scattering and o
   const SceneDesc s = scene(R"(
 box { -1, 1 hollow pigment { rgbt 1 }
       interior { media { absorption <0.5, 1, 0> emission 0.2 intervals 3 samples 4, 8 method 3 } } }
-sphere { 0, 1 }
+sphere { x * 10, 1 }
 )");
   const SurfaceExtras& e = *s.objects[0].material.extras;
   REQUIRE(e.media);
@@ -198,6 +198,11 @@ sphere { 0, 1 }
         "scene.pov:3:25: error: 'media_attenuation' is not supported yet");
   CHECK(failure("light_source { 0, White media_attenuation on }\n") == "no error");  // nothing to dim it
   CHECK(failure("media { emission 1 }\n") == "scene.pov:3:1: error: 'media' is not supported yet");
+  // A ray would cross the medium only up to the inner object: an object that may lie inside one is refused.
+  CHECK(failure("sphere { 0, 1 hollow interior { media { emission 1 } } scale 3 }\nsphere { x * 3.5, 1 }\n") ==
+        "scene.pov:3:1: error: 'an object inside or across a medium' is not supported yet");
+  CHECK(failure("sphere { 0, 1 hollow interior { media { emission 1 } } scale 3 }\nsphere { x * 4.5, 1 }\n"
+                "plane { y, -5 }\n") == "no error");
   CHECK(failure("box { -1, 1 interior { media { samples 0 } } }\n") ==
         "scene.pov:3:32: error: 'samples' needs at least 1");
 }
