@@ -570,8 +570,9 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
     Color gathered = transmitTint * t.color;
     // Through the interior's medium up to the next surface; a ray that never leaves the object keeps its colour.
     if (entering && m.extras->media && std::isfinite(t.distance)) {
-      const float length = float(t.distance * glm::length(*refracted));
-      gathered = transmitTint * m.extras->media->through(t.color, length);
+      const double length = double(t.distance) * double(glm::length(*refracted));
+      const glm::dvec3 dir = glm::normalize(glm::dvec3(*refracted));
+      gathered = transmitTint * m.extras->media->through(t.color, glm::dvec3(hit.point), dir, length);
     }
     if (entering && options_.beers) gathered *= beerAttenuation(m.pigment, float(t.distance));
     if (entering && m.extras->fadeDistance > 0) gathered *= interiorFade(m, float(t.distance));

@@ -5,20 +5,25 @@
 
 namespace rt {
 
-Color Media::through(const Color& behind, float distance) const {
+Color Media::through(const Color& behind, const glm::dvec3& start, const glm::dvec3& dir, double distance) const {
   const int n = std::max(2, samples / 2 + 1);
-  const double h = double(distance) / n;
-  Color out;
-  for (int c = 0; c < 3; ++c) {
-    double seen = 0, kept = 1;
-    const double step = std::exp(-double(absorption[c]) * h);
+  const double part = distance / intervals;
+  const double h = part / n;
+  glm::dvec3 seen(0), kept(1);
+  const glm::dvec3 a(absorption), e(emission);
+  for (int i = 0; i < intervals; ++i) {
     for (int k = 0; k < n; ++k) {
-      seen += kept;
-      kept *= step;
+      glm::dvec3 density(1);
+      if (!densities.empty()) {
+        const glm::dvec3 at = start + dir * (i * part + part * (k + 0.5) / (n + 1));
+        const glm::dvec3 p = glm::dvec3(fromWorld * glm::dvec4(at, 1));
+        for (const auto& d : densities) density *= glm::dvec3(d->at(p).rgb);
+      }
+      seen += e * density * h * kept;
+      kept *= glm::exp(-a * density * h);
     }
-    out[c] = float(double(behind[c]) * kept + double(emission[c]) * h * seen);
   }
-  return out;
+  return Color(glm::dvec3(behind) * kept + seen);
 }
 
 }  // namespace rt

@@ -1,9 +1,47 @@
-// `media { absorption C  emission C  intervals N  samples MIN[, MAX]  method 3 }` in an interior (POV-Ray 3.7
-// manual, "Media"): a homogeneous medium without scattering; density, scattering and the other sampling
+// `media { absorption C  emission C  intervals N  samples MIN[, MAX]  method 3  density { … } }` in an interior
+// (POV-Ray 3.7 manual, "Media" and "Density"): a medium without scattering; scattering and the other sampling
 // methods are refused.
+#include <algorithm>
+
 #include "raytrace/parse/povray/surface_reader.hpp"
 
 namespace rt::povray {
+
+namespace {
+
+// A density block is written as a pigment is, with density_map and nested densities for pigment_map and
+// pigments: the same node with those keywords renamed, read by the pigment reader.
+std::shared_ptr<const Node> asPigment(const Node& n) {
+  auto out = std::make_shared<Node>(n);
+  if (n.keyword == "density") out->keyword = "pigment";
+  if (n.keyword == "density_map") out->keyword = "pigment_map";
+  for (Item& it : out->items) {
+    if (it.kind == Item::Kind::Node) it.node = asPigment(*it.node);
+  }
+  return out;
+}
+
+// `density { … }`. Unlike a pigment's, a density's defaults are white and, for a pattern without a map, a
+// ramp from black at 0 to white at 1 (POV-Ray 3.7 manual, "Density").
+std::shared_ptr<const Pigment> readDensity(const Node& n, Refusals& refusals) {
+  const std::shared_ptr<const Node> body = asPigment(n);
+  auto p = std::make_shared<Pigment>(*nestedPigment(*body, refusals));
+  const bool coloured = std::any_of(body->items.begin(), body->items.end(), [](const Item& it) {
+    return (it.kind == Item::Kind::Value && it.value.numeric()) || (it.kind == Item::Kind::Node && it.node->keyword == "pigment");
+  });
+  if (!p->pattern && !p->average && !p->image && !coloured) p->solid.rgb = Color(1);
+  if (p->pattern && p->pattern->blocks() == 0 && p->map.empty()) {
+    auto grey = [](float v) {
+      auto g = std::make_shared<Pigment>();
+      g->solid.rgb = Color(v);
+      return std::shared_ptr<const Pigment>(g);
+    };
+    p->map = {{0, grey(0)}, {1, grey(1)}};
+  }
+  return p;
+}
+
+}  // namespace
 
 std::optional<Media> readMedia(const Node& n, Refusals& refusals) {
   Media media;
@@ -32,6 +70,10 @@ std::optional<Media> readMedia(const Node& n, Refusals& refusals) {
       refused = refused || !declared;
       continue;
     }
+    if (it.kind == Item::Kind::Node && it.node->keyword == "density") {
+      media.densities.push_back(readDensity(*it.node, refusals));
+      continue;
+    }
     if (it.kind != Item::Kind::Keyword) {
       refuse(it.loc, it.kind == Item::Kind::Node ? std::string(it.node->keyword) : "a value in media");
       continue;
@@ -46,7 +88,9 @@ std::optional<Media> readMedia(const Node& n, Refusals& refusals) {
       // The maximum: method 3 takes only the minimum.
       if (i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value) ++i;
     } else if (w == "intervals") {
-      if (number(i, it, "a number of intervals") < 1) throw ParseError(it.loc, "'intervals' needs at least 1");
+      const double intervals = number(i, it, "a number of intervals");
+      if (intervals < 1) throw ParseError(it.loc, "'intervals' needs at least 1");
+      media.intervals = int(intervals);
     } else if (w == "method") {
       if (number(i, it, "1, 2 or 3") != 3) refuse(it.loc, "media method other than 3");
     } else {

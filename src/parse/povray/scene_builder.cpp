@@ -139,6 +139,17 @@ class Builder {
   void finish() {
     // Media do not dim the lights yet: a light that asks them to is refused, once some object has a medium.
     if (mediaAttenuation_ && refusals_.media) refusals_.refuse(*mediaAttenuation_, "media_attenuation");
+    // A ray crosses a medium only up to its next hit: a bounded object that may lie inside or across a medium
+    // would cut the medium short behind it, so such scenes are refused.
+    for (const auto& [index, at] : mediaObjects_) {
+      const Ball medium = worldBall(scene_.objects[index]);
+      for (size_t j = 0; j < scene_.objects.size(); ++j) {
+        const Ball other = worldBall(scene_.objects[j]);
+        if (j != index && other.radius > 0 && glm::distance(medium.center, other.center) < medium.radius + other.radius) {
+          refusals_.refuse(at, "an object inside or across a medium");
+        }
+      }
+    }
     if (refusals_.first) throw ParseError(refusals_.first->loc, "'" + refusals_.first->what + "' is not supported yet");
   }
 
@@ -159,7 +170,21 @@ class Builder {
     }
     const std::string shortage = objectMemoryShortage(scene_.objects.size(), scene_.objects.size() + 1, "the scene");
     if (!shortage.empty()) throw ParseError(at, shortage);
+    if (o.material.extras->media) mediaObjects_.emplace_back(scene_.objects.size(), at);
     scene_.objects.push_back(std::move(o));
+  }
+
+  // A ball around the object in world space (radius 0 for an unbounded one): its shape's ball moved by its
+  // transforms, the radius scaled by √(‖A‖₁·‖A‖∞) of their linear part A, which bounds any stretch.
+  static Ball worldBall(const ObjectDesc& o) {
+    const Ball own = std::visit([](const auto& kind) { return kind.boundingBall(); }, o.shape);
+    const glm::dmat4 m = composeTransforms<double>(o.transforms);
+    double columns = 0, rows = 0;
+    for (int i = 0; i < 3; ++i) {
+      columns = std::max(columns, std::abs(m[i][0]) + std::abs(m[i][1]) + std::abs(m[i][2]));
+      rows = std::max(rows, std::abs(m[0][i]) + std::abs(m[1][i]) + std::abs(m[2][i]));
+    }
+    return {glm::dvec3(m * glm::dvec4(own.center, 1)), own.radius * std::sqrt(columns * rows)};
   }
 
   void refuse(const SourceLoc& loc, std::string_view what) { refusals_.refuse(loc, what); }
@@ -482,11 +507,21 @@ class Builder {
     o.material = constantMaterial(s);
     o.finish = writtenFinish(s);
     o.texture = s.patterned() ? std::make_shared<const Texture>(bounded(makeTexture(s, after))) : nullptr;
+    moveMedia(o.material, glm::inverse(composeTransforms<double>(after)));
+  }
+
+  // A medium's densities move with the object as a texture does; `undo` as in moveTextures.
+  static void moveMedia(Material& m, const glm::dmat4& undo) {
+    if (!m.extras->media || m.extras->media->densities.empty()) return;
+    SurfaceExtras moved = *m.extras;
+    moved.media->fromWorld = moved.media->fromWorld * undo;
+    m.extras = keptExtras(moved);
   }
 
   // Textures made at a deeper level (a child's, or a declared object's) moved with this level's transforms:
   // `undo` takes this level's world back to the one they were made in.
   static void moveTextures(ObjectDesc& o, const glm::dmat4& undo) {
+    moveMedia(o.material, undo);
     if (o.texture) {
       auto t = std::make_shared<Texture>(*o.texture);
       t->fromWorld = t->fromWorld * undo;
@@ -869,6 +904,7 @@ class Builder {
   bool asciiStrings_ = true;  // global_settings' charset
   Surface default_;
   Refusals refusals_;
+  std::vector<std::pair<size_t, SourceLoc>> mediaObjects_;  // the objects with a medium, and where each is written
   std::optional<SourceLoc> mediaAttenuation_;  // the first light's `media_attenuation on`
   struct Asked {
     std::shared_ptr<const Node> node;  // held, so that its address names no other node

@@ -156,11 +156,11 @@ TEST_CASE("povray scene: a fog's turbulence and its modifiers; the scene's noise
         "scene.pov:3:37: error: 'warp' is not supported yet");
 }
 
-TEST_CASE("povray scene: an interior's media; density, scattering and other methods are refused", "[povray][media]") {
+TEST_CASE("povray scene: an interior's media and its densities; scattering and other methods are refused", "[povray][media]") {
   const SceneDesc s = scene(R"(
 box { -1, 1 hollow pigment { rgbt 1 }
       interior { media { absorption <0.5, 1, 0> emission 0.2 intervals 3 samples 4, 8 method 3 } } }
-sphere { 0, 1 }
+sphere { x * 10, 1 }
 )");
   const SurfaceExtras& e = *s.objects[0].material.extras;
   REQUIRE(e.media);
@@ -175,8 +175,18 @@ sphere { 0, 1 }
   CHECK(m.emission == Color(0.5f));
   CHECK(m.absorption == Color(2));
   CHECK(m.samples == 3);
-  CHECK(failure("box { -1, 1 interior { media { emission 1 density { spherical } } } }\n") ==
-        "scene.pov:3:43: error: 'density' is not supported yet");
+  // Densities: white by default; a pattern without a map ramps from black to white; density_map as pigment_map.
+  const SceneDesc ds = scene("sphere { 0, 1 interior { media { emission 1 intervals 2 density { } density { rgb 0.5 }\n"
+                             "  density { gradient x } density { gradient y density_map { [0 density { rgb 0.2 }] [1 rgb 1] } } } } }\n");
+  const Media& dm = *ds.objects[0].material.extras->media;
+  CHECK(dm.intervals == 2);
+  REQUIRE(dm.densities.size() == 4);
+  CHECK(dm.densities[0]->at(glm::dvec3(0.3)).rgb == Color(1));
+  CHECK(dm.densities[1]->at(glm::dvec3(0.3)).rgb == Color(0.5f));
+  CHECK(dm.densities[2]->at(glm::dvec3(0.25, 0, 0)).rgb == Color(0.25f));
+  CHECK(dm.densities[3]->at(glm::dvec3(0, 0.5, 0)).rgb == Color(0.6f));
+  CHECK(failure("box { -1, 1 interior { media { emission 1 density { spherical warp { repeat x } } } } }\n") ==
+        "scene.pov:3:70: error: 'repeat' is not supported yet");
   CHECK(failure("box { -1, 1 interior { media { scattering { 1, 0.5 } } } }\n") ==
         "scene.pov:3:32: error: 'scattering' is not supported yet");
   CHECK(failure("box { -1, 1 interior { media { emission 1 method 2 } } }\n") ==
@@ -188,6 +198,11 @@ sphere { 0, 1 }
         "scene.pov:3:25: error: 'media_attenuation' is not supported yet");
   CHECK(failure("light_source { 0, White media_attenuation on }\n") == "no error");  // nothing to dim it
   CHECK(failure("media { emission 1 }\n") == "scene.pov:3:1: error: 'media' is not supported yet");
+  // A ray would cross the medium only up to the inner object: an object that may lie inside one is refused.
+  CHECK(failure("sphere { 0, 1 hollow interior { media { emission 1 } } scale 3 }\nsphere { x * 3.5, 1 }\n") ==
+        "scene.pov:3:1: error: 'an object inside or across a medium' is not supported yet");
+  CHECK(failure("sphere { 0, 1 hollow interior { media { emission 1 } } scale 3 }\nsphere { x * 4.5, 1 }\n"
+                "plane { y, -5 }\n") == "no error");
   CHECK(failure("box { -1, 1 interior { media { samples 0 } } }\n") ==
         "scene.pov:3:32: error: 'samples' needs at least 1");
 }
