@@ -324,7 +324,7 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
   Vec3<T> n = side;  // the shading normal: the surface's, or bent by the texture's normal
   std::optional<Vec3<T>> refracted;
   Material textured;
-  const Material& m = hit.object->materialAt(hit.point, textured, n);
+  const Material& m = hit.object->materialAt(hit, textured, n);
   const Weights w = split(ray, hit, m, n, record, refracted);
   Color ambientLight(0);
   Local local;
@@ -533,7 +533,7 @@ template <class T> Color Tracer<T>::transmittance(const Ray<T>& ray, Interval<T>
     const std::optional<Hit<T>> hit = scene_.closestHit(ray, segment);
     if (!hit) return through;
     Material textured;
-    const Material& m = hit->object->materialAt(hit->point, textured);
+    const Material& m = hit->object->materialAt(*hit, textured);
     through *= m.filter * m.pigment;
     // Leaving an object with an interior fade: the light faded over its way inside, from the surface before.
     if (m.extras->fadeDistance > 0 && glm::dot(ray.dir, hit->normal) > T(0)) {

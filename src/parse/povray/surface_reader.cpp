@@ -816,6 +816,16 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
 
 void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusals& refusals) {
   const std::string_view k = n.keyword;
+  // uv_mapping in a pigment, normal or texture maps the whole surface by its uv coordinates: the block is read
+  // without it.
+  const auto uv = [](const Item& it) { return it.kind == Item::Kind::Keyword && it.word == "uv_mapping"; };
+  if ((k == "pigment" || k == "normal" || k == "texture") && std::any_of(n.items.begin(), n.items.end(), uv)) {
+    Node without = n;
+    without.items.erase(std::remove_if(without.items.begin(), without.items.end(), uv), without.items.end());
+    s.uvMapped = true;
+    readSurfaceItem(without, s, defaults, refusals);
+    return;
+  }
   SurfaceLayer& top = s.layers.back();
   if (k == "pigment") {
     const std::vector<WarpMark> warps = readPigment(n, top.pigment, top.steps, refusals);
@@ -904,6 +914,7 @@ Texture makeTexture(const Surface& s, const std::vector<TransformStep>& after) {
     t.layers.push_back({p, finishTerms(layer.finish, s), layer.pattern, std::move(normal)});
   }
   t.fromWorld = glm::inverse(composeTransforms<double>(after));
+  t.uvMapped = s.uvMapped;
   return t;
 }
 

@@ -88,6 +88,7 @@ struct Surface {
   double fadeDistance = 0, fadePower = 0;  // the interior's fade (Material)
   Color fadeColor{0};
   std::optional<Media> media;  // the interior's (Material)
+  bool uvMapped = false;       // uv_mapping in the object, or in one of its pigments, normals or textures
   bool patterned() const;  // whether some layer's colour varies, or there are layers: a Texture is needed
 };
 
