@@ -174,7 +174,7 @@ int raycast(const Invocation& inv, std::ostream&) {
         const auto hit = scene.closestHit(camera.pixelRay(x, y), {}, Sight::Image);
         Material textured;
         image.at(x - region.x0, y - bottom) =
-            hit ? hit->object->materialAt(hit->point, textured).pigment : inv.scene.conventions.background;
+            hit ? hit->object->materialAt(*hit, textured).pigment : inv.scene.conventions.background;
       }
     }
     return 0;

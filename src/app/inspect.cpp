@@ -101,7 +101,7 @@ int firsthit(const Invocation& inv, std::ostream& out) {
     }
     Material textured;
     out << "T = " << fixed4(hit->t) << "\nObject Type: " << hit->object->name()
-        << "\nColor: " << bare(hit->object->materialAt(hit->point, textured).pigment) << "\n";
+        << "\nColor: " << bare(hit->object->materialAt(*hit, textured).pigment) << "\n";
     return 0;
   });
 }

@@ -324,7 +324,7 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
   Vec3<T> n = side;  // the shading normal: the surface's, or bent by the texture's normal
   std::optional<Vec3<T>> refracted;
   Material textured;
-  const Material& m = hit.object->materialAt(hit.point, textured, n);
+  const Material& m = hit.object->materialAt(hit, textured, n);
   const Weights w = split(ray, hit, m, n, record, refracted);
   Color ambientLight(0);
   Local local;
@@ -534,9 +534,11 @@ template <class T> Color Tracer<T>::transmittance(const Ray<T>& ray, Interval<T>
     if (!hit) return through;
     Material textured;
     Vec3<T> n = hit->normal;
-    const Material& m = hit->object->materialAt(hit->point, textured, n);
+    const Material& m = hit->object->materialAt(*hit, textured, n);
     through *= m.filter * m.pigment;
-    if (m.extras->caustics != 0) through *= fakedCaustics(m.extras->caustics, float(glm::dot(n, ray.dir) / glm::length(ray.dir)));
+    if (m.extras->caustics != 0) {
+      through *= fakedCaustics(m.extras->caustics, float(glm::dot(n, ray.dir) / glm::length(ray.dir)));
+    }
     // Leaving an object with an interior fade: the light faded over its way inside, from the surface before.
     if (m.extras->fadeDistance > 0 && glm::dot(ray.dir, hit->normal) > T(0)) {
       through *= interiorFade(m, float((hit->t - segment.min) * glm::length(ray.dir)));

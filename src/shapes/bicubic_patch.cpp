@@ -16,7 +16,8 @@ std::array<double, 4> bernsteinSlope(double s) {
 
 }  // namespace
 
-MeshData bicubicPatchMesh(const std::array<glm::dvec3, 16>& p, int uSteps, int vSteps) {
+MeshData bicubicPatchMesh(const std::array<glm::dvec3, 16>& p, int uSteps, int vSteps,
+                          const std::array<glm::dvec2, 4>& uvCorners) {
   MeshData m;
   const int nu = 1 << uSteps, nv = 1 << vSteps;
   // The point at (u, v) is Σ Bᵢ(u)·Bⱼ(v)·p[4i + j]: u runs across the rows of the control points, v along a row
@@ -36,6 +37,10 @@ MeshData bicubicPatchMesh(const std::array<glm::dvec3, 16>& p, int uSteps, int v
         }
       }
       m.vertices.push_back(point);
+      // uv_mapping's coordinates: the uv_vectors of the four corners blended bilinearly (the manual's §3.4.6.7.2),
+      // its u along a row of the control points, as POV-Ray's pictures show.
+      m.uvs.push_back((1 - v) * (1 - u) * uvCorners[0] + v * (1 - u) * uvCorners[1] + v * u * uvCorners[2] +
+                      (1 - v) * u * uvCorners[3]);
       // At a corner where control points coincide the normal is undefined: that corner is left flat.
       const glm::dvec3 n = glm::cross(alongU, alongV);
       m.normals.push_back(glm::length(n) > 0 ? glm::normalize(n) : glm::dvec3(0));
@@ -44,6 +49,7 @@ MeshData bicubicPatchMesh(const std::array<glm::dvec3, 16>& p, int uSteps, int v
   const auto add = [&](uint32_t a, uint32_t b, uint32_t c) {
     MeshData::Face f;
     f.v = {a, b, c};
+    f.uv = {int32_t(a), int32_t(b), int32_t(c)};
     const bool smooth = m.normals[a] != glm::dvec3(0) && m.normals[b] != glm::dvec3(0) && m.normals[c] != glm::dvec3(0);
     if (smooth) f.n = {int32_t(a), int32_t(b), int32_t(c)};
     m.faces.push_back(f);

@@ -129,9 +129,13 @@ template <class T> MeshGeometry<T>::MeshGeometry(const MeshData& data) {
   if (data.waterLevel) waterLevel = T(*data.waterLevel);
   smoothOf.assign(data.faces.size(), -1);
   surfaceOf.resize(data.faces.size());
+  if (!data.uvs.empty()) cornerUvs.resize(data.faces.size());
   for (size_t i = 0; i < data.faces.size(); ++i) {
     const MeshData::Face& f = data.faces[i];
     surfaceOf[i] = f.surface;
+    for (size_t k = 0; k < 3 && !cornerUvs.empty(); ++k) {
+      if (f.uv[k] >= 0) cornerUvs[i][k] = glm::vec<2, T>(data.uvs[size_t(f.uv[k])]);
+    }
     const Vec3<T> a(data.vertices[f.v[0]]), b(data.vertices[f.v[1]]), c(data.vertices[f.v[2]]);
     const T area = glm::length(glm::cross(b - a, c - a));
     if (!(area > T(0) && area < std::numeric_limits<T>::infinity())) continue;
@@ -201,6 +205,10 @@ std::optional<Hit<T>> MeshObject<T>::intersect(const Ray<T>& ray, Interval<T> ra
     hit.normal = glm::normalize((T(1) - u - v) * n[0] + u * n[1] + v * n[2]);
   }
   if (smooth < 0 || !hit.hasNormal()) hit.normal = glm::normalize(glm::cross(tri.ab, tri.ac));
+  if (!geometry_->cornerUvs.empty()) {
+    const auto& c = geometry_->cornerUvs[tri.face];
+    hit.uv = (T(1) - u - v) * c[0] + u * c[1] + v * c[2];
+  }
   const int32_t surface = geometry_->surfaceOf[tri.face];
   hit.object = surface >= 0 ? static_cast<const Object<T>*>(surfaces_[size_t(surface)].get()) : this;
   return hit;

@@ -27,6 +27,7 @@ const PatternKind* patternKind(std::string_view name) {
       {"mandel", false, makeFractal},
       {"marble", false, makeMarble, kTriangle, true},
       {"onion", false, makeOnion},
+      {"pigment_pattern", false, makePigmentPattern},  // its pigment read by surface_reader.cpp
       {"planar", false, makePlanar},
       {"quilted", false, makeQuilted},
       {"radial", false, makeRadial},

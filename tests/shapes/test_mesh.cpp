@@ -69,10 +69,10 @@ TEST_CASE("a mesh triangle's texture is its own, the others take the mesh's", "[
   const auto front = object->intersect({{0.2, 0.2, -5}, {0, 0, 1}}, kAll);
   REQUIRE(front);
   CHECK(front->t == 4);
-  CHECK(front->object->materialAt(front->point, scratch).pigment == Color(1, 0, 0));
+  CHECK(front->object->materialAt(*front, scratch).pigment == Color(1, 0, 0));
   const auto middle = object->intersect({{0.2, 0.2, -0.5}, {0, 0, 1}}, kAll);
   REQUIRE(middle);
-  CHECK(middle->object->materialAt(middle->point, scratch).pigment == Color(0, 0, 1));
+  CHECK(middle->object->materialAt(*middle, scratch).pigment == Color(0, 0, 1));
 }
 
 TEST_CASE("a mesh2's faces index its vertices, normals and textures", "[mesh]") {
@@ -92,11 +92,11 @@ TEST_CASE("a mesh2's faces index its vertices, normals and textures", "[mesh]") 
   Material scratch;
   const auto lower = object->intersect({{0.75, 0.25, -1}, {0, 0, 1}}, kAll);
   REQUIRE(lower);
-  CHECK(lower->object->materialAt(lower->point, scratch).pigment == Color(0, 1, 0));
+  CHECK(lower->object->materialAt(*lower, scratch).pigment == Color(0, 1, 0));
   CHECK(lower->normal == glm::dvec3(0, 0, -1));
   const auto upper = object->intersect({{0.25, 0.75, -1}, {0, 0, 1}}, kAll);
   REQUIRE(upper);
-  CHECK(upper->object->materialAt(upper->point, scratch).pigment == Color(0, 0, 1));
+  CHECK(upper->object->materialAt(*upper, scratch).pigment == Color(0, 0, 1));
 }
 
 TEST_CASE("every object showing a declared mesh shares its triangles and their hierarchy", "[mesh]") {
@@ -140,4 +140,55 @@ TEST_CASE("an empty mesh, and a mesh2 index past its list, are errors where they
   CHECK(povFailure("mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n"
                    "        normal_vectors { 1, y } face_indices { 1, <0,1,2> } normal_indices { 1, <0,0,1> } }\n") ==
         "scene.pov:3:81: error: index 1 is out of range for the 1 normal_vectors");
+}
+
+TEST_CASE("a mesh2's uv vectors are blended over a face, and a uv_mapping texture reads them, not the point",
+          "[mesh][uv]") {
+  const SceneDesc s = pov(
+      "mesh2 { vertex_vectors { 3, <0,0,0>, <4,0,0>, <0,4,0> }\n"
+      "        uv_vectors { 3, <0.5,0>, <0,0.5>, <0.25,1> }\n"
+      "        face_indices { 1, <0,1,2> }\n"
+      "        uv_indices { 1, <2,1,0> }\n"
+      "        uv_mapping pigment { gradient x color_map { [0 rgb 0] [1 rgb <1,0,0>] } }\n"
+      "        translate <10,0,0> }\n");
+  const auto object = made(s.objects[0]);
+  // At a quarter of the way to corner 1 and half to corner 2: 0.25·(0, 0.5) + 0.5·(0.5, 0) + 0.25·(0.25, 1).
+  const auto hit = object->intersect({{11, 2, -1}, {0, 0, 1}}, kAll);
+  REQUIRE(hit);
+  CHECK(hit->uv.x == Approx(0.3125));
+  CHECK(hit->uv.y == Approx(0.375));
+  Material scratch;
+  CHECK(hit->object->materialAt(*hit, scratch).pigment.r == Approx(0.3125));
+}
+
+TEST_CASE("a mesh triangle's uv_vectors, and a bicubic patch's corners' uv, default or given", "[mesh][uv]") {
+  const SceneDesc s = pov(
+      "mesh { triangle { <0,0,0>, <2,0,0>, <0,2,0> uv_vectors <0,0>, <1,0>, <0,1> } }\n"
+      "bicubic_patch { type 1 u_steps 2 v_steps 2\n"
+      "  <0,0,0>, <1,0,0>, <2,0,0>, <3,0,0>, <0,1,0>, <1,1,0>, <2,1,0>, <3,1,0>,\n"
+      "  <0,2,0>, <1,2,0>, <2,2,0>, <3,2,0>, <0,3,0>, <1,3,0>, <2,3,0>, <3,3,0> }\n"
+      "bicubic_patch { type 1 u_steps 2 v_steps 2 uv_vectors <0,0>, <2,0>, <2,4>, <0,4>\n"
+      "  <0,0,0>, <1,0,0>, <2,0,0>, <3,0,0>, <0,1,0>, <1,1,0>, <2,1,0>, <3,1,0>,\n"
+      "  <0,2,0>, <1,2,0>, <2,2,0>, <3,2,0>, <0,3,0>, <1,3,0>, <2,3,0>, <3,3,0> }\n");
+  REQUIRE(s.objects.size() == 3);
+  const auto triangle = made(s.objects[0])->intersect({{0.5, 1, -1}, {0, 0, 1}}, kAll);
+  REQUIRE(triangle);
+  CHECK(triangle->uv.x == Approx(0.25));
+  CHECK(triangle->uv.y == Approx(0.5));
+  // The patch is the square of side 3 in x and y, evenly spaced: u runs along a row of control points (x).
+  // With uv_vectors <0,0>, <2,0>, <2,4>, <0,4>, u is twice as large and v four times.
+  const glm::dvec2 scale[] = {{1, 1}, {2, 4}};
+  for (size_t i : {size_t(1), size_t(2)}) {
+    const auto patch = made(s.objects[i])->intersect({{0.75, 2.25, -1}, {0, 0, 1}}, kAll);
+    REQUIRE(patch);
+    CHECK(patch->uv.x == Approx(0.25 * scale[i - 1].x));
+    CHECK(patch->uv.y == Approx(0.75 * scale[i - 1].y));
+  }
+}
+
+TEST_CASE("uv_mapping is refused on a shape without uv coordinates and with a normal", "[mesh][uv]") {
+  CHECK(povFailure("sphere { 0, 1 uv_mapping pigment { checker } }\n") ==
+        "scene.pov:2:1: error: 'uv_mapping on a Sphere' is not supported yet");
+  CHECK(povFailure("mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> } texture { uv_mapping normal { bumps } } }\n") ==
+        "scene.pov:2:1: error: 'uv_mapping of a normal' is not supported yet");
 }

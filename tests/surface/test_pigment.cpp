@@ -95,4 +95,25 @@ TEST_CASE("pigment: average mixes its map's pigments, each weighted by its entry
 }
 
 }  // namespace
+
+// POV-Ray's values of `function { pattern { pigment_pattern { gradient x color_map { [0 rgb <1,0,0>] [0.5 rgb
+// <0,1,0>] [1 rgb <0,0,1>] } } } }` at x = 0, 0.25, 0.5 and 0.9999, and of `pigment_pattern { rgbft <0.2, 0.5,
+// 0.9, 0.3, 0.4> }`: the colour's grey, filter and transmit left out.
+TEST_CASE("pigment: pigment_pattern is its pigment's grey, as POV-Ray prints it", "[pigment]") {
+  auto ramp = std::make_shared<Pigment>();
+  ramp->pattern = pattern("gradient", glm::dvec3(1, 0, 0));
+  ramp->map = {{0, solid({1, 0, 0})}, {0.5, solid({0, 1, 0})}, {1, solid({0, 0, 1})}};
+  PatternArgs args;
+  args.pigment = ramp;
+  const auto grey = patternKind("pigment_pattern")->make(args);
+  CHECK(grey->value({0, 0, 0}) == Approx(0.297).epsilon(1e-6));
+  CHECK(grey->value({0.25, 0, 0}) == Approx(0.443).epsilon(1e-6));
+  CHECK(grey->value({0.5, 0, 0}) == Approx(0.589).epsilon(1e-6));
+  CHECK(grey->value({0.9999, 0, 0}) == Approx(0.114095).epsilon(1e-5));
+  auto filtered = std::make_shared<Pigment>();
+  filtered->solid = {Color(0.2f, 0.5f, 0.9f), 0.3f, 0.4f};
+  args.pigment = filtered;
+  CHECK(patternKind("pigment_pattern")->make(args)->value({1, 2, 3}) == Approx(0.4565).epsilon(1e-6));
+}
+
 }  // namespace rt

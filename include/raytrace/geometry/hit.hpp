@@ -15,6 +15,8 @@ template <class T> struct Hit {
                                     // course tier reports o + t·d instead (Scene::hitPoint)
   Vec3<T> normal{0};                // unit, geometric, pointing out of the object whatever side the ray is on
   const Object<T>* object = nullptr;
+  glm::vec<2, T> uv{0};             // the surface's uv coordinates, where a uv_mapping texture reads (the shapes that
+                                    // have them fill it in; docs/povray-language.md, "Textures")
 
   // False when the shape's size is below what the arithmetic resolves there (a sphere of radius 1e-320, whose
   // hit point cannot be told from its centre): the normal has no direction. Such a shape is missed.

@@ -13,7 +13,8 @@ namespace rt {
 
 // The triangles of the patch whose control points are `p` (four rows of four), 2^uSteps pieces across the rows
 // and 2^vSteps along them, with the surface's normals at their corners.
-MeshData bicubicPatchMesh(const std::array<glm::dvec3, 16>& p, int uSteps, int vSteps);
+MeshData bicubicPatchMesh(const std::array<glm::dvec3, 16>& p, int uSteps, int vSteps,
+                          const std::array<glm::dvec2, 4>& uvCorners = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}});
 
 // The most steps either way: 2^10 × 2^10 pieces are two million triangles.
 constexpr int kMaxPatchSteps = 10;
@@ -53,9 +54,13 @@ template <class Reader> MeshData readBicubicPatch(Reader& r) {
     }
   }
   if (!typed) throw ParseError(at, "'bicubic_patch' needs its type");
+  std::array<glm::dvec2, 4> uv{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  if (r.keyword("uv_vectors")) {
+    for (glm::dvec2& corner : uv) corner = glm::dvec2(r.vec3("a corner's uv vector"));
+  }
   std::array<glm::dvec3, 16> p;
   for (glm::dvec3& point : p) point = r.vec3("a control point of the patch");
-  return bicubicPatchMesh(p, steps[0], steps[1]);
+  return bicubicPatchMesh(p, steps[0], steps[1], uv);
 }
 
 }  // namespace rt

@@ -98,6 +98,12 @@ struct MeshDesc {
         f.n[k] = int32_t(m.normals.size());
         m.normals.push_back(t.vec3("a smooth triangle's corner normal"));
       }
+      if (textured && t.keyword("uv_vectors")) {
+        for (size_t k = 0; k < 3; ++k) {
+          f.uv[k] = int32_t(m.uvs.size());
+          m.uvs.push_back(glm::dvec2(t.vec3("a corner's uv vector")));
+        }
+      }
       if (textured) f.surface = faceTexture(t, surfaces, sources);
       m.faces.push_back(f);
     }
@@ -140,8 +146,8 @@ struct MeshDesc {
   template <class Reader> static void readMesh2(Reader& r, MeshData& m, std::vector<FaceSurface>& surfaces) {
     list(r, "vertex_vectors", [&](auto& l, size_t) { m.vertices.push_back(l.vec3("a vertex")); });
     list(r, "normal_vectors", [&](auto& l, size_t) { m.normals.push_back(l.vec3("a normal")); });
-    // The uv coordinates place a uv_mapping texture, which is not read yet: they change nothing drawn.
-    list(r, "uv_vectors", [&](auto& l, size_t) { l.vec3("a uv vector"); });
+    // The uv coordinates place a uv_mapping texture (the manual's §3.4.6.7.2).
+    list(r, "uv_vectors", [&](auto& l, size_t) { m.uvs.push_back(glm::dvec2(l.vec3("a uv vector"))); });
     size_t textures = 0;
     list(r, "texture_list", [&](auto& l, size_t) {
       FaceSurface s;
@@ -177,7 +183,18 @@ struct MeshDesc {
         for (size_t k = 0; k < 3; ++k) f.n[k] = int32_t(f.v[k]);
       }
     }
-    list(r, "uv_indices", [&](auto& l, size_t) { l.vec3("a face's uv indices"); });
+    const bool uvIndices = list(r, "uv_indices", [&](auto& l, size_t i) {
+      const SourceLoc at = l.here();
+      const glm::dvec3 n = l.vec3("a face's uv indices");
+      if (i >= m.faces.size()) throw ParseError(at, "'uv_indices' lists more faces than 'face_indices'");
+      for (int k = 0; k < 3; ++k) m.faces[i].uv[size_t(k)] = int32_t(index(n[k], m.uvs.size(), at, "uv_vectors"));
+    });
+    // Without uv_indices, the uv vectors are indexed as the vertices are when there are enough of them.
+    if (!uvIndices && !m.uvs.empty() && m.uvs.size() >= m.vertices.size()) {
+      for (MeshData::Face& f : m.faces) {
+        for (size_t k = 0; k < 3; ++k) f.uv[k] = int32_t(f.v[k]);
+      }
+    }
     if (r.keyword("inside_vector")) m.insideVector = r.vec3("the inside vector");
   }
 };

@@ -74,19 +74,19 @@ template <class T> class Object {
   virtual const char* name() const = 0;
 
   const Material& material() const { return material_; }
-  // What shading reads at `point` of the surface: the texture there, written into `scratch`, or the constant
-  // material of an object without one. The one test costs an untextured scene nothing measurable
-  // (docs/performance.md, "Textures").
-  const Material& materialAt(const Vec3<T>& point, Material& scratch) const {
+  // What shading reads at a hit on the surface: the texture there (at the hit's uv for a uv_mapping texture),
+  // written into `scratch`, or the constant material of an object without one. The one test costs an
+  // untextured scene nothing measurable (docs/performance.md, "Textures").
+  const Material& materialAt(const Hit<T>& hit, Material& scratch) const {
     if (!texture_) return material_;
-    scratch = texture_->at(glm::dvec3(point));
+    scratch = texture_->uvMapped ? texture_->inSpace(glm::dvec3(hit.uv, 0)) : texture_->at(glm::dvec3(hit.point));
     return scratch;
   }
   // The same, and the shading normal `normal` bent where the texture has a normal.
-  const Material& materialAt(const Vec3<T>& point, Material& scratch, Vec3<T>& normal) const {
+  const Material& materialAt(const Hit<T>& hit, Material& scratch, Vec3<T>& normal) const {
     if (!texture_) return material_;
-    scratch = texture_->at(glm::dvec3(point));
-    if (texture_->bumpy) normal = Vec3<T>(texture_->bent(glm::dvec3(point), glm::dvec3(normal)));
+    materialAt(hit, scratch);
+    if (texture_->bumpy) normal = Vec3<T>(texture_->bent(glm::dvec3(hit.point), glm::dvec3(normal)));
     return scratch;
   }
   void setTexture(std::shared_ptr<const Texture> texture) { texture_ = std::move(texture); }

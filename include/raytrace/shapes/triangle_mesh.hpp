@@ -33,9 +33,11 @@ class MeshData {
   struct Face {
     std::array<uint32_t, 3> v{};
     std::array<int32_t, 3> n{{-1, -1, -1}};
+    std::array<int32_t, 3> uv{{-1, -1, -1}};  // its corners' uv vectors, or −1: uv (0, 0) there
     int32_t surface = -1;
   };
   std::vector<glm::dvec3> vertices, normals;
+  std::vector<glm::dvec2> uvs;  // the uv coordinates of uv_mapping (the manual's §3.4.6.7)
   std::vector<Face> faces;
   // POV-Ray's inside_vector: a point is inside when a ray from it this way crosses the triangles an odd number
   // of times (the manual's §3.4.5.2.3.1). Without it the mesh has no inside.
@@ -89,6 +91,7 @@ template <class T> struct MeshGeometry {
   std::vector<std::array<Vec3<T>, 3>> cornerNormals;  // by face, the normals at its corners (a smooth face's)
   std::vector<int32_t> smoothOf;                       // by face, its entry of cornerNormals or −1
   std::vector<int32_t> surfaceOf;                      // by face, its FaceSurface or −1
+  std::vector<std::array<glm::vec<2, T>, 3>> cornerUvs;  // by face, its corners' uv; empty when no face has any
   std::optional<T> waterLevel;                         // MeshData's
 
   explicit MeshGeometry(const MeshData& data);

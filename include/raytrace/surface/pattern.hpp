@@ -12,6 +12,7 @@
 namespace rt {
 
 class Function;
+struct Pigment;
 
 class Pattern {
  public:
@@ -71,6 +72,7 @@ struct PatternArgs {
   CrackleArgs crackle;
   double control0 = 1, control1 = 1;  // quilted's, written among the pattern's modifiers
   std::shared_ptr<const Function> function;  // the function pattern's
+  std::shared_ptr<const Pigment> pigment;    // pigment_pattern's
   glm::dvec3 brickSize{8, 3, 4.5};  // brick's brick_size and mortar
   double mortar = 0.5;
   FractalArgs fractal;

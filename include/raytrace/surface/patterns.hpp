@@ -24,6 +24,7 @@ std::unique_ptr<Pattern> makeHexagon(const PatternArgs&);
 std::unique_ptr<Pattern> makeLeopard(const PatternArgs&);
 std::unique_ptr<Pattern> makeMarble(const PatternArgs&);
 std::unique_ptr<Pattern> makeOnion(const PatternArgs&);
+std::unique_ptr<Pattern> makePigmentPattern(const PatternArgs&);
 std::unique_ptr<Pattern> makePlanar(const PatternArgs&);
 std::unique_ptr<Pattern> makeQuilted(const PatternArgs&);
 // Normals only (surface/normal.hpp), in normalPatternKind(): bumps, dents, ripples, waves and wrinkles as

@@ -46,6 +46,9 @@ struct Texture {
   glm::dmat4 fromWorld{1};           // world space to texture space
   Material bound;                    // each term's largest value anywhere (bounded()), for the tracer's cut-off
   bool bumpy = false;                // whether some layer bends the normal (bounded()): bent() does something
+  // uv_mapping: the layers read the point (u, v, 0) of the surface's uv coordinates instead of the world point,
+  // so the object's transforms do not move them (the POV-Ray 3.7 manual, "UV Mapping").
+  bool uvMapped = false;
 
   // What shading reads at a world point of the surface.
   Material at(const glm::dvec3& point) const { return inSpace(glm::dvec3(fromWorld * glm::dvec4(point, 1))); }

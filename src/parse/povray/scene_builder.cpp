@@ -445,6 +445,8 @@ class Builder {
           o.inverse = !o.inverse;
         } else if (it.word == "no_shadow") {
           o.noShadow = true;
+        } else if (it.word == "uv_mapping") {
+          s.uvMapped = true;
         } else if (it.word == "no_image") {
           o.noImage = true;
         } else if (it.word == "no_reflection") {
@@ -476,9 +478,26 @@ class Builder {
     if (textureFrom || k != "object") surface(o, s, std::vector(o.transforms.begin() + long(textureFrom.value_or(o.transforms.size())), o.transforms.end()));
     if (textureFrom) o.textured = true;
     passTextureDown(o);
+    refuseUvMapping(o, n.loc);
     const glm::dmat4 m = composeTransforms<double>(own);
     for (size_t l = firstLight; l < scene_.lights.size(); ++l) moveLight(scene_.lights[l], m);
     return true;
+  }
+
+  // uv_mapping is drawn on the shapes made of triangles (their uv vectors), without a normal: any other is
+  // refused where the object is written.
+  void refuseUvMapping(const ObjectDesc& o, const SourceLoc& at) {
+    const auto refused = [](const std::shared_ptr<const Texture>& t) { return t && t->uvMapped && t->bumpy; };
+    if (const auto* csg = std::get_if<CsgDesc>(&o.shape)) {
+      for (const ObjectDesc& child : csg->children) refuseUvMapping(child, at);
+    } else if (const auto* mesh = std::get_if<MeshDesc>(&o.shape)) {
+      if (refused(o.texture) || std::any_of(mesh->surfaces.begin(), mesh->surfaces.end(),
+                                            [&](const FaceSurface& f) { return refused(f.texture); })) {
+        refuse(at, "uv_mapping of a normal");
+      }
+    } else if (o.texture && o.texture->uvMapped) {
+      refuse(at, "uv_mapping on a " + std::string(std::visit([](const auto& kind) { return kind.name(); }, o.shape)));
+    }
   }
 
   // POV-Ray's `sturm [on]`: the Sturm-sequence root finder, for the kinds that have one (a `sturm` member);

@@ -83,6 +83,8 @@ bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, 
   return true;
 }
 
+std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals);
+
 namespace {
 
 std::shared_ptr<const Pigment> solidPigment(const Rgbft& c) {
@@ -166,8 +168,12 @@ struct PatternDraft {
                                  const PatternKind* (*kinds)(std::string_view) = patternKind) {
     const Item& it = n.items[i];
     const bool function = isFunction(it);
-    const PatternKind* k = function ? patternKind("function") : it.kind == Item::Kind::Keyword ? kinds(it.word) : nullptr;
-    if (!k) return nullptr;
+    const bool pigment = it.kind == Item::Kind::Node && it.node->keyword == "pigment_pattern";
+    const PatternKind* k = function                         ? patternKind("function")
+                           : pigment                        ? patternKind("pigment_pattern")
+                           : it.kind == Item::Kind::Keyword ? kinds(it.word)
+                                                            : nullptr;
+    if (!k || (k->make == makePigmentPattern && !pigment)) return nullptr;  // pigment_pattern needs its block
     if (function && !static_cast<const FunctionValue&>(*it.value.ref).compiled) {
       const auto& f = static_cast<const FunctionValue&>(*it.value.ref);
       refusals.refuse(f.whyAt, f.why);
@@ -177,6 +183,7 @@ struct PatternDraft {
     args = PatternArgs{};
     args.noise.scene = refusals.sceneNoise;
     if (function) args.function = static_cast<const FunctionValue&>(*it.value.ref).compiled;
+    if (pigment) args.pigment = nestedPigment(*it.node, refusals);
     if (k->needsVector) {
       const Value* v = valueAfter(n, i);
       if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a number or a vector");
@@ -291,8 +298,6 @@ struct PatternDraft {
 
 }  // namespace
 
-std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals);
-
 namespace {
 
 // color_map or pigment_map entries: `[value colour]`, `[value pigment { … }]`, or the old `[v0 v1 colour0 colour1]`.
@@ -375,7 +380,8 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
       continue;
     }
     if (readTransform(n, i, steps, refusals)) continue;
-    if (it.kind == Item::Kind::Node) {
+    const bool pigmentPattern = it.kind == Item::Kind::Node && it.node->keyword == "pigment_pattern";
+    if (it.kind == Item::Kind::Node && !pigmentPattern) {
       const std::string_view k = it.node->keyword;
       if (k == "pigment" && blocks && p.list.size() < size_t(p.pattern->blocks())) {
         p.list.push_back(nestedPigment(*it.node, refusals));
@@ -395,7 +401,7 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
       }
       continue;
     }
-    if (it.kind != Item::Kind::Keyword && !isFunction(it)) {
+    if (it.kind != Item::Kind::Keyword && !isFunction(it) && !pigmentPattern) {
       refusals.refuse(it, "a value here");
       continue;
     }
@@ -599,7 +605,8 @@ void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::ve
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     if (readTransform(n, i, steps, refusals)) continue;
-    if (it.kind == Item::Kind::Node) {
+    const bool pigmentPattern = it.kind == Item::Kind::Node && it.node->keyword == "pigment_pattern";
+    if (it.kind == Item::Kind::Node && !pigmentPattern) {
       const std::string_view k = it.node->keyword;
       const bool blocks = normal.pattern && normal.pattern->blocks() > 0;
       if (k == "normal" && blocks && normal.map.size() < size_t(normal.pattern->blocks())) {
@@ -617,7 +624,7 @@ void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::ve
       }
       continue;
     }
-    if (it.kind != Item::Kind::Keyword) {
+    if (it.kind != Item::Kind::Keyword && !pigmentPattern) {
       refusals.refuse(it, it.value.type == Value::Type::Function ? "function" : "a value here");
       continue;
     }
@@ -817,6 +824,16 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
 
 void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusals& refusals) {
   const std::string_view k = n.keyword;
+  // uv_mapping in a pigment, normal or texture maps the whole surface by its uv coordinates: the block is read
+  // without it.
+  const auto uv = [](const Item& it) { return it.kind == Item::Kind::Keyword && it.word == "uv_mapping"; };
+  if ((k == "pigment" || k == "normal" || k == "texture") && std::any_of(n.items.begin(), n.items.end(), uv)) {
+    Node without = n;
+    without.items.erase(std::remove_if(without.items.begin(), without.items.end(), uv), without.items.end());
+    s.uvMapped = true;
+    readSurfaceItem(without, s, defaults, refusals);
+    return;
+  }
   SurfaceLayer& top = s.layers.back();
   if (k == "pigment") {
     const std::vector<WarpMark> warps = readPigment(n, top.pigment, top.steps, refusals);
@@ -909,6 +926,7 @@ Texture makeTexture(const Surface& s, const std::vector<TransformStep>& after) {
     t.layers.push_back({p, finishTerms(layer.finish, s), layer.pattern, std::move(normal)});
   }
   t.fromWorld = glm::inverse(composeTransforms<double>(after));
+  t.uvMapped = s.uvMapped;
   return t;
 }
 

@@ -89,6 +89,7 @@ struct Surface {
   Color fadeColor{0};
   double caustics = 0;         // the interior's faked caustics (Material)
   std::optional<Media> media;  // the interior's (Material)
+  bool uvMapped = false;       // uv_mapping in the object, or in one of its pigments, normals or textures
   bool patterned() const;  // whether some layer's colour varies, or there are layers: a Texture is needed
 };
 
