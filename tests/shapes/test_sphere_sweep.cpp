@@ -6,8 +6,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "raytrace/parse/povray/scene_builder.hpp"
 #include "raytrace/shapes/sphere_sweep.hpp"
+#include "pov_scene.hpp"
 #include "shape_oracle.hpp"
 
 using namespace rt;
@@ -21,19 +21,6 @@ std::unique_ptr<Object<double>> sweep(SphereSweepDesc::Spline spline, std::vecto
   d.spline = spline;
   d.spheres = std::move(spheres);
   return d.make<double>(ObjectBuild{kMaterial, 1, SphereMethod::Auto, false});
-}
-
-SceneDesc parse(const std::string& body) {
-  return povray::parsePovRay("#version 3.7;\n" + body, "scene.pov", povray::PovRayOptions{{}, 320, 240, false});
-}
-
-std::string povFailure(const std::string& body) {
-  try {
-    parse(body);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
 }
 
 }  // namespace
@@ -146,7 +133,7 @@ TEST_CASE("sphere sweep sweeps: crossings against inside()", "[sphere_sweep]") {
 }
 
 TEST_CASE("a sphere sweep is read with its spline, spheres and tolerance", "[sphere_sweep]") {
-  const SceneDesc pov = parse(
+  const SceneDesc pov = test::pov(
       "sphere_sweep { linear_spline 2, <0, 0, 0>, 0.5, <1, 1, 0>, 0.25 }\n"
       "sphere_sweep { b_spline 4, 0, 1, x, 1, y, 1, z, 1 tolerance 1e-4 }\n"
       "sphere_sweep { cubic_spline 4, 0, 1, x, 1, y, 1, z, 1 }\n");
@@ -162,14 +149,14 @@ TEST_CASE("a sphere sweep is read with its spline, spheres and tolerance", "[sph
 }
 
 TEST_CASE("a sphere sweep without its spline, with too few or too many spheres, is refused there", "[sphere_sweep]") {
-  CHECK(povFailure("sphere_sweep { 2, 0, 1, x, 1 }\n") ==
+  CHECK(test::povFailure("sphere_sweep { 2, 0, 1, x, 1 }\n") ==
         "scene.pov:2:16: error: expected linear_spline, b_spline or cubic_spline inside 'sphere_sweep'");
-  CHECK(povFailure("sphere_sweep { linear_spline 1, 0, 1 }\n") ==
+  CHECK(test::povFailure("sphere_sweep { linear_spline 1, 0, 1 }\n") ==
         "scene.pov:2:30: error: a linear_spline sphere_sweep needs a whole number of at least 2 spheres, found 1");
-  CHECK(povFailure("sphere_sweep { b_spline 3, 0, 1, x, 1, y, 1 }\n") ==
+  CHECK(test::povFailure("sphere_sweep { b_spline 3, 0, 1, x, 1, y, 1 }\n") ==
         "scene.pov:2:25: error: a b_spline sphere_sweep needs a whole number of at least 4 spheres, found 3");
-  CHECK(povFailure("sphere_sweep { linear_spline 2, 0, 1, x, 1, y, 1 }\n") ==
+  CHECK(test::povFailure("sphere_sweep { linear_spline 2, 0, 1, x, 1, y, 1 }\n") ==
         "scene.pov:2:45: error: more sphere_sweep spheres than the 2 its count gives");
-  CHECK(povFailure("sphere_sweep { linear_spline 2, 0, -1, x, 1 }\n") ==
+  CHECK(test::povFailure("sphere_sweep { linear_spline 2, 0, -1, x, 1 }\n") ==
         "scene.pov:2:36: error: a sphere_sweep radius must not be negative, found -1");
 }

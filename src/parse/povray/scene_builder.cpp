@@ -139,15 +139,13 @@ class Builder {
   void finish() {
     // Media do not dim the lights yet: a light that asks them to is refused, once some object has a medium.
     if (mediaAttenuation_ && refusals_.media) refusals_.refuse(*mediaAttenuation_, "media_attenuation");
-    // A ray crosses a medium only up to its next hit: a bounded object that may lie inside or across a medium
-    // would cut the medium short behind it, so such scenes are refused.
+    // A ray crosses a medium only up to its next hit: an object that may lie inside or across a medium would
+    // cut the medium short behind it, so such scenes are refused (an unbounded medium, or an unbounded object
+    // other than a plane, always).
     for (const auto& [index, at] : mediaObjects_) {
       const Ball medium = worldBall(scene_.objects[index]);
       for (size_t j = 0; j < scene_.objects.size(); ++j) {
-        const Ball other = worldBall(scene_.objects[j]);
-        if (j != index && other.radius > 0 && glm::distance(medium.center, other.center) < medium.radius + other.radius) {
-          refusals_.refuse(at, "an object inside or across a medium");
-        }
+        if (j != index && mayCross(medium, scene_.objects[j])) refusals_.refuse(at, "an object inside or across a medium");
       }
     }
     if (refusals_.first) throw ParseError(refusals_.first->loc, "'" + refusals_.first->what + "' is not supported yet");
@@ -185,6 +183,20 @@ class Builder {
       rows = std::max(rows, std::abs(m[0][i]) + std::abs(m[1][i]) + std::abs(m[2][i]));
     }
     return {glm::dvec3(m * glm::dvec4(own.center, 1)), own.radius * std::sqrt(columns * rows)};
+  }
+
+  // Whether object `o` may have a point inside the ball `medium`: its own ball meets it or, for a plane, the
+  // plane passes through it (moved by its transforms M: normal M⁻ᵀn, through M of its point nearest the origin).
+  static bool mayCross(const Ball& medium, const ObjectDesc& o) {
+    if (medium.radius <= 0) return true;
+    const Ball other = worldBall(o);
+    if (other.radius > 0) return glm::distance(medium.center, other.center) < medium.radius + other.radius;
+    const auto* plane = std::get_if<PlaneDesc>(&o.shape);
+    if (!plane) return true;
+    const glm::dmat4 m = composeTransforms<double>(o.transforms);
+    const glm::dvec3 normal = glm::transpose(glm::inverse(glm::dmat3(m))) * plane->normal;
+    const glm::dvec3 point(m * glm::dvec4(plane->boundingBall().center, 1));
+    return std::abs(glm::dot(normal, medium.center - point)) < medium.radius * glm::length(normal);
   }
 
   void refuse(const SourceLoc& loc, std::string_view what) { refusals_.refuse(loc, what); }

@@ -203,6 +203,13 @@ sphere { x * 10, 1 }
         "scene.pov:3:1: error: 'an object inside or across a medium' is not supported yet");
   CHECK(failure("sphere { 0, 1 hollow interior { media { emission 1 } } scale 3 }\nsphere { x * 4.5, 1 }\n"
                 "plane { y, -5 }\n") == "no error");
+  // A plane through it (here y = 2, moved down by 1), or an unbounded object other than a plane, is refused.
+  CHECK(failure("sphere { 0, 1 hollow interior { media { emission 1 } } scale 3 }\nplane { y, 2 translate -y }\n") ==
+        "scene.pov:3:1: error: 'an object inside or across a medium' is not supported yet");
+  CHECK(failure("sphere { 0, 1 hollow interior { media { emission 1 } } scale 3 }\nplane { y, 4 rotate 90 * z }\n") ==
+        "no error");
+  CHECK(failure("sphere { 0, 1 hollow interior { media { emission 1 } } }\nquadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 }\n") ==
+        "scene.pov:3:1: error: 'an object inside or across a medium' is not supported yet");
   CHECK(failure("box { -1, 1 interior { media { samples 0 } } }\n") ==
         "scene.pov:3:32: error: 'samples' needs at least 1");
 }
