@@ -1,11 +1,14 @@
 #include "raytrace/image/exr_file.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <exception>
 #include <fstream>
+#include <iterator>
 #include <map>
+#include <set>
 #include <vector>
 
 #include <sys/stat.h>
@@ -122,6 +125,30 @@ bool consistent(const std::string& type, const std::string& value) {
   return true;
 }
 
+// OpenEXR's decompressor allocates a block of lines for every channel at the data window's width as soon as the
+// file is opened, so the windows and channels are checked first: sides no longer than a render's, and only the
+// channels a tile has, each once (478 bytes declaring a 2-billion-pixel line took 1.5 GB).
+void checkLineBuffers(const std::string& name, const std::string& type, const std::string& value) {
+  if (type == "box2i" && (name == "dataWindow" || name == "displayWindow")) {
+    const char* what = name == "dataWindow" ? "data" : "display";
+    const auto at = [&](size_t i) { return static_cast<std::int32_t>(littleEndian(value, i)); };
+    side(at(0), at(8), what);
+    side(at(4), at(12), what);
+  }
+  if (name == "channels" && type == "chlist") {
+    std::set<std::string> seen;
+    for (size_t at = 0; value[at] != '\0'; at += 16 + 1) {
+      const std::string channel = value.c_str() + at;
+      at += channel.size();
+      if (std::find_if(std::begin(kChannels), std::end(kChannels), [&](const char* c) { return channel == c; }) ==
+          std::end(kChannels)) {
+        throw Error("it has a channel " + quote(channel) + ", which no tile has");
+      }
+      if (!seen.insert(channel).second) throw Error("it has the channel " + quote(channel) + " twice");
+    }
+  }
+}
+
 // The header checked against the file before OpenEXR reads it: it allocates what an attribute declares, so 27
 // bytes declaring 2 GiB would take 2 GiB. A value cannot be longer than the bytes left in the file, nor other
 // than its type's structure says. Also refused here: what is not a regular file (a FIFO would block), a
@@ -159,6 +186,7 @@ void checkHeader(const std::string& path) {
       throw Error("its attribute " + quote(name) + " of type " + quote(type) + " is not " + std::to_string(bytes) +
                   " bytes long, as it declares");
     }
+    checkLineBuffers(name, type, value);
   }
 }
 
