@@ -49,16 +49,17 @@ template <class T> Aabb<T> boxOf(const typename MeshGeometry<T>::Tri& t) {
   return b;
 }
 
-// The hierarchy over tris[first, first + count): halves at the median of the centres along the axis where they
-// spread most, which keeps it balanced whatever the mesh.
+// The hierarchy over the triangles order[first, first + count): halves at the median of the centres along the
+// axis where they spread most, which keeps it balanced whatever the mesh. Only the indices move while it is built.
 template <class T>
-void buildNodes(MeshGeometry<T>& g, std::vector<Vec3<T>>& centres, uint32_t first, uint32_t count) {
+void buildNodes(MeshGeometry<T>& g, const std::vector<Vec3<T>>& centres, std::vector<uint32_t>& order,
+                uint32_t first, uint32_t count) {
   const size_t at = g.nodes.size();
   g.nodes.emplace_back();
   Aabb<T> box, spread;
   for (uint32_t i = first; i < first + count; ++i) {
-    box.expand(boxOf<T>(g.tris[i]));
-    spread.expand(centres[i]);
+    box.expand(boxOf<T>(g.tris[order[i]]));
+    spread.expand(centres[order[i]]);
   }
   g.nodes[at].box = box;
   if (count <= kLeafSize) {
@@ -68,22 +69,12 @@ void buildNodes(MeshGeometry<T>& g, std::vector<Vec3<T>>& centres, uint32_t firs
   }
   const Vec3<T> size = spread.max - spread.min;
   const int axis = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
-  std::vector<uint32_t> order(count);
-  std::iota(order.begin(), order.end(), first);
   const uint32_t half = count / 2;
-  std::nth_element(order.begin(), order.begin() + half, order.end(),
+  std::nth_element(order.begin() + first, order.begin() + first + half, order.begin() + first + count,
                    [&](uint32_t a, uint32_t b) { return centres[a][axis] < centres[b][axis]; });
-  std::vector<typename MeshGeometry<T>::Tri> tris(count);
-  std::vector<Vec3<T>> cs(count);
-  for (uint32_t k = 0; k < count; ++k) {
-    tris[k] = g.tris[order[k]];
-    cs[k] = centres[order[k]];
-  }
-  std::copy(tris.begin(), tris.end(), g.tris.begin() + first);
-  std::copy(cs.begin(), cs.end(), centres.begin() + first);
-  buildNodes(g, centres, first, half);
+  buildNodes(g, centres, order, first, half);
   g.nodes[at].first = uint32_t(g.nodes.size());
-  buildNodes(g, centres, first + half, count - half);
+  buildNodes(g, centres, order, first + half, count - half);
 }
 
 // The slab test: whether the ray meets the box for some t in (lo, hi).
@@ -147,7 +138,13 @@ template <class T> MeshGeometry<T>::MeshGeometry(const MeshData& data) {
   }
   std::vector<Vec3<T>> centres(tris.size());
   for (size_t i = 0; i < tris.size(); ++i) centres[i] = tris[i].a + (tris[i].ab + tris[i].ac) / T(3);
-  if (!tris.empty()) buildNodes(*this, centres, 0, uint32_t(tris.size()));
+  if (tris.empty()) return;
+  std::vector<uint32_t> order(tris.size());
+  std::iota(order.begin(), order.end(), 0);
+  buildNodes(*this, centres, order, 0, uint32_t(tris.size()));
+  std::vector<Tri> placed(tris.size());
+  for (size_t k = 0; k < order.size(); ++k) placed[k] = tris[order[k]];
+  tris = std::move(placed);
 }
 
 template <class T>
