@@ -42,7 +42,7 @@ glm::dvec3 Pigment::patternPoint(const glm::dvec3& p) const {
   glm::dvec3 q = p;
   for (const WarpStage& w : warps) {
     q = glm::dvec3(w.before * glm::dvec4(q, 1));
-    q += turbulentOffset(q, w.turbulence) * w.turbulence.amount;
+    q = w.warp->apply(q);
   }
   return glm::dvec3(afterWarps * glm::dvec4(q, 1));
 }
@@ -57,10 +57,12 @@ Rgbft Pigment::at(const glm::dvec3& p) const {
   if (!pattern && !average) return image ? image->at(patternPoint(p)) : solid;
   const glm::dvec3 q = glm::dvec3(fromTexture * glm::dvec4(p, 1));
   if (average) {
+    // Without a pattern to read it, the warps move the point the averaged pigments read (as POV-Ray's pictures show).
+    const glm::dvec3 a = warps.empty() ? q : patternPoint(p);
     Rgbft sum;
     double weights = 0;
     for (const MapEntry& e : map) {
-      const Rgbft c = e.pigment->at(q);
+      const Rgbft c = e.pigment->at(a);
       const float w = float(e.value);
       sum = {sum.rgb + w * c.rgb, sum.filter + w * c.filter, sum.transmit + w * c.transmit};
       weights += e.value;

@@ -7,6 +7,7 @@
 
 #include "raytrace/geometry/math.hpp"
 #include "raytrace/surface/pattern.hpp"
+#include "raytrace/surface/warp.hpp"
 
 namespace rt {
 
@@ -31,11 +32,11 @@ struct MapEntry {
 // 3.7 manual, "Waveform"): what a colour map or a slope map reads.
 double waveValue(double raw, double frequency, double phase, Wave wave, double exponent);
 
-// A turbulence warp (`warp { turbulence … }`): the point displaced where the warp stands among the pigment's
-// transforms, those written after it undone first (as POV-Ray's values show: docs/povray-noise.md).
+// A warp where it stands among the pigment's transforms, those written after it undone first (as POV-Ray's
+// values show: docs/povray-noise.md).
 struct WarpStage {
   glm::dmat4 before{1};  // the inverse of the transforms written after this warp and before the next one
-  Turbulence turbulence;
+  std::shared_ptr<const Warp> warp;
 };
 
 struct Pigment {

@@ -37,6 +37,30 @@ void readTransformBlock(const Node& n, std::vector<TransformStep>& steps, Refusa
 
 }  // namespace
 
+bool readTurbulence(const Node& n, size_t& i, Turbulence& t) {
+  const Item& it = n.items[i];
+  const std::string_view w = it.word;
+  if (it.kind != Item::Kind::Keyword || (w != "turbulence" && w != "octaves" && w != "omega" && w != "lambda")) {
+    return false;
+  }
+  const Value* v = valueAfter(n, i);
+  const bool vector = w == "turbulence";
+  if (!v || !v->numeric() || (!vector && v->type != Value::Type::Float)) {
+    throw ParseError(it.loc, "'" + std::string(w) + (vector ? "' needs a float or a vector" : "' needs a float"));
+  }
+  const double x = v->v[0];
+  if (w == "turbulence") {
+    t.amount = vec3(*v);
+  } else if (w == "octaves") {
+    t.octaves = int(std::clamp(x, 1.0, 10.0));  // POV-Ray's limits
+  } else if (w == "omega") {
+    t.omega = float(x);
+  } else {
+    t.lambda = float(x);
+  }
+  return true;
+}
+
 bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, Refusals& refusals) {
   const Item& it = n.items[i];
   if (it.kind == Item::Kind::Node && it.node->keyword == "transform") {
@@ -210,8 +234,12 @@ struct PatternDraft {
       fractalColouring(n, i);
       return true;
     }
-    const bool vector = w == "turbulence" || w == "form" || w == "brick_size";
-    if (!vector && w != "octaves" && w != "omega" && w != "lambda" && w != "noise_generator" && w != "agate_turb" &&
+    if (readTurbulence(n, i, args.turbulence)) {
+      modified = true;
+      return true;
+    }
+    const bool vector = w == "form" || w == "brick_size";
+    if (!vector && w != "noise_generator" && w != "agate_turb" &&
         w != "metric" && w != "offset" && w != "control0" && w != "control1" && w != "mortar" && w != "exponent") {
       return false;
     }
@@ -220,22 +248,13 @@ struct PatternDraft {
       throw ParseError(it.loc, "'" + std::string(w) + (vector ? "' needs a float or a vector" : "' needs a float"));
     }
     const double x = v->v[0];
-    Turbulence& t = args.turbulence;
-    if (w == "turbulence") {
-      t.amount = vec3(*v);
-    } else if (w == "form") {
+    if (w == "form") {
       args.crackle.form = vec3(*v);
     } else if (w == "metric") {
       if (!(x > 0)) throw ParseError(it.loc, "the crackle metric must be greater than 0");
       args.crackle.metric = x;
     } else if (w == "offset") {
       args.crackle.offset = x;
-    } else if (w == "octaves") {
-      t.octaves = int(std::clamp(x, 1.0, 10.0));  // POV-Ray's limits
-    } else if (w == "omega") {
-      t.omega = float(x);
-    } else if (w == "lambda") {
-      t.lambda = float(x);
     } else if (w == "agate_turb") {
       args.agateTurbulence = x;
     } else if (w == "control0" || w == "control1") {
@@ -353,18 +372,6 @@ void readMap(const Node& n, std::vector<MapEntry>& map, Refusals& refusals, bool
   std::stable_sort(map.begin(), map.end(), [](const MapEntry& a, const MapEntry& b) { return a.value < b.value; });
 }
 
-// `warp { turbulence T [octaves omega lambda] }`, after the first `after` transforms; other warps are refused.
-void readWarp(const Node& n, size_t after, PatternDraft& draft, Refusals& refusals) {
-  PatternDraft own;  // reads the turbulence items as a pattern's modifiers do
-  for (size_t i = 0; i < n.items.size(); ++i) {
-    const Item& it = n.items[i];
-    const bool turbulent = it.kind == Item::Kind::Keyword && (it.word == "turbulence" || it.word == "octaves" ||
-                                                             it.word == "omega" || it.word == "lambda");
-    if (!turbulent || !own.modifier(n, i, refusals)) refusals.refuse(it, "warp");
-  }
-  if (own.args.turbulence.on()) draft.warps.push_back({after, own.args.turbulence});
-}
-
 void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vector<TransformStep>& steps,
                       Refusals& refusals) {
   for (size_t i = 0; i < n.items.size(); ++i) {
@@ -388,7 +395,7 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
       } else if (k == "pigment") {
         readPigmentItems(*it.node, p, draft, steps, refusals);  // an identifier, modified by what follows
       } else if (k == "warp") {
-        readWarp(*it.node, steps.size(), draft, refusals);
+        if (std::shared_ptr<const Warp> warp = readWarp(*it.node, refusals)) draft.warps.push_back({steps.size(), warp});
       } else if (k == "color_map" || k == "colour_map" || k == "pigment_map") {
         p.map.clear();
         readMap(*it.node, p.map, refusals, p.average);
@@ -723,7 +730,7 @@ void placeTransforms(Pigment& p, const std::vector<TransformStep>& steps, const 
   size_t end = steps.size();
   for (auto w = warps.rbegin(); w != warps.rend(); ++w) {
     const std::vector<TransformStep> between(steps.begin() + long(w->after), steps.begin() + long(end));
-    p.warps.push_back({glm::inverse(composeTransforms<double>(between)), w->turbulence});
+    p.warps.push_back({glm::inverse(composeTransforms<double>(between)), w->warp});
     end = w->after;
   }
   p.afterWarps = glm::inverse(composeTransforms<double>({steps.begin(), steps.begin() + long(end)}));

@@ -47,6 +47,8 @@ glm::dvec3 vec3(const Value& v);
 Rgbft colourOf(const Value& v);
 // The value after n.items[i], if it is one (i moves onto it).
 const Value* valueAfter(const Node& n, size_t& i);
+// turbulence, octaves, omega and lambda into t (i moves past the value); false for any other item.
+bool readTurbulence(const Node& n, size_t& i, Turbulence& t);
 // translate, rotate, scale and transform items as steps; false for any other item.
 bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, Refusals& refusals);
 
@@ -63,11 +65,14 @@ struct PovFinish {
   double diffuse = 0.6, phong = 0, phongSize = 40, specular = 0, roughness = 0.05, reflection = 0, brilliance = 1, metallic = 0;
 };
 
-// A `warp { turbulence … }` in a pigment, after the first `after` of its transforms.
+// A `warp { … }` in a pigment, after the first `after` of its transforms.
 struct WarpMark {
   size_t after;
-  Turbulence turbulence;
+  std::shared_ptr<const Warp> warp;
 };
+
+// The warp a `warp { … }` block describes (warp_reader.cpp); nothing when it is refused or moves no point.
+std::shared_ptr<const Warp> readWarp(const Node& n, Refusals& refusals);
 
 // The pigment's fromTexture, and its warps between its transforms.
 void placeTransforms(Pigment& p, const std::vector<TransformStep>& steps, const std::vector<WarpMark>& warps);

@@ -1,0 +1,91 @@
+// Warps against the points POV-Ray 3.7 reads in their place: each expected value was printed by real POV-Ray
+// with `#debug` from pigment functions of gradient x, y and z through the warp (6 decimals, kept as data).
+#include <catch2/catch.hpp>
+
+#include "raytrace/surface/warp.hpp"
+
+using namespace rt;
+
+namespace {
+
+struct Case {
+  glm::dvec3 p, expected;
+};
+
+void check(const Warp& w, std::initializer_list<Case> cases) {
+  for (const Case& c : cases) {
+    INFO("at " << c.p.x << ", " << c.p.y << ", " << c.p.z);
+    const glm::dvec3 q = w.apply(c.p);
+    for (int k = 0; k < 3; ++k) CHECK(q[k] == Approx(c.expected[k]).margin(1e-5));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("repeat warp: each copy shifted by its offset, odd copies flipped first, as POV-Ray reads them", "[warp]") {
+  RepeatWarpArgs a;  // repeat 2*x offset <0.1,0.2,0.05> flip <1,1,0>
+  a.axis = 0;
+  a.width = 2;
+  a.offset = {0.1, 0.2, 0.05};
+  a.flip = {true, true, false};
+  check(*makeRepeatWarp(a), {{{0.3, 0.2, 0.1}, {0.3, 0.2, 0.1}},
+                             {{2.3, 0.2, 0.1}, {1.800001, 0.0, 0.150001}},
+                             {{-0.7, 0.4, 0.6}, {0.599998, -0.600001, 0.550002}},
+                             {{4.9, -0.3, 0.2}, {1.099998, 0.099999, 0.300002}},
+                             {{-2.6, 1.5, -0.4}, {1.200002, 1.099998, -0.5}},
+                             {{3.3, 1.7, 2.2}, {0.800002, -1.499999, 2.249998}},
+                             {{-1.2, -1.3, -0.5}, {1.099998, 1.099998, -0.549999}}});
+  RepeatWarpArgs y;  // repeat y*1.5 flip <0,0,1>
+  y.axis = 1;
+  y.width = 1.5;
+  y.flip = {false, false, true};
+  check(*makeRepeatWarp(y), {{{4.9, -0.3, 0.2}, {4.900002, 1.200002, -0.2}},
+                             {{-2.6, 1.5, -0.4}, {-2.599999, 0.0, 0.400001}},
+                             {{3.3, 1.7, 2.2}, {3.299999, 0.199997, -2.200001}}});
+  RepeatWarpArgs negative;  // repeat -2*x: the slice (-2, 0]
+  negative.width = -2;
+  check(*makeRepeatWarp(negative), {{{0.3, 0.2, 0.1}, {-1.699999, 0.2, 0.1}},
+                                    {{2.3, 0.2, 0.1}, {-1.699999, 0.2, 0.1}},
+                                    {{-0.7, 0.4, 0.6}, {-0.7, 0.4, 0.6}},
+                                    {{4.9, -0.3, 0.2}, {-1.100001, -0.3, 0.2}}});
+}
+
+TEST_CASE("black hole warp: a point moved along its line from the centre by strength * closeness^falloff", "[warp]") {
+  BlackHoleArgs a;  // black_hole <0.5,0.5,0>, 0.5
+  a.centre = {0.5, 0.5, 0};
+  a.radius = 0.5;
+  check(*makeBlackHoleWarp(a), {{{0.3, 0.2, 0.1}, {0.287330, 0.181001, 0.106335}},
+                                {{0.6, 0.6, 0.2}, {0.626022, 0.626022, 0.252038}},
+                                {{0.45, 0.45, 0.05}, {0.415820, 0.415820, 0.084180}},
+                                {{0.9, 0.1, 0.3}, {0.9, 0.1, 0.3}}});
+  BlackHoleArgs inverse = a;  // falloff 1 strength 0.7 inverse
+  inverse.falloff = 1;
+  inverse.strength = 0.7;
+  inverse.inverse = true;
+  check(*makeBlackHoleWarp(inverse), {{{0.3, 0.2, 0.1}, {0.335234, 0.252849, 0.082386}},
+                                      {{0.6, 0.6, 0.2}, {0.564295, 0.564295, 0.128585}},
+                                      {{0.45, 0.45, 0.05}, {0.478935, 0.478935, 0.021064}}});
+  BlackHoleArgs strong = a;  // strength 3: moved at most as far as the point is from the centre
+  strong.strength = 3;
+  check(*makeBlackHoleWarp(strong), {{{0.3, 0.2, 0.1}, {0.261998, 0.142998, 0.119001}},
+                                     {{0.6, 0.6, 0.2}, {0.678062, 0.678062, 0.356120}},
+                                     {{0.45, 0.45, 0.05}, {0.4, 0.4, 0.1}}});
+  BlackHoleArgs repeated;  // black_hole <0.5,0.5,0.5>, 0.4 repeat <1,1,1>
+  repeated.centre = glm::dvec3(0.5);
+  repeated.radius = 0.4;
+  repeated.repeat = glm::dvec3(1);
+  check(*makeBlackHoleWarp(repeated), {{{0.3, 0.2, 0.1}, {0.3, 0.2, 0.1}},
+                                       {{-0.7, 0.4, 0.6}, {-0.730050, 0.384974, 0.615025}},
+                                       {{-2.6, 1.5, -0.4}, {-2.641788, 1.5, -0.358212}},
+                                       {{-1.2, -1.3, -0.5}, {-1.197082, -1.298055, -0.5}}});
+}
+
+TEST_CASE("planar warp: the plane's pattern extruded along z, as POV-Ray reads it for any normal", "[warp]") {
+  check(*makePlanarWarp({0, 0, 1}, 0), {{{0.3, 0.2, 0.1}, {0.3, 0.2, 0}}, {{-2.6, 1.5, -0.4}, {-2.6, 1.5, 0}}});
+  check(*makePlanarWarp({0, 1, 0}, 0.3), {{{0.3, 0.2, 0.1}, {0.3, -0.3, 0.2}}, {{-2.6, 1.5, -0.4}, {-2.6, -0.3, 1.5}}});
+  check(*makePlanarWarp({-1, 0, 0}, 0.3), {{{0.3, 0.2, 0.1}, {-0.3, -0.2, 0.3}}});
+  check(*makePlanarWarp(glm::normalize(glm::dvec3(1, 1, 0)), 0.5),
+        {{{0.3, 0.2, 0.1}, {0.565684, -0.212133, -0.070712}}, {{4.9, -0.3, 0.2}, {3.818375, -0.565687, -3.676954}}});
+  check(*makePlanarWarp(glm::normalize(glm::dvec3(1, 2, 3)), 0.5),
+        {{{0.3, 0.2, 0.1}, {0.534523, -0.053453, 0.427616}}, {{4.9, -0.3, 0.2}, {6.681532, -0.587976, -1.069045}}});
+}
