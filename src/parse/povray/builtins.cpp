@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "interpreter_state.hpp"
+#include "raytrace/surface/noise.hpp"
 
 namespace rt::povray {
 
@@ -183,7 +184,22 @@ Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
     expect(")", "after trace's arguments");
     return hit ? vector((*hit)[0]) : vector({0, 0, 0});
   }
-  if (id == B::inside_ || id == B::trace_ || id == B::vturbulence_ || id == B::min_extent_ || id == B::max_extent_ ||
+  // inside(Object, Point): 1 if the point is inside the object, else 0.
+  if (id == B::inside_ && options_.inside) {
+    expect("(", "after inside");
+    const SourceLoc oAt = here();
+    const Value o = expression();
+    if (o.type != Value::Type::Node) fail(oAt, "expected an object, found a " + std::string(typeName(o)));
+    expect(",", "before the point");
+    const SourceLoc pAt = here();
+    const Value p = expression();
+    if (!p.numeric()) fail(pAt, "expected a vector, found a " + std::string(typeName(p)));
+    expect(")", "after inside's arguments");
+    const InterpreterOptions::Vec point = p.type == Value::Type::Float ? InterpreterOptions::Vec{p.v[0], p.v[0], p.v[0]}
+                                                                      : InterpreterOptions::Vec{p.v[0], p.v[1], p.v[2]};
+    return Value::number(options_.inside(std::static_pointer_cast<const Node>(o.ref), point) ? 1 : 0);
+  }
+  if (id == B::inside_ || id == B::trace_ || id == B::min_extent_ || id == B::max_extent_ ||
       id == B::sum_ || id == B::prod_ || id == B::internal_ || id == B::datetime_) {
     fail(at, "'" + std::string(name) + "' is not supported yet");
   }
@@ -304,6 +320,17 @@ Value Interpreter::builtin(std::string_view name, const SourceLoc& at) {
     std::uint32_t& state = randStates_[size_t(i)];
     state = state * 1812433253u + 12345u;
     return Value::number(double(state) / 4294967295.0);
+  }
+  // vturbulence(Lambda, Omega, Octaves, Point): turbulence's displacement at the point, the same octaves a
+  // pattern's turbulence 1 adds (POV-Ray prints the same nine decimals).
+  if (id == B::vturbulence_) {
+    count(4, 4);
+    Turbulence t;
+    t.amount = glm::dvec3(1);
+    t.lambda = float(f(0));
+    t.omega = float(f(1));
+    t.octaves = int(std::clamp(f(2), 1.0, 10.0));
+    return vec3(turbulentOffset(vec(3), t));
   }
   if (id == B::vlength_ || id == B::vnormalize_) {
     count(1, 1);

@@ -1000,6 +1000,9 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   io.extent = [&builderOf](const std::shared_ptr<const Node>& n) { return builderOf->extent(n); };
   io.trace = [&builderOf](const std::shared_ptr<const Node>& n, const InterpreterOptions::Vec& start,
                           const InterpreterOptions::Vec& dir) { return builderOf->trace(n, start, dir); };
+  io.inside = [&builderOf](const std::shared_ptr<const Node>& n, const InterpreterOptions::Vec& p) {
+    return builderOf->runtimeObject(n).inside({p[0], p[1], p[2]});
+  };
   io.patternFunction = [&builderOf](const Node& pattern, FunctionValue& into) { builderOf->patternFunction(pattern, into); };
   io.pigmentFunction = [&builderOf](const Node& pigment, FunctionValue& into) { builderOf->pigmentFunction(pigment, into); };
   Interpreter interpreter(io);

@@ -526,6 +526,24 @@ TEST_CASE("povray scene: min_extent, max_extent and trace ask the object; a macr
         "scene.pov:4:25: error: 'min_extent' of an object without bounds, such as a plane");
 }
 
+TEST_CASE("povray scene: inside asks the object; vturbulence is a pattern's turbulence displacement", "[povray]") {
+  // What POV-Ray printed for the same lines.
+  std::ostringstream printed;
+  std::streambuf* const old = std::cerr.rdbuf(printed.rdbuf());
+  parsePovRay(R"(#version 3.7;
+#declare S = sphere { <1, 2, 3>, 1 }
+#declare U = union { object { S } box { -1, <0.5, 0.5, 0.5> translate -x } }
+#declare D = difference { box { -1, 1 } sphere { 0, 0.8 } }
+#debug concat(str(inside(S, <1, 2, 3.5>), 0, 0), str(inside(S, <1, 2, 4.5>), 0, 0), str(inside(U, <-1.5, 0, 0>), 0, 0), str(inside(U, 0), 0, 0), str(inside(D, 0), 0, 0), str(inside(D, 0.9*x), 0, 0), "\n")
+#debug concat(vstr(3, vturbulence(2, 0.5, 6, <0.3, 0.2, 0.1>), ",", 0, 9), "\n")
+#debug concat(vstr(3, vturbulence(3, 0.7, 3, <-5.5, 3.3, 1.1>), ",", 0, 9), "\n")
+)", "scene.pov", PovRayOptions{{}, 320, 240, true});
+  std::cerr.rdbuf(old);
+  CHECK(printed.str() == "101001\n-0.426615880,-0.193939078,-0.365478993\n0.172241169,0.007014960,0.000509631\n");
+  CHECK(failure("#declare V = inside(1, 0);\n") == "scene.pov:3:21: error: expected an object, found a float");
+}
+
+
 TEST_CASE("povray scene: a camera whose up lies along its direction has right flipped, as POV-Ray's pictures show",
           "[povray]") {
   // objects/prism3.inc's camera: up z and the default direction z make up × direction zero.

@@ -34,11 +34,13 @@ struct InterpreterOptions {
   Clock clock;                              // clock, frame_number … of this frame
   // What the scene builder knows of an object, for the functions that ask it: its bounding box as min x, y, z
   // then max x, y, z (nothing if unbounded) for min_extent and max_extent; for trace, the first point where
-  // the ray from `start` along `dir` meets it, then the outward normal there (nothing if it misses).
+  // the ray from `start` along `dir` meets it, then the outward normal there (nothing if it misses); for inside,
+  // whether a point is inside it.
   using Vec = std::array<double, 3>;
   std::function<std::optional<std::array<double, 6>>(const std::shared_ptr<const Node>&)> extent;
   std::function<std::optional<std::array<Vec, 2>>(const std::shared_ptr<const Node>&, const Vec& start, const Vec& dir)>
       trace;
+  std::function<bool(const std::shared_ptr<const Node>&, const Vec& point)> inside;
   // A pattern function, `function { pattern { … } }`: the compiled function of its `pattern` block, or null with
   // `into.why` saying what in it is not supported.
   std::function<void(const Node& pattern, FunctionValue& into)> patternFunction;
