@@ -95,9 +95,9 @@ void ImageMap::findExtremes() {
   if (once) lo.rgb = glm::min(lo.rgb, Color(0)), hi.transmit = 1;
 }
 
-// The image's (u, v) at p, as POV-Ray 3.7 lays it (measured): planar takes x and y; spherical and cylindrical
-// go once round the y axis, u = 0.75 facing -z and growing towards +x, v from the latitude (sphere) or from y
-// (cylinder).
+// The image's (u, v) at p, as POV-Ray 3.7 lays it (measured): planar takes x and y; the others go once round
+// the y axis, u = 0.75 facing -z and growing towards +x, v from the latitude (sphere), from y (cylinder) or
+// once round the tube of the torus of major radius 1 (torus: 0.5 on its outer equator, rising over its top).
 Rgbft ImageMap::at(const glm::dvec3& p) const {
   double u = p.x, v = p.y;
   if (mapping != Mapping::Planar) {
@@ -106,6 +106,7 @@ Rgbft ImageMap::at(const glm::dvec3& p) const {
       const double length = glm::length(p);
       v = length > 0 ? std::asin(std::clamp(p.y / length, -1.0, 1.0)) / kPi + 0.5 : 0.5;
     }
+    if (mapping == Mapping::Torus) v = std::atan2(p.y, std::hypot(p.x, p.z) - 1) / (2 * kPi) + 0.5;
   }
   if (once && (v < 0 || v >= 1 || (mapping == Mapping::Planar && (u < 0 || u >= 1)))) {
     return {Color(0), 0, 1};

@@ -83,6 +83,24 @@ TEST_CASE("image_map: spherical and cylindrical go once round the y axis from +x
   CHECK(pixelAt(image, {0, 0.3, 2}) == 11);
 }
 
+TEST_CASE("image_map: torus goes round the y axis as the others, and once round the tube of major radius 1",
+          "[image_map]") {
+  // POV-Ray 3.7 read a 256x256 image of the torus of radius 1 and 0.3 at 8 angles round its tube: row (from the
+  // top) 127 on the outer equator, 63 over the top, 255 on the inner rim, 191 under the bottom.
+  const test::TempDir dir;
+  ImageMap image = readImageFile(writeGrid(dir), -1, 1, kAt);
+  image.mapping = ImageMap::Mapping::Torus;
+  const auto onTube = [](double round, double tube) {
+    const double a = glm::radians(round), b = glm::radians(tube), r = 1 + 0.3 * std::cos(b);
+    return glm::dvec3(r * std::cos(a), 0.3 * std::sin(b), r * std::sin(a));
+  };
+  CHECK(pixelAt(image, onTube(10, 10)) == 0);   // just over the outer equator: the top row
+  CHECK(pixelAt(image, onTube(10, -10)) == 10);  // just under it: the bottom row
+  CHECK(pixelAt(image, onTube(100, 170)) == 1);  // towards the inner rim from above
+  CHECK(pixelAt(image, onTube(190, 190)) == 12);  // past it, from below
+  CHECK(pixelAt(image, onTube(280, 90)) == 3);
+}
+
 TEST_CASE("image_map: interpolate 2 is bilinear and 4 weights the four nearest pixels by their inverse square distance",
           "[image_map]") {
   const test::TempDir dir;
@@ -172,8 +190,8 @@ TEST_CASE("image_map: a missing or unreadable file is one located error; what is
         dir.file("scene.pov") + ":2:40: error: cannot read the image map \"" + dir.file("zero.png") + "\": unknown image type");
   CHECK(failure("png \"huge.png\"") ==
         dir.file("scene.pov") + ":2:40: error: cannot read the image map \"" + dir.file("huge.png") + "\": unknown image type");
-  CHECK(failure("png \"empty.png\" map_type 5") ==
-        dir.file("scene.pov") + ":2:52: error: 'image_map map_type 5' is not supported yet");
+  CHECK(failure("png \"empty.png\" map_type 3") ==
+        dir.file("scene.pov") + ":2:52: error: 'image_map map_type 3' is not supported yet");
   CHECK(failure("png \"empty.png\" use_index") ==
         dir.file("scene.pov") + ":2:52: error: 'image_map use_index' is not supported yet");
   CHECK(failure("png \"empty.png\" filter 1") == dir.file("scene.pov") + ":2:52: error: 'filter' needs a palette index and an amount");

@@ -1,5 +1,5 @@
 // POV-Ray's image_map pigment (the manual's "Image Maps"): an image's colours laid on the unit square of x and y
-// and repeated, or wrapped round the y axis on a sphere or a cylinder.
+// and repeated, or wrapped round the y axis on a sphere, a cylinder or a torus of major radius 1.
 #pragma once
 
 #include <string>
@@ -11,7 +11,7 @@
 namespace rt {
 
 struct ImageMap {
-  enum class Mapping { Planar, Spherical, Cylindrical };
+  enum class Mapping { Planar, Spherical, Cylindrical, Torus };
   enum class Interpolation { None, Bilinear, NormalizedDistance };
   int width = 0, height = 0;
   std::vector<Rgbft> pixels;  // row by row from the image's top row

@@ -1,4 +1,4 @@
-// `image_map { [type] "file" [map_type 0|1|2] [interpolate 2|4] [once] [filter all F] [transmit all T]
+// `image_map { [type] "file" [map_type 0|1|2|5] [interpolate 2|4] [once] [filter all F] [transmit all T]
 // [filter I, F] [transmit I, F] [gamma G] }` (POV-Ray 3.7 manual, "Image Maps").
 #include "raytrace/parse/povray/surface_reader.hpp"
 
@@ -42,11 +42,12 @@ std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) 
     } else if (w == "once") {
       settings.once = true;
     } else if (w == "map_type") {
-      const double type = number(i, it, "0, 1 or 2");
-      if (type == 0 || type == 1 || type == 2) {
-        settings.mapping = type == 0 ? ImageMap::Mapping::Planar
+      const double type = number(i, it, "0, 1, 2 or 5");
+      if (type == 0 || type == 1 || type == 2 || type == 5) {
+        settings.mapping = type == 0   ? ImageMap::Mapping::Planar
                            : type == 1 ? ImageMap::Mapping::Spherical
-                                       : ImageMap::Mapping::Cylindrical;
+                           : type == 2 ? ImageMap::Mapping::Cylindrical
+                                       : ImageMap::Mapping::Torus;
       } else {
         refusals.refuse(it.loc, "image_map map_type " + std::to_string(int(type)));
         refused = true;
