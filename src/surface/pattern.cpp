@@ -7,9 +7,9 @@ namespace rt {
 const PatternKind* patternKind(std::string_view name) {
   constexpr Wave kTriangle = Wave::Triangle;
   static constexpr PatternKind kKinds[] = {
-      {"agate", false, makeAgate},
+      {"agate", false, makeAgate, Wave::Ramp, false, true, &kAgateMap},
       {"boxed", false, makeBoxed},
-      {"bozo", false, makeBozo},
+      {"bozo", false, makeBozo, Wave::Ramp, false, true, &kBozoMap},
       {"brick", false, makeBrick},
       {"bumps", false, makeBozo},  // as a pigment; as a normal it bends the surface
       {"cells", false, makeCells},
@@ -24,19 +24,19 @@ const PatternKind* patternKind(std::string_view name) {
       {"julia", false, makeFractal},  // these three read their own numbers (surface_reader.cpp)
       {"leopard", false, makeLeopard},
       {"magnet", false, makeFractal},
-      {"mandel", false, makeFractal},
-      {"marble", false, makeMarble, kTriangle, true},
+      {"mandel", false, makeFractal, Wave::Ramp, false, true, &kMandelMap},
+      {"marble", false, makeMarble, kTriangle, true, true, &kMarbleMap},
       {"onion", false, makeOnion},
       {"pigment_pattern", false, makePigmentPattern},  // its pigment read by surface_reader.cpp
       {"planar", false, makePlanar},
       {"quilted", false, makeQuilted},
-      {"radial", false, makeRadial},
+      {"radial", false, makeRadial, Wave::Ramp, false, true, &kRadialMap},
       {"ripples", false, makeRipples},
       {"spherical", false, makeSpherical},
       {"spiral1", true, makeSpiral1, kTriangle, true, false},  // `spiral1 N`: N arms
       {"spotted", false, makeBozo},
       {"waves", false, makeWaves},
-      {"wood", false, makeWood, kTriangle, true},
+      {"wood", false, makeWood, kTriangle, true, true, &kWoodMap},
       {"wrinkles", false, makeWrinkles},
   };
   for (const PatternKind& k : kKinds) {

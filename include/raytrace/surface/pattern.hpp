@@ -79,6 +79,16 @@ struct PatternArgs {
   double frequency = 1, phase = 0;  // a normal's, which ripples and waves read themselves
 };
 
+// An entry of a pattern's own colour map: the colour at a value, in increasing values (two at one value: a step).
+struct ColourStop {
+  double value;
+  Color colour;
+};
+struct DefaultMap {
+  const ColourStop* stops;
+  size_t count;
+};
+
 struct PatternKind {
   std::string_view name;
   bool needsVector;
@@ -86,6 +96,9 @@ struct PatternKind {
   Wave wave = Wave::Ramp;       // its wave when the pigment names none
   bool ownTurbulence = false;   // it reads the turbulence itself, instead of being displaced by it
   bool turbulenceDrawn = true;  // false: its own way with turbulence is not drawn yet, and is refused
+  // The colour map a pigment of it has without one (POV-Ray 3.7 manual, "Patterns": agate, bozo, mandel, marble,
+  // radial and wood have their own); none: black at 0 to white at 1.
+  const DefaultMap* defaultMap = nullptr;
 };
 
 // The pattern kinds raytrace draws; nothing for any other name.

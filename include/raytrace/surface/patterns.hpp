@@ -8,6 +8,9 @@
 namespace rt {
 
 std::unique_ptr<Pattern> makeAgate(const PatternArgs&);
+// The colour maps of the patterns that have their own, each beside its pattern, as POV-Ray's pigment functions
+// show them (docs/povray-noise.md, "Default colour maps").
+extern const DefaultMap kAgateMap, kBozoMap, kMandelMap, kMarbleMap, kRadialMap, kWoodMap;
 std::unique_ptr<Pattern> makeBoxed(const PatternArgs&);
 std::unique_ptr<Pattern> makeBozo(const PatternArgs&);
 std::unique_ptr<Pattern> makeBrick(const PatternArgs&);

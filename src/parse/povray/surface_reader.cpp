@@ -454,15 +454,16 @@ std::vector<WarpMark> readPigment(const Node& n, Pigment& p, std::vector<Transfo
   PatternDraft draft;
   readPigmentItems(n, p, draft, steps, refusals);
   draft.finish(p.pattern, n.loc, refusals);
-  // Without a map a continuous pattern is drawn as a grey ramp, black at 0 and white at 1 (measured); mandel
-  // has a map of its own, black to cyan, yellow, magenta and back to cyan (measured with pigment functions).
+  // Without a map a continuous pattern is drawn with its kind's own map, else as a grey ramp, black at 0 and
+  // white at 1 (measured with pigment functions).
   if (p.average && p.map.empty()) throw ParseError(n.loc, "'average' needs a pigment_map");
-  if (p.pattern && p.map.empty() && draft.kind && draft.kind->name == "mandel") {
-    p.map = {{0, solidPigment({})},          {0.001, solidPigment({})},
-             {0.001, solidPigment({Color(0, 1, 1), 0, 0})}, {0.012, solidPigment({Color(1, 1, 0), 0, 0})},
-             {0.015, solidPigment({Color(1, 0, 1), 0, 0})}, {0.1, solidPigment({Color(0, 1, 1), 0, 0})}};
+  if (p.pattern && p.pattern->blocks() == 0 && p.map.empty()) {
+    if (const DefaultMap* own = draft.kind ? draft.kind->defaultMap : nullptr) {
+      for (size_t k = 0; k < own->count; ++k) p.map.push_back({own->stops[k].value, solidPigment({own->stops[k].colour, 0, 0})});
+    } else {
+      p.map = {{0, solidPigment({})}, {1, solidPigment({Color(1), 0, 0})}};
+    }
   }
-  if (p.pattern && p.pattern->blocks() == 0 && p.map.empty()) p.map = {{0, solidPigment({})}, {1, solidPigment({Color(1), 0, 0})}};
   while (p.pattern && p.list.size() < size_t(p.pattern->blocks())) {
     p.list.push_back(solidPigment({p.pattern->defaultBlock(int(p.list.size())), 0, 0}));
   }

@@ -3,6 +3,7 @@
 // displaces the point first, as for other patterns.
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "raytrace/surface/patterns.hpp"
 
@@ -27,6 +28,12 @@ class Agate final : public Pattern {
 };
 
 }  // namespace
+
+// Its own colour map: white to (0.95, 0.75, 0.5) at 0.5, (0.9, 0.7, 0.5) to (0.9, 0.7, 0.4) at 0.6, (1, 0.7, 0.4) to (0.6, 0.3, 0) at 1.
+constexpr ColourStop kAgateStops[] = {
+    {0, Color(1, 1, 1)}, {0.5, Color(0.95f, 0.75f, 0.5f)}, {0.5, Color(0.9f, 0.7f, 0.5f)}, {0.6, Color(0.9f, 0.7f, 0.4f)},
+    {0.6, Color(1, 0.7f, 0.4f)}, {1, Color(0.6f, 0.3f, 0)}};
+const DefaultMap kAgateMap{kAgateStops, std::size(kAgateStops)};
 
 std::unique_ptr<Pattern> makeAgate(const PatternArgs& a) { return std::make_unique<Agate>(a); }
 

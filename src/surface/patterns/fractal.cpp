@@ -7,6 +7,7 @@
 // for magnet; interior 6 is x² + factor·y² of the last point (docs/povray-noise.md).
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "raytrace/surface/patterns.hpp"
 
@@ -91,6 +92,11 @@ class Fractal final : public Pattern {
 };
 
 }  // namespace
+
+// Its own colour map: mandel's: black, then cyan, yellow, magenta and back to cyan.
+constexpr ColourStop kMandelStops[] = {
+    {0, Color(0)}, {0.001, Color(0)}, {0.001, Color(0, 1, 1)}, {0.012, Color(1, 1, 0)}, {0.015, Color(1, 0, 1)}, {0.1, Color(0, 1, 1)}};
+const DefaultMap kMandelMap{kMandelStops, std::size(kMandelStops)};
 
 std::unique_ptr<Pattern> makeFractal(const PatternArgs& a) { return std::make_unique<Fractal>(a.fractal); }
 

@@ -1,5 +1,6 @@
 // radial: the angle about the y axis, 0 at +x, a quarter turn at −z (POV-Ray 3.7 manual, "Radial").
 #include <cmath>
+#include <iterator>
 
 #include "raytrace/surface/patterns.hpp"
 
@@ -17,6 +18,11 @@ class Radial final : public Pattern {
 };
 
 }  // namespace
+
+// Its own colour map: cyan, yellow at 0.333, magenta at 0.666, cyan at 1.
+constexpr ColourStop kRadialStops[] = {
+    {0, Color(0, 1, 1)}, {0.333, Color(1, 1, 0)}, {0.666, Color(1, 0, 1)}, {1, Color(0, 1, 1)}};
+const DefaultMap kRadialMap{kRadialStops, std::size(kRadialStops)};
 
 std::unique_ptr<Pattern> makeRadial(const PatternArgs&) { return std::make_unique<Radial>(); }
 

@@ -2,6 +2,7 @@
 // turbulent offset instead of displacing the point (POV-Ray 3.7 manual, "Wood" and "Turbulence versus
 // Turbulence Warp"; measured: docs/povray-noise.md).
 #include <cmath>
+#include <iterator>
 
 #include "raytrace/surface/patterns.hpp"
 
@@ -26,6 +27,11 @@ class Wood final : public Pattern {
 };
 
 }  // namespace
+
+// Its own colour map: light brown below 0.6, dark brown above.
+constexpr ColourStop kWoodStops[] = {
+    {0.6, Color(0.666f, 0.312f, 0.2f)}, {0.6, Color(0.4f, 0.1333f, 0.066f)}};
+const DefaultMap kWoodMap{kWoodStops, std::size(kWoodStops)};
 
 std::unique_ptr<Pattern> makeWood(const PatternArgs& a) { return std::make_unique<Wood>(a.turbulence); }
 

@@ -464,6 +464,34 @@ plane { y, 0 pigment { bozo warp { turbulence 0.5 } scale 2 color_map { [0 Black
         "scene.pov:3:36: error: 'spherical' is not supported yet");
 }
 
+TEST_CASE("povray scene: agate, bozo, marble, radial and wood without a map take their own colour maps", "[povray]") {
+  // The colours POV-Ray's pigment functions gave at the same points; spotted keeps the grey ramp.
+  const SceneDesc s = scene("plane { y, 0 pigment { radial } }\nplane { y, 0 pigment { bozo } }\n"
+                            "plane { y, 0 pigment { marble } }\nplane { y, 0 pigment { wood } }\n"
+                            "plane { y, 0 pigment { agate } }\nplane { y, 0 pigment { spotted } }\n");
+  REQUIRE(s.objects.size() == 6);
+  const glm::dvec3 a(-2.193815, 2.084602, 1.582648), b(-1.469586, -0.027389, -0.303054);
+  const auto near = [&](size_t i, const glm::dvec3& p, Color expected) {
+    const Color c = s.objects[i].texture->at(p).pigment;
+    INFO("object " << i);
+    CHECK(c.r == Approx(expected.r).margin(2e-6));
+    CHECK(c.g == Approx(expected.g).margin(2e-6));
+    CHECK(c.b == Approx(expected.b).margin(2e-6));
+  };
+  near(0, a, Color(1.0f, 0.199807f, 0.800193f));
+  near(0, b, Color(1.0f, 0.595696f, 0.404304f));
+  near(1, a, Color(1, 1, 1));
+  near(1, b, Color(0, 0, 1));
+  near(2, a, Color(0.9f, 0.489928f, 0.489928f));
+  near(2, b, Color(0, 0, 0));
+  near(3, a, Color(0.666f, 0.312f, 0.2f));
+  near(3, b, Color(0.4f, 0.1333f, 0.066f));
+  near(4, a, Color(0.904289f, 0.604289f, 0.304289f));
+  near(4, b, Color(0.9f, 0.7f, 0.413192f));
+  const Color grey = s.objects[5].texture->at(a).pigment;
+  CHECK((grey.r == grey.g && grey.g == grey.b));
+}
+
 TEST_CASE("povray scene: repeat, black_hole and planar warps, their items and their refusals", "[povray][warp]") {
   // gradient x over [-50, 50) reads the warped point's x; values POV-Ray printed for the same pigments.
   const SceneDesc s = scene(R"(
