@@ -302,6 +302,12 @@ const std::vector<Option> kOptions = {
     {"--resume", nullptr, nullptr, Form::Switch, Scope::Image, Section::Image,
      "keep a tile already at -o if it is of this very render",
      [](Words& w, const std::string&, const std::string&) { w.resume = true; }},
+    {"--manifest", nullptr, "FILE", Form::Either, Scope::Image, Section::Image,
+     "list the files read and written in FILE",
+     [](Words& w, const std::string& v, const std::string& word) {
+       if (v.empty()) throw Error(word + " needs a file name");
+       w.manifest = v;
+     }},
 };
 
 const Option* optionNamed(const std::string& name) {

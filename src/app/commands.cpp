@@ -66,7 +66,12 @@ const std::vector<Command>& commands() {
        "  --threads N                     convert on N threads (default: every core)\n"
        "  --for <scene> <width> <height> [render options]\n"
        "                                  last: every tile must be of this render (the scene's contents,\n"
-       "                                  size, options and program version), or merge writes nothing\n"},
+       "                                  size, options and program version), or merge writes nothing\n"
+       "  --for +I<scene> [POV-Ray options]\n"
+       "                                  the same in POV-Ray's words, of one frame (+SF = +EF): its clock,\n"
+       "                                  and without -o, the frame's numbered image name\n"
+       "  --manifest FILE                 list in FILE the scene and the files it read (with --for), the\n"
+       "                                  tiles and the image, one a line\n"},
       {"help", "<command>", 0, nullptr, "the usage, summary and options of one command", false, false,
        [](const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
          if (words.size() != 1) throw Error("help takes one command, as in: raytrace help render");
@@ -215,6 +220,9 @@ Invocation invocation(const Command& command, const Words& words, std::ostream& 
   inv.errors = &err;
   inv.writeAnywhere = words.writeAnywhere;
   inv.resume = words.resume;
+  inv.manifest = words.manifest;
+  inv.declares = words.load.declares;
+  inv.clock = words.load.clock;
   inv.output = words.output;
   if (defaultSize) {
     inv.width = inv.height = kDefaultSide;
@@ -240,8 +248,21 @@ int mergeCommand(const std::vector<std::string>& args, std::ostream& err) {
   if (at == args.end()) return merge(own);
   std::vector<std::string> request{"render"};
   request.insert(request.end(), at + 1, args.end());
-  const Words words = readWords(request, 1);
-  if (!words.output.empty() || !words.tile.empty() || !words.region.empty() || words.resume) {
+  // The render in POV-Ray's words names one frame (+SF and +EF): its clock, and its name unless -o gives one.
+  std::optional<PovRayFrame> frame;
+  if (isPovRayCommandLine(std::vector<std::string>(at + 1, args.end()))) {
+    const PovRayJob job = readPovRayCommandLine(std::vector<std::string>(at + 1, args.end()));
+    if (job.frames.size() != 1) {
+      throw Error("merge's --for names one picture, but it renders " + std::to_string(job.frames.size()) +
+                  " frames: give one with +SF and +EF");
+    }
+    frame = job.frames[0];
+    request = job.words;
+  }
+  Words words = readWords(request, 1);
+  if (frame) words.load.clock = frame->clock;
+  if (!words.output.empty() || !words.tile.empty() || !words.region.empty() || words.resume ||
+      !words.manifest.empty()) {
     throw Error("merge's --for names the whole render: its scene, size and render options only");
   }
   if (words.positional.size() != 3) {
@@ -254,7 +275,8 @@ int mergeCommand(const std::vector<std::string>& args, std::ostream& err) {
   load.height = inv.height;
   inv.scene = loadScene(inv.scenePath, inv.options.threads, load);
   useRadiosity(inv.options, inv.scene);
-  TileRequest wanted{{}, inv.width, inv.height};
+  TileRequest wanted{{}, inv.width, inv.height, frame ? frame->output : "", {inv.scenePath}};
+  wanted.inputs.insert(wanted.inputs.end(), inv.scene.inputFiles.begin(), inv.scene.inputFiles.end());
   for (const WriteDesc& w : inv.scene.writes) wanted.headers.push_back(tileHeader(inv, "render", &w));
   if (wanted.headers.empty()) wanted.headers.push_back(tileHeader(inv, "render"));
   return merge(own, wanted);

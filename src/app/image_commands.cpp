@@ -144,6 +144,19 @@ bool keptTile(const Invocation& inv, const char* command, const Target& target) 
   return why.empty();
 }
 
+// --manifest: the scene, each file it read, each image and each file it wrote, one a line, written whole once
+// they are all on disk; a frame's stamp is the hash of these files (tools/render-parallel --frames).
+void writeManifest(const Invocation& inv, const std::vector<Target>& images) {
+  if (inv.manifest.empty()) return;
+  std::string text = inv.scenePath + "\n";
+  for (const std::string& path : inv.scene.inputFiles) text += path + "\n";
+  for (const Target& t : images) text += t.path + "\n";
+  for (const DataFileDesc& d : inv.scene.dataFiles) text += d.path + "\n";
+  OutputFile file(inv.manifest);
+  file.write(text.data(), text.size());
+  file.commit();
+}
+
 }  // namespace
 
 void checkOutput(const Invocation& inv) {
@@ -156,6 +169,7 @@ void checkOutput(const Invocation& inv) {
   }
   if (!inv.output.empty() && !isFolder(inv.output)) checkImagePath(inv.output);
   if (!inv.preview.empty()) checkImagePath(inv.preview);
+  if (!inv.manifest.empty()) checkWritableFolder(inv.manifest);
 }
 
 // Each pixel gets the pigment of the closest object, or the background (Program 1's ray cast).
@@ -163,7 +177,10 @@ int raycast(const Invocation& inv, std::ostream&) {
   const Target target = targets(inv, false).front();
   checkTarget(inv, target.path);
   checkDataFiles(inv, target.path);
-  if (keptTile(inv, "raycast", target)) return 0;
+  if (keptTile(inv, "raycast", target)) {
+    writeManifest(inv, {target});
+    return 0;
+  }
   const Region region = inv.region.value_or(wholeImage(inv.width, inv.height));
   Image image(region.width(), region.height());
   // Image::at counts rows upward from the bottom; the region's rows counted from the top.
@@ -181,6 +198,7 @@ int raycast(const Invocation& inv, std::ostream&) {
   });
   write(inv, "raycast", std::move(image), target, inv.scene.conventions.toByte);
   writeDataFiles(inv);
+  writeManifest(inv, {target});
   return 0;
 }
 
@@ -252,6 +270,7 @@ int renderImage(const Invocation& inv, std::ostream&) {
     });
   }
   writeDataFiles(inv);
+  if (status == 0) writeManifest(inv, all);
   if (inv.stats) {
     RenderStats stats;
     stats.width = inv.width;

@@ -8,6 +8,7 @@
 #include "raytrace/app/tile_header.hpp"
 #include "raytrace/image/exr_file.hpp"
 #include "raytrace/image/image_file.hpp"
+#include "raytrace/image/output_file.hpp"
 #include "raytrace/util/error.hpp"
 #include "raytrace/util/limits.hpp"
 #include "raytrace/util/message.hpp"
@@ -21,24 +22,26 @@ namespace {
 constexpr const char* kSeeHelp = " (see raytrace help merge)";
 
 struct MergeArguments {
-  std::string output;
+  std::string output, manifest;
   std::vector<std::string> tiles;
   int threads = defaultThreads();
 };
 
-MergeArguments parseMerge(const std::vector<std::string>& args) {
+MergeArguments parseMerge(const std::vector<std::string>& args, const std::optional<TileRequest>& request) {
   MergeArguments m;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    const bool valued = a == "-o" || a == "--output" || a == "--threads";
+    const bool valued = a == "-o" || a == "--output" || a == "--threads" || a == "--manifest";
     if (valued && i + 1 == args.size()) throw Error(a + " needs a value");
     if (a == "-o" || a == "--output") m.output = args[++i];
+    else if (a == "--manifest") m.manifest = args[++i];
     else if (a.rfind("--output=", 0) == 0) m.output = a.substr(9);
     else if (a == "--threads") m.threads = parseInt(args[++i], "--threads", 1, kMaxThreads);
     else if (a.rfind("--threads=", 0) == 0) m.threads = parseInt(a.substr(10), "--threads", 1, kMaxThreads);
     else if (a.size() > 1 && a[0] == '-') throw Error("unknown option " + quote(a) + " for merge" + kSeeHelp);
     else m.tiles.push_back(a);
   }
+  if (m.output.empty() && request) m.output = request->output;
   if (m.output.empty()) throw Error("merge needs -o OUTPUT, the image to write");
   if (m.tiles.empty()) throw Error("merge needs the tiles to join");
   return m;
@@ -49,8 +52,9 @@ std::string pixel(int x, int y) { return "column " + std::to_string(x) + ", row 
 }  // namespace
 
 int merge(const std::vector<std::string>& args, const std::optional<TileRequest>& request) {
-  const MergeArguments m = parseMerge(args);
+  const MergeArguments m = parseMerge(args, request);
   checkImagePath(m.output);
+  if (!m.manifest.empty()) checkWritableFolder(m.manifest);
   for (const std::string& name : m.tiles) {
     if (sameFile(name, m.output)) {
       throw Error("-o " + quote(m.output, kMaxQuotedPath) + " is the tile " + quote(name, kMaxQuotedPath) +
@@ -139,6 +143,16 @@ int merge(const std::vector<std::string>& args, const std::optional<TileRequest>
              m.output);
   } else {
     writeImage(*image, m.output, toByteOf(first->attributes, m.tiles[0]), m.threads);
+  }
+  if (!m.manifest.empty()) {
+    // As render's --manifest: what was read (the scene and its files, then the tiles) and the image written.
+    std::string text;
+    for (const std::string& path : request ? request->inputs : std::vector<std::string>{}) text += path + "\n";
+    for (const std::string& path : m.tiles) text += path + "\n";
+    text += m.output + "\n";
+    OutputFile file(m.manifest);
+    file.write(text.data(), text.size());
+    file.commit();
   }
   return 0;
 }

@@ -479,8 +479,13 @@ PovRayJob readPovRayCommandLine(const std::vector<std::string>& args) {
   PovRayJob job;
   job.frames = frames(s, stem, extension);
   job.animation = s.initialFrame || s.finalFrame;
+  if (!own.manifest.empty() && job.frames.size() > 1) {
+    throw Error("--manifest lists the files of one picture, but this animation renders " +
+                std::to_string(job.frames.size()) + " frames: give one with +SF and +EF");
+  }
   if (!own.output.empty()) {
-    if (job.animation) {
+    // One frame of an animation (+SF and +EF the same) is one image: -o names it (a tile of it, say).
+    if (job.frames.size() > 1) {
       throw Error("-o names one image, but an animation's are numbered: name them with +O");
     }
     job.frames[0].output = own.output;

@@ -67,6 +67,17 @@ std::map<std::string, std::string> tileHeader(const Invocation& inv, const std::
                                             : inv.tile},
   };
   if (write) header[kImageAttribute] = write->path;
+  // Only when given, so that the tiles of every other render keep their header.
+  std::string declares;
+  for (const std::string& d : inv.declares) declares += (declares.empty() ? "" : "\n") + d;
+  if (!declares.empty()) header["raytrace.declares"] = declares;
+  const povray::Clock& c = inv.clock;
+  if (c.on) {
+    char clock[256];
+    std::snprintf(clock, sizeof clock, "frame %d of %d to %d; clock %.17g, delta %.17g, from %.17g to %.17g",
+                  c.frame, c.initialFrame, c.finalFrame, c.clock, c.delta, c.initialClock, c.finalClock);
+    header["raytrace.clock"] = clock;
+  }
   return header;
 }
 

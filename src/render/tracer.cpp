@@ -508,19 +508,56 @@ typename Tracer<T>::Local Tracer<T>::lightLoop(const Hit<T>& hit, const Material
       const double distance = glm::length(toPoint);
       lightColor *= light.shape->at(toPoint / distance, distance);
     }
+    if (!kPlain && light.area && light.area->illumination) {
+      illuminate(hit, n, v, m, light, i, lightColor, diffuse, specular);
+      if (crand > 0) diffuse -= grain(lightColor, m, hit.point, i);
+      continue;
+    }
     // A bent normal turned away from the light takes none of it (the shadow ray leaves the true surface).
     const float nl = std::min(bent ? float(glm::dot(n, s->l)) : s->nl, 1.0f);
     if (bent && nl <= 0.0f) continue;
     diffuse += lightColor * m.diffuse * (m.brilliance == 1.0f ? nl : std::pow(nl, m.brilliance));
     if (!kPlain && crand > 0) diffuse -= grain(lightColor, m, hit.point, i);
     if (m.specular == Color(0)) continue;  // a matte surface: no power to take
-    const float factor = options_.brdf == Brdf::BlinnPhong ? m.lobe == Material::Lobe::Mirror
-                                                                 ? phongSpecular(n, v, s->l, m.exponent)
-                                                                 : blinnPhongSpecular(n, v, s->l, m.exponent)
-                                                           : cookTorranceSpecular(n, v, s->l, m.roughness, m.ior);
-    specular += lightColor * m.specular * factor;
+    specular += lightColor * m.specular * specularFactor(n, v, s->l, m);
   }
   return {diffuse, specular};
+}
+
+template <class T>
+float Tracer<T>::specularFactor(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, const Material& m) const {
+  return options_.brdf == Brdf::BlinnPhong ? m.lobe == Material::Lobe::Mirror ? phongSpecular(n, v, l, m.exponent)
+                                                                              : blinnPhongSpecular(n, v, l, m.exponent)
+                                           : cookTorranceSpecular(n, v, l, m.roughness, m.ior);
+}
+
+template <class T>
+void Tracer<T>::illuminate(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v, const Material& m,
+                           const Light<T>& light, size_t index, const Color& lightColor, Color& diffuse,
+                           Color& specular) const {
+  const AreaLight& area = *light.area;
+  const glm::dvec3 center(light.position), point(hit.point);
+  glm::dvec3 a1, a2;
+  area.axesToward(center, point, a1, a2);
+  const uint64_t key = pointKey(hit.point, index);
+  // Each point is a light of 1 / (size1 · size2) of the colour, so that the grid gives the light's colour.
+  const Color each = lightColor / float(area.size1 * area.size2);
+  Color d(0), s(0);
+  for (int j = 0; j < area.size2; ++j) {
+    for (int i = 0; i < area.size1; ++i) {
+      const glm::vec2 jitter =
+          area.jitter ? uniformPair(childKey(key, uint64_t(j) * uint64_t(area.size1) + uint64_t(i))) : glm::vec2(0);
+      const Vec3<T> l = light.parallel ? *light.parallel
+                                       : glm::normalize(Vec3<T>(area.point(i, j, center, a1, a2, jitter)) - hit.point);
+      // A point below the surface's horizon lights none of it.
+      const float nl = std::min(float(glm::dot(n, l)), 1.0f);
+      if (!(nl > 0.0f)) continue;
+      d += each * m.diffuse * (m.brilliance == 1.0f ? nl : std::pow(nl, m.brilliance));
+      if (m.specular != Color(0)) s += each * m.specular * specularFactor(n, v, l, m);
+    }
+  }
+  diffuse += d;
+  specular += s;
 }
 
 // POV-Ray's shadows through transparent surfaces: each surface on the way lets through its filter·colour +
@@ -628,7 +665,9 @@ bool Tracer<T>::sampledLight(const Hit<T>& hit, const Vec3<T>& n, const Light<T>
   out.nl = float(glm::dot(n, out.l));
   spawnRayTo(hit, target(light.position), out.l, n, offset, out.ray, out.segment);
   out.occluded = false;
-  if (!(out.nl > 0.0f) || light.shadowless) return out.nl > 0.0f;
+  // With area_illumination a grid point above the surface's horizon may light it while the centre is below.
+  const bool lit = out.nl > 0.0f || (light.area && light.area->illumination);
+  if (!lit || light.shadowless) return lit;
   const bool beyond = light.parallel && !(glm::dot(light.position - hit.point, *light.parallel) > T(0));
   // What reaches the point from `at` along a shadow ray: all, none, or through transparent surfaces.
   const auto seen = [&](const Ray<T>& ray, const Interval<T>& segment) {

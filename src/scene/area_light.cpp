@@ -13,7 +13,8 @@ AreaLight::AreaLight(const AreaDesc& area)
       adaptive(area.adaptive),
       jitter(area.jitter),
       circular(area.circular),
-      orient(area.orient) {}
+      orient(area.orient),
+      illumination(area.illumination) {}
 
 void AreaLight::axesToward(const glm::dvec3& center, const glm::dvec3& point, glm::dvec3& a1,
                            glm::dvec3& a2) const {

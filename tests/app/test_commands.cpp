@@ -106,7 +106,12 @@ TEST_CASE("cli: help for one command, help itself and merge included") {
         "  --threads N                     convert on N threads (default: every core)\n"
         "  --for <scene> <width> <height> [render options]\n"
         "                                  last: every tile must be of this render (the scene's contents,\n"
-        "                                  size, options and program version), or merge writes nothing\n");
+        "                                  size, options and program version), or merge writes nothing\n"
+        "  --for +I<scene> [POV-Ray options]\n"
+        "                                  the same in POV-Ray's words, of one frame (+SF = +EF): its clock,\n"
+        "                                  and without -o, the frame's numbered image name\n"
+        "  --manifest FILE                 list in FILE the scene and the files it read (with --for), the\n"
+        "                                  tiles and the image, one a line\n");
   CHECK(run({"merge", "--help"}).out == run({"help", "merge"}).out);
   const std::string sceneinfo = run({"help", "sceneinfo"}).out;
   CHECK(sceneinfo.rfind("usage: raytrace sceneinfo <scene> [options]\nthe camera, lights and objects as parsed\n"

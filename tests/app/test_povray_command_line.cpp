@@ -3,12 +3,14 @@
 // every error with its whole message.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <sstream>
 
 #include "raytrace/app/arguments.hpp"
 #include "raytrace/app/commands.hpp"
 #include "raytrace/app/povray_command_line.hpp"
 #include "raytrace/parse/scene_file.hpp"
+#include "raytrace/util/message.hpp"
 #include "command_error.hpp"
 #include "temp_dir.hpp"
 
@@ -246,4 +248,52 @@ TEST_CASE("povcli: bad POV-Ray command lines write nothing", "[povcli]") {
   CHECK(errorOf({"+I" + scene, "+KFF2", "-o", dir.file("x.png")}) ==
         "-o names one image, but an animation's are numbered: name them with +O");
   CHECK(dir.names() == std::vector<std::string>{"a.pov"});
+}
+
+TEST_CASE("povcli: a frame as tiles, merged by the frame's switches; --manifest lists what it read and wrote",
+          "[povcli]") {
+  TempDir dir;
+  const std::string include = dir.write("moving.inc", "#declare R = 1;\n");
+  const std::string scene = dir.write("moving.pov", std::string("#include \"moving.inc\"\n") + kMovingScene);
+  const std::vector<std::string> animation{"+I" + scene, "+W16", "+H12", "+KFI0", "+KFF3"};
+  const auto with = [&](std::vector<std::string> more) {
+    more.insert(more.begin(), animation.begin(), animation.end());
+    return more;
+  };
+  std::ostringstream out, err;
+  REQUIRE(rt::runCommand(with({"+O" + dir.file("anim")}), out, err) == 0);
+  // One frame of the animation (+SF = +EF) is one image, which -o may name: here a tile of it.
+  for (const char* i : {"0", "1"}) {
+    REQUIRE(rt::runCommand(with({"+SF2", "+EF2", "--tile", std::string(i) + "/2", "-o", dir.file("t" + std::string(i) + ".exr")}),
+                           out, err) == 0);
+  }
+  // Without -o, merge names the picture as the frame's switches do.
+  REQUIRE(rt::runCommand({"merge", dir.file("t0.exr"), dir.file("t1.exr"), "--manifest", dir.file("merged.txt"),
+                          "--for", "+I" + scene, "+W16", "+H12", "+KFI0", "+KFF3", "+SF2", "+EF2",
+                          "+O" + dir.file("tiled")},
+                         out, err) == 0);
+  CHECK(readAll(dir.file("tiled2.png")) == readAll(dir.file("anim2.png")));
+  CHECK(readAll(dir.file("merged.txt")) == scene + "\n" + include + "\n" + dir.file("t0.exr") + "\n" +
+                                               dir.file("t1.exr") + "\n" + dir.file("tiled2.png") + "\n");
+  REQUIRE(rt::runCommand(with({"+SF1", "+EF1", "+O" + dir.file("anim"), "--manifest", dir.file("frame.txt")}), out,
+                         err) == 0);
+  CHECK(readAll(dir.file("frame.txt")) == scene + "\n" + include + "\n" + dir.file("anim1.png") + "\n");
+  // A tile records its frame's clock: merged as another frame's, it is refused.
+  CHECK(errorOf({"merge", dir.file("t0.exr"), dir.file("t1.exr"), "--for", "+I" + scene, "+W16", "+H12", "+KFI0",
+                 "+KFF3", "+SF1", "+EF1", "+O" + dir.file("wrong")}) ==
+        rt::quote(dir.file("t0.exr"), rt::kMaxQuotedPath) + " is not a tile of the render asked for: its raytrace.clock is 'frame 2 of 0 to 3; clock "
+            "0.66666666666666663, delta 0.333333...', not 'frame 1 of 0 to 3; clock 0.33333333333333331, delta "
+            "0.333333...'");
+  // And its -D declarations, which change the scene as its files do.
+  CHECK(errorOf({"merge", dir.file("t0.exr"), dir.file("t1.exr"), "--for", "+I" + scene, "+W16", "+H12", "+KFI0",
+                 "+KFF3", "+SF2", "+EF2", "Declare=R=2", "+O" + dir.file("wrong")}) ==
+        rt::quote(dir.file("t0.exr"), rt::kMaxQuotedPath) +
+            " is not a tile of the render asked for: its raytrace.declares is none, not 'R=2'");
+  CHECK(errorOf({"merge", dir.file("t0.exr"), dir.file("t1.exr"), "--for", "+I" + scene, "+KFI0", "+KFF3"}) ==
+        "merge's --for names one picture, but it renders 4 frames: give one with +SF and +EF");
+  CHECK(errorOf(with({"+O" + dir.file("all"), "--manifest", dir.file("all.txt")})) ==
+        "--manifest lists the files of one picture, but this animation renders 4 frames: give one with +SF and +EF");
+  CHECK(errorOf(with({"+SF1", "+EF1", "+O" + dir.file("anim"), "--manifest"})) == "--manifest needs a value");
+  const std::vector<std::string> names = dir.names();
+  CHECK(std::find(names.begin(), names.end(), "wrong1.png") == names.end());
 }

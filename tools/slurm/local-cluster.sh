@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A one-node Slurm cluster on this machine, started in a private folder, that runs the tile array job and the
 # merge job of submit.sh end to end on a scene, checks the image against the one-machine render byte for byte,
-# and stops the cluster again. Needs Debian's slurm-wlm and munge; runs as root (Slurm's daemons then run as
+# then the frames array job (render-frames.sbatch) on a 4-frame animation of its own against the one-machine
+# animation, and stops the cluster again. Needs Debian's slurm-wlm and munge; runs as root (Slurm's daemons then run as
 # root too) or as any user who may run munged and slurmd.
 #
 #   tools/slurm/local-cluster.sh [--tiles N] [--keep DIR] RAYTRACE SCENE WIDTH HEIGHT [render options]
@@ -126,3 +127,40 @@ check "$width" "$height" "$@"
 grep -q "'tile-1.exr' is unreadable" slurm.png.tiles/tile-1.log || { echo "local-cluster: tile 1 not redone" >&2; exit 1; }
 [ "$(cat slurm.png.tiles/tile-*.log | grep -c 'kept')" = $((tiles - 1)) ] || { echo "local-cluster: not kept" >&2; exit 1; }
 echo "local-cluster: resubmitted after a new size, an edited scene and a truncated tile; the same bytes as one machine ($((SECONDS - start)) s in all)"
+
+# The frames recipe: a 4-frame animation whose scene includes a file, one array task per frame, in a folder of
+# its own (the scene's, which the tasks work in); then resubmitted after a frame's image is deleted (that frame
+# alone is rendered again) and after the include is edited (every frame is).
+mkdir -p "$dir/frames/one" "$dir/frames/slurm"
+cd "$dir/frames"
+cat >spin.pov <<'POV'
+#version 3.7;
+camera { location <0, 2, -5> look_at 0 }
+light_source { <3, 5, -4> rgb 1 }
+#include "spin.inc"
+sphere { <2 * sin(clock * 2 * pi), 0.5, 2 * cos(clock * 2 * pi)>, 0.5 pigment { Orange } }
+plane { y, 0 pigment { checker rgb 1 rgb 0.3 } }
+POV
+echo '#declare Orange = rgb <1, 0.4, 0.2>;' >spin.inc
+switches=(+Ispin.pov +W"$width" +H"$height" +KFI0 +KFF3)
+frames() {
+  RAYTRACE=$raytrace sbatch --wait --array=0-3 "$here/render-frames.sbatch" "${switches[@]}" +Oslurm/spin >/dev/null
+  "$raytrace" "${switches[@]}" +Oone/spin
+  for f in 0 1 2 3; do cmp "one/spin$f.png" "slurm/spin$f.png"; done
+  cat frame-*.log
+}
+said() {
+  [ "$(cat frame-*.log | grep -c "$1")" = "$2" ] || { echo "local-cluster: not $2 frames $1" >&2; exit 1; }
+}
+frames
+said "is not rendered yet: rendering it" 4
+echo "local-cluster: 4 frame tasks give the one-machine animation's bytes"
+rm slurm/spin2.png
+frames
+grep -qx "frame 2 is stale: 'slurm/spin2.png' is missing: rendering it" frame-2.log ||
+  { echo "local-cluster: frame 2 not redone" >&2; exit 1; }
+said "is already this render: kept" 3
+echo '#declare Orange = rgb <1, 0.5, 0.2>;' >spin.inc
+frames
+said "is stale: 'spin.inc' has changed: rendering it" 4
+echo "local-cluster: frames resubmitted after a deleted frame and an edited include; the one-machine bytes ($((SECONDS - start)) s in all)"

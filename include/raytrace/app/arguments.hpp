@@ -30,6 +30,7 @@ struct Words {
   std::string output;                                    // -o's value; "" without -o
   std::string tile, region;                              // --tile's and --region's values; "" without them
   bool resume = false;  // --resume: a tile already written for this very render is kept
+  std::string manifest;  // --manifest's value: where to list the files read and the images written
   LoadOptions load;     // --dialect, -L, -D: how the scene file is read
   // The options given that only some commands take, as spelled (before any '='), in command-line order.
   std::vector<std::string> scoped;

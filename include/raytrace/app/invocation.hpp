@@ -5,8 +5,10 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "raytrace/image/region.hpp"
+#include "raytrace/parse/povray/clock.hpp"
 #include "raytrace/render/renderer.hpp"
 #include "raytrace/render/scene_setup.hpp"
 #include "raytrace/scene/description.hpp"
@@ -33,6 +35,13 @@ struct Invocation {
   std::ostream* errors = nullptr;    // where a command reports a failure it carries on after (a .cli write)
   bool writeAnywhere = false;        // --allow-write-anywhere: a .cli write or #fopen may leave its folder
   bool resume = false;               // --resume: a tile already at -o, of this very render, is kept
+  // What the scene is read with besides its files: -D's declarations and a POV-Ray frame's clock; a tile
+  // records them (tile_header.hpp), as they change its pixels.
+  std::vector<std::string> declares;
+  povray::Clock clock;
+  // --manifest: the file that lists, once the images are written, the scene, every file it read and the
+  // images, one a line ("" without it): what a frame's stamp hashes (tools/render-parallel --frames).
+  std::string manifest;
   double loadSeconds = 0;         // the reading of the scene file
 };
 

@@ -20,6 +20,8 @@ struct TileRequest {
   // tileHeader() of the whole picture; of each image a .cli scene writes, in its order.
   std::vector<std::map<std::string, std::string>> headers;
   int width = 0, height = 0;
+  std::string output;               // the image when merge has no -o: a POV-Ray frame's numbered name
+  std::vector<std::string> inputs;  // the scene and each file it read, for --manifest
 };
 int merge(const std::vector<std::string>& args, const std::optional<TileRequest>& request = std::nullopt);
 

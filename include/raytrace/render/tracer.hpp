@@ -171,6 +171,13 @@ template <class T> class Tracer {
   // a parallel light's along its direction. False when the light cannot light the point.
   bool sampledLight(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, size_t index, ShadowRay& out,
                     Color& lightColor);
+  // POV-Ray's area_illumination (manual, "Area Lights"): the diffuse and specular light of an area light as
+  // the mean of its grid's points, each a point light from its own direction (jittered as sampledLight's),
+  // added into `diffuse` and `specular`; `lightColor` already holds the grid's shadow share.
+  void illuminate(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v, const Material& m, const Light<T>& light,
+                  size_t index, const Color& lightColor, Color& diffuse, Color& specular) const;
+  // The specular highlight's factor for light from unit direction l: the BRDF's lobe (§c.2).
+  float specularFactor(const Vec3<T>& n, const Vec3<T>& v, const Vec3<T>& l, const Material& m) const;
   // Whether a secondary ray of accumulated weight `weight` at `depth` is worth tracing and its eye ray's tree
   // has room for it (docs/reference/stability.md F12); a ray it says yes to is counted against that room.
   bool matters(float weight, int depth);

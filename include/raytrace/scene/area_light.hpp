@@ -15,6 +15,7 @@ struct AreaLight {
   int size1 = 1, size2 = 1;
   int adaptive = -1;
   bool jitter = false, circular = false, orient = false;
+  bool illumination = false;  // area_illumination (Tracer::illuminate)
 
   explicit AreaLight(const AreaDesc& area);
 

@@ -59,6 +59,7 @@ struct AreaDesc {
   int size1 = 1, size2 = 1;
   int adaptive = -1;  // the subdivisions before the adaptive phase; -1 (no `adaptive`): every point
   bool jitter = false, circular = false, orient = false;
+  bool illumination = false;  // area_illumination: each grid point lights from its own direction
 };
 
 struct LightDesc {

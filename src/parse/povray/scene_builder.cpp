@@ -715,6 +715,7 @@ class Builder {
     std::optional<double> radius, falloff;
     const Item* tightness = nullptr;
     const Node* looksLike = nullptr;
+    std::optional<bool> illumination;
     for (; i < n.items.size(); ++i) {
       const Item& it = n.items[i];
       if (transformItem(n, i, steps)) continue;
@@ -742,9 +743,10 @@ class Builder {
       } else if ((w == "jitter" || w == "circular" || w == "orient") && area) {
         (w == "jitter" ? area->jitter : w == "circular" ? area->circular : area->orient) = true;
       } else if (w == "area_illumination") {
-        // POV-Ray's experimental lighting from each point of the grid; off, the light's centre lights.
+        // On (the word alone, or a value other than 0): each grid point lights from its own direction; a light
+        // without a grid is one point, which lights the same either way.
         const Value* v = valueAfter(n, i);
-        if (!v || v->v[0] != 0) refuse(it.loc, w);
+        illumination = !v || v->v[0] != 0;
       } else if (w == "point_at" || w == "radius" || w == "falloff" || w == "tightness" || w == "fade_distance" ||
                  w == "fade_power" || (w == "adaptive" && area)) {
         const Value* v = valueAfter(n, i);
@@ -766,6 +768,7 @@ class Builder {
     if (spot.cylinder && spot.tightness != 0 && tightness) refuse(tightness->loc, "a cylinder light's tightness");
     if (isSpot) l.spot = spot;
     if (parallel) l.parallelTo = std::make_shared<const glm::dvec3>(spot.pointAt);
+    if (area && illumination) area->illumination = *illumination;
     if (area) l.area = std::make_shared<const AreaDesc>(*area);
     if (looksLike) lookLike(*looksLike, l.position, steps);
     moveLight(l, composeTransforms<double>(steps));

@@ -123,6 +123,7 @@ light_source { <0, 5, 0> White looks_like { sphere { 0, 1 } } translate x }
   CHECK(a.size2 == 3);
   CHECK(a.adaptive == 1);
   CHECK((a.jitter && a.circular && a.orient));
+  CHECK_FALSE(a.illumination);
   CHECK_FALSE(s.lights[1].area);
   REQUIRE(s.lights[1].parallelTo);
   CHECK(*s.lights[1].parallelTo == glm::dvec3(1, 0, 1));
@@ -214,9 +215,25 @@ sphere { x * 10, 1 }
         "scene.pov:3:32: error: 'samples' needs at least 1");
 }
 
+TEST_CASE("povray scene: area_illumination, alone or on, before or after the grid; off; copied with the light",
+          "[povray]") {
+  const SceneDesc s = scene(R"(
+#declare L = light_source { 0, White area_illumination area_light x, z, 2, 2 }
+light_source { 0, White area_light x, z, 2, 2 area_illumination }
+light_source { 0, White area_light x, z, 2, 2 area_illumination on area_illumination off }
+light_source { L }
+light_source { L area_illumination 0 }
+light_source { 0, White area_illumination }
+)");
+  REQUIRE(s.lights.size() == 5);
+  CHECK(s.lights[0].area->illumination);
+  CHECK_FALSE(s.lights[1].area->illumination);
+  CHECK(s.lights[2].area->illumination);
+  CHECK_FALSE(s.lights[3].area->illumination);
+  CHECK_FALSE(s.lights[4].area);  // one point lights the same either way
+}
+
 TEST_CASE("povray scene: light modifiers that are not drawn yet are refused where they are written", "[povray]") {
-  CHECK(failure("light_source { 0, White area_light x, z, 2, 2 area_illumination }\n") ==
-        "scene.pov:3:47: error: 'area_illumination' is not supported yet");
   CHECK(failure("light_source { 0, White cylinder tightness 3 }\n") ==
         "scene.pov:3:34: error: 'a cylinder light's tightness' is not supported yet");
   CHECK(failure("union { sphere { 0, 1 } light_source { 0, White looks_like { sphere { 0, 1 } } } }\n") ==
