@@ -2,6 +2,7 @@
 // values as text or as binary numbers of either byte order. The vertex element's x y z, nx ny nz and u v (or
 // s t, texture_u texture_v) and the face element's vertex_indices list are kept; other elements and properties
 // are read past.
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -66,7 +67,7 @@ class PlyReader {
     readHeader();
     for (const Element& e : elements_) {
       if (e.name == "vertex") readVertices(e);
-      else readElement(e, nullptr);
+      else readFaces(e);
     }
     if (format_ == Format::Ascii) {
       skipSpace();
@@ -238,7 +239,7 @@ class PlyReader {
     }
   }
 
-  // One element's values: each list handed to `list` with the place it began, if given, the others dropped.
+  // One element's values: each list handed to `list` with the place it began, the single values dropped.
   template <class List> void readLists(const Element& e, List&& list) {
     std::vector<double> items;
     for (uint64_t i = 0; i < e.count; ++i) {
@@ -260,7 +261,8 @@ class PlyReader {
     }
   }
 
-  void readElement(const Element& e, std::nullptr_t) {
+  // The face element's corner lists; any other element's values read past.
+  void readFaces(const Element& e) {
     readLists(e, [&](const Property& p, const std::vector<double>& items, const Place& at) {
       if (e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index")) face(items, where(at));
     });
@@ -334,6 +336,7 @@ class PlyReader {
         if (n < 0 || uint64_t(n) > (bytes_.size() - pos_ + 1) / least) fail("a list's length " + format(n) + " does not fit in the file");
         for (uint64_t j = 0; j < uint64_t(n); ++j) value(*p.type);
       }
+      // The place is made only for the message: a string per vertex would cost more than reading it.
       const auto check = [&](const glm::dvec3& p, const char* what) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
           mesh_file::checkFinite(where(start), p, what);
@@ -357,6 +360,7 @@ class PlyReader {
 MeshFile readPly(std::string_view bytes, const std::string& name) {
   PlyReader reader(bytes, name);
   MeshFile mesh = reader.read();
+  // Each vertex has its own normal and uv: a face indexes them as it indexes the vertices.
   for (MeshFile::Face& f : mesh.faces) {
     if (!mesh.normals.empty()) f.n = f.v;
     if (!mesh.uvs.empty()) f.uv = f.v;
