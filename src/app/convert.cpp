@@ -18,11 +18,13 @@ constexpr const char* kSeeHelp = " (see raytrace help convert)";
 // The shortest text that reads back as `v` (std::to_chars' promise), as a float's when the file held floats.
 void number(std::string& out, double v, bool single) {
   char text[32];
-  const auto r = single ? std::to_chars(text, text + sizeof text, float(v)) : std::to_chars(text, text + sizeof text, v);
+  const auto r =
+      single ? std::to_chars(text, text + sizeof text, float(v)) : std::to_chars(text, text + sizeof text, v);
   out.append(text, r.ptr);
 }
 
-template <class List, class Write> void block(std::string& out, const char* keyword, const List& list, Write&& write) {
+template <class List, class Write>
+void block(std::string& out, const char* keyword, const List& list, Write&& write) {
   if (list.empty()) return;
   out += "  ";
   out += keyword;
@@ -47,9 +49,10 @@ bool isIdentifier(const std::string& name) {
 
 std::string mesh2Include(const MeshFile& mesh, const std::string& name, const std::string& source) {
   const bool single = mesh.singlePrecision;
-  std::string out = "// " + printable(source, kMaxQuotedPath) + " as a mesh2 (raytrace convert): " +
-                    std::to_string(mesh.vertices.size()) + " vertices, " + std::to_string(mesh.faces.size()) +
-                    (mesh.faces.size() == 1 ? " triangle" : " triangles") + ".\n#declare " + name + " = mesh2 {\n";
+  std::string out = "// " + printable(source, kMaxQuotedPath) +
+                    " as a mesh2 (raytrace convert): " + std::to_string(mesh.vertices.size()) + " vertices, " +
+                    std::to_string(mesh.faces.size()) + (mesh.faces.size() == 1 ? " triangle" : " triangles") +
+                    ".\n#declare " + name + " = mesh2 {\n";
   const auto vector3 = [&](const glm::dvec3& p) {
     for (int k = 0; k < 3; ++k) {
       if (k) out += ", ";
@@ -100,8 +103,10 @@ int convertCommand(const std::vector<std::string>& words) {
       if (i + 1 == words.size()) throw Error("--name needs a value");
       name = words[++i];
       if (!isIdentifier(name)) {
-        throw Error("--name must be a POV-Ray identifier (a letter, then letters, digits and _, not a keyword), "
-                    "found " + quote(name));
+        throw Error(
+            "--name must be a POV-Ray identifier (a letter, then letters, digits and _, not a keyword), "
+            "found " +
+            quote(name));
       }
     } else if (w.size() > 1 && w[0] == '-') {
       throw Error("unknown option " + quote(w) + " for convert" + kSeeHelp);
@@ -116,7 +121,8 @@ int convertCommand(const std::vector<std::string>& words) {
   const std::string& input = files[0];
   const std::string& output = files[1];
   if (sameFile(input, output)) {
-    throw Error("cannot write " + quote(output, kMaxQuotedPath) + ": it is the mesh file, which the include would replace");
+    throw Error("cannot write " + quote(output, kMaxQuotedPath) +
+                ": it is the mesh file, which the include would replace");
   }
   checkWritableFolder(output);
   const MeshFile mesh = readMeshFile(input);

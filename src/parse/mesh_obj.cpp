@@ -91,7 +91,8 @@ struct ObjReader {
   }
 
   // push_back, with the memory of a larger vector asked for first.
-  template <class T> void add(std::vector<T>& list, const T& value) {
+  template <class T>
+  void add(std::vector<T>& list, const T& value) {
     if (list.size() == list.capacity()) mesh_file::checkMemory(here(), (2 * list.size() + 1) * sizeof(T));
     list.push_back(value);
   }
@@ -107,7 +108,7 @@ struct ObjReader {
     const long long i = index > 0 ? index - 1LL : index + (long long)count;
     if (index == 0 || i < 0 || i >= (long long)count) {
       throw MeshFileError(here(), std::string(what) + " index " + std::to_string(index) + " is not one of the " +
-                                   std::to_string(count) + " " + whats + " so far");
+                                      std::to_string(count) + " " + whats + " so far");
     }
     return uint32_t(i);
   }
@@ -121,7 +122,8 @@ struct ObjReader {
       corner[size_t(k)].v[0] = resolve(c.vertex_index, mesh.vertices.size(), "vertex", "vertices");
       // tinyobjloader gives 0 for a corner without a normal or uv (OBJ counts from 1).
       normals = normals && c.normal_index != 0;
-      if (c.normal_index != 0) corner[size_t(k)].n[0] = resolve(c.normal_index, mesh.normals.size(), "normal", "normals");
+      if (c.normal_index != 0)
+        corner[size_t(k)].n[0] = resolve(c.normal_index, mesh.normals.size(), "normal", "normals");
       uvs = uvs && c.texcoord_index != 0;
       if (c.texcoord_index != 0) corner[size_t(k)].uv[0] = resolve(c.texcoord_index, mesh.uvs.size(), "uv", "uvs");
     }
@@ -155,8 +157,8 @@ struct ObjReader {
     for (size_t i = 0; i < mesh.faces.size(); ++i) {
       MeshFile::Face& f = mesh.faces[i];
       if (!mesh.normals.empty() && !faceHasNormals[i]) {
-        const glm::dvec3 n = glm::cross(mesh.vertices[f.v[1]] - mesh.vertices[f.v[0]],
-                                        mesh.vertices[f.v[2]] - mesh.vertices[f.v[0]]);
+        const glm::dvec3 n =
+            glm::cross(mesh.vertices[f.v[1]] - mesh.vertices[f.v[0]], mesh.vertices[f.v[2]] - mesh.vertices[f.v[0]]);
         f.n.fill(uint32_t(mesh.normals.size()));
         add(mesh.normals, n == glm::dvec3(0) ? glm::dvec3(0, 1, 0) : n);  // a line or point: never hit
       }

@@ -28,8 +28,8 @@ struct Type {
 };
 
 constexpr Type kTypes[] = {
-    {"char", "int8", 1, true, true},     {"uchar", "uint8", 1, true, false},    {"short", "int16", 2, true, true},
-    {"ushort", "uint16", 2, true, false}, {"int", "int32", 4, true, true},     {"uint", "uint32", 4, true, false},
+    {"char", "int8", 1, true, true},      {"uchar", "uint8", 1, true, false},    {"short", "int16", 2, true, true},
+    {"ushort", "uint16", 2, true, false}, {"int", "int32", 4, true, true},       {"uint", "uint32", 4, true, false},
     {"float", "float32", 4, false, true}, {"double", "float64", 8, false, true},
 };
 
@@ -132,7 +132,8 @@ class PlyReader {
       if (first == "end_header" && w.size() == 1) break;
       if (first == "comment" || first == "obj_info") continue;
       if (first == "format") {
-        if (w.size() != 3 || w[2] != "1.0") fail("the format line must be: format <ascii | binary_little_endian | binary_big_endian> 1.0");
+        if (w.size() != 3 || w[2] != "1.0")
+          fail("the format line must be: format <ascii | binary_little_endian | binary_big_endian> 1.0");
         if (w[1] == "ascii") format_ = Format::Ascii;
         else if (w[1] == "binary_little_endian") format_ = Format::Little;
         else if (w[1] == "binary_big_endian") format_ = Format::Big;
@@ -185,7 +186,7 @@ class PlyReader {
       }
       if (least > 0 && e.count > (left + 1) / least) {
         throw MeshFileError(lineOf(name_, e.line), std::to_string(e.count) + " " + e.name + " elements need " +
-                                                    "more bytes than the file has after its header");
+                                                       "more bytes than the file has after its header");
       }
       if (e.name == "vertex") vertexCount_ = e.count;
     }
@@ -228,19 +229,28 @@ class PlyReader {
       return double(x);
     };
     switch (t.size * 4 + (t.integer ? (t.isSigned ? 1 : 0) : 2)) {
-      case 5: return as(int8_t());
-      case 4: return as(uint8_t());
-      case 9: return as(int16_t());
-      case 8: return as(uint16_t());
-      case 17: return as(int32_t());
-      case 16: return as(uint32_t());
-      case 18: return as(float());
-      default: return as(double());
+      case 5:
+        return as(int8_t());
+      case 4:
+        return as(uint8_t());
+      case 9:
+        return as(int16_t());
+      case 8:
+        return as(uint16_t());
+      case 17:
+        return as(int32_t());
+      case 16:
+        return as(uint32_t());
+      case 18:
+        return as(float());
+      default:
+        return as(double());
     }
   }
 
   // One element's values: each list handed to `list` with the place it began, the single values dropped.
-  template <class List> void readLists(const Element& e, List&& list) {
+  template <class List>
+  void readLists(const Element& e, List&& list) {
     std::vector<double> items;
     for (uint64_t i = 0; i < e.count; ++i) {
       for (const Property& p : e.properties) {
@@ -253,7 +263,8 @@ class PlyReader {
         const double n = value(*p.countType);
         if (n < 0) fail("a list's length is negative: " + std::to_string(int64_t(n)));
         const uint64_t least = format_ == Format::Ascii ? 2 : uint64_t(p.type->size);
-        if (uint64_t(n) > (bytes_.size() - pos_ + 1) / least) fail("a list of " + std::to_string(uint64_t(n)) + " values is longer than the rest of the file");
+        if (uint64_t(n) > (bytes_.size() - pos_ + 1) / least)
+          fail("a list of " + std::to_string(uint64_t(n)) + " values is longer than the rest of the file");
         items.resize(size_t(n));
         for (double& v : items) v = value(*p.type);
         list(p, items, at);
@@ -276,7 +287,7 @@ class PlyReader {
     for (size_t k = 0; k < corners.size(); ++k) {
       if (corners[k] < 0 || corners[k] >= double(vertexCount_) || corners[k] != std::floor(corners[k])) {
         throw MeshFileError(at, "vertex index " + format(corners[k]) + " is not one of the " +
-                                 std::to_string(vertexCount_) + " vertices (counted from 0)");
+                                    std::to_string(vertexCount_) + " vertices (counted from 0)");
       }
       v[k] = uint32_t(corners[k]);
     }
@@ -333,7 +344,8 @@ class PlyReader {
         }
         const double n = value(*p.countType);
         const uint64_t least = format_ == Format::Ascii ? 2 : uint64_t(p.type->size);
-        if (n < 0 || uint64_t(n) > (bytes_.size() - pos_ + 1) / least) fail("a list's length " + format(n) + " does not fit in the file");
+        if (n < 0 || uint64_t(n) > (bytes_.size() - pos_ + 1) / least)
+          fail("a list's length " + format(n) + " does not fit in the file");
         for (uint64_t j = 0; j < uint64_t(n); ++j) value(*p.type);
       }
       // The place is made only for the message: a string per vertex would cost more than reading it.

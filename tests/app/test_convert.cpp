@@ -1,17 +1,16 @@
 // `raytrace convert` (app/convert.cpp): OBJ and PLY meshes written as mesh2 includes that a scene reads back
 // to the same triangles, and the command's refusals, after which no file is written.
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
 
-#include <catch2/catch.hpp>
-
+#include "command_error.hpp"
+#include "pov_scene.hpp"
 #include "raytrace/app/commands.hpp"
 #include "raytrace/app/convert.hpp"
 #include "raytrace/shapes/mesh.hpp"
-#include "command_error.hpp"
-#include "pov_scene.hpp"
 #include "temp_dir.hpp"
 
 using namespace rt;
@@ -65,8 +64,7 @@ TEST_CASE("convert: an OBJ's include reads back as the same triangles, normals a
   CHECK(back.vertices[2].x == 0.3333333333333333);
 }
 
-TEST_CASE("convert: a PLY's include reads back the same, a binary one's floats in a float's digits",
-          "[convert]") {
+TEST_CASE("convert: a PLY's include reads back the same, a binary one's floats in a float's digits", "[convert]") {
   const TempDir dir;
   std::string ply =
       "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"

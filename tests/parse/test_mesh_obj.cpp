@@ -1,8 +1,7 @@
 // Wavefront OBJ files read for `raytrace convert` (parse/mesh_obj.cpp): vertices, normals and uvs with their
 // indices as written, polygons fanned, and each broken file's whole message.
-#include <string>
-
 #include <catch2/catch.hpp>
+#include <string>
 
 #include "raytrace/parse/mesh_file.hpp"
 #include "raytrace/util/error.hpp"
@@ -42,9 +41,9 @@ TEST_CASE("an OBJ's vertices, normals, uvs and faces are kept as written, polygo
   CHECK_FALSE(m.singlePrecision);
 }
 
-TEST_CASE("an OBJ face without normals beside faces with them gets its plane's, without uvs uv (0, 0)",
-          "[mesh_file]") {
-  const MeshFile m = readObj("v 0 0 0\nv 2 0 0\nv 0 0 3\nvn 0 0 1\nvt 0.5 0.5\nf 1/1/1 2/1/1 3/1/1\nf 1 3 2\n", "m.obj");
+TEST_CASE("an OBJ face without normals beside faces with them gets its plane's, without uvs uv (0, 0)", "[mesh_file]") {
+  const MeshFile m =
+      readObj("v 0 0 0\nv 2 0 0\nv 0 0 3\nvn 0 0 1\nvt 0.5 0.5\nf 1/1/1 2/1/1 3/1/1\nf 1 3 2\n", "m.obj");
   REQUIRE(m.normals.size() == 2);
   CHECK(m.normals[1] == glm::dvec3(0, 6, 0));  // (2, 0, 0) × (0, 0, 3) reversed: corners 1, 3, 2
   CHECK(m.faces[1].n == std::array<uint32_t, 3>{1, 1, 1});

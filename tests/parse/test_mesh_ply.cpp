@@ -2,11 +2,10 @@
 // element's positions, normals and uvs, faces fanned, other elements read past, and each broken file's whole
 // message (at a line of the header or of an ascii body, at a byte of a binary one).
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cstring>
 #include <limits>
 #include <string>
-
-#include <catch2/catch.hpp>
 
 #include "raytrace/parse/mesh_file.hpp"
 #include "raytrace/util/error.hpp"
@@ -32,7 +31,8 @@ const std::string kHeader =
 const std::string kVertices = "0 0 0 0 0 1 0 0\n1 0 0 0 0 1 1 0\n1 1 0 0 0 1 1 1\n0 1 0 0.6 0 0.8 0 1\n";
 
 // The bytes of `value` in the byte order `big` or not.
-template <class T> std::string bytes(T value, bool big) {
+template <class T>
+std::string bytes(T value, bool big) {
   std::string out(sizeof value, '\0');
   std::memcpy(out.data(), &value, sizeof value);
   if (big) std::reverse(out.begin(), out.end());

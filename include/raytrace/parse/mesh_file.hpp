@@ -5,11 +5,10 @@
 
 #include <array>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "raytrace/util/error.hpp"
 
