@@ -116,7 +116,7 @@ int convertCommand(const std::vector<std::string>& words) {
   }
   if (files.size() != 2) {
     throw Error("convert takes the mesh file and the include to write, found " + std::to_string(files.size()) +
-                " files" + kSeeHelp);
+                (files.size() == 1 ? " file" : " files") + kSeeHelp);
   }
   const std::string& input = files[0];
   const std::string& output = files[1];

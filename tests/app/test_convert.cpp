@@ -108,7 +108,9 @@ TEST_CASE("convert: refusals, and no file written after one", "[convert]") {
   CHECK(errorOf({"convert", good, dir.path() + "/../" + dir.path().substr(dir.path().rfind('/') + 1) + "/good.obj"})
             .find("it is the mesh file") != std::string::npos);
   CHECK(errorOf({"convert", good}) ==
-        "convert takes the mesh file and the include to write, found 1 files (see raytrace help convert)");
+        "convert takes the mesh file and the include to write, found 1 file (see raytrace help convert)");
+  CHECK(errorOf({"convert", good, "a.inc", "b.inc"}) ==
+        "convert takes the mesh file and the include to write, found 3 files (see raytrace help convert)");
   CHECK(errorOf({"convert", good, "a.inc", "--scale", "2"}) ==
         "unknown option '--scale' for convert (see raytrace help convert)");
   CHECK(errorOf({"convert", good, "a.inc", "--name"}) == "--name needs a value");
