@@ -4,7 +4,7 @@
 # usage: tests/completion.sh <raytrace.bash> <work folder>
 set -euo pipefail
 script=$1 work=$2
-rm -rf "$work" && mkdir -p "$work/sub" && cd "$work" && touch a.pov b.cli c.txt t.exr
+rm -rf "$work" && mkdir -p "$work/sub" && cd "$work" && touch a.pov b.cli c.txt t.exr m.obj m.ply m.inc
 # shellcheck source=/dev/null
 source "$script"
 status=0
@@ -31,7 +31,9 @@ expect "raytrace sceneinfo --dis" ""
 expect "raytrace raycast --ou" "--output"
 expect "raytrace render --hierarchy = a" "auto always"
 expect "raytrace render " "sub a.pov b.cli"
-expect "raytrace render a.pov -o " "sub a.pov b.cli c.txt t.exr"
+expect "raytrace render a.pov -o " "sub a.pov b.cli c.txt t.exr m.obj m.ply m.inc"
 expect "raytrace merge " "sub t.exr"
 expect "raytrace merge --" "--output --threads --help"
+expect "raytrace convert " "sub m.obj m.ply m.inc"
+expect "raytrace convert --" "--name --help"
 exit $status

@@ -26,6 +26,7 @@ check sceneinfo '^--display\[' absent
 check sceneinfo '^-o\[' absent
 check sceneinfo '^\*:scene file:_files -g "\*\.\(pov\|cli\)"$' present
 check merge '^\*:tile:_files -g "\*\.exr"$' present
+check convert '^1:mesh file:_files -g "\*\.\(obj\|ply\)"$' present
 [[ $(specs x 2 | head -1) == 'raycast:each pixel the colour of the first object its ray hits' ]] ||
   { echo "the commands are not described"; status=1; }
 exit $status

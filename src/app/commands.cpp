@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "raytrace/app/arguments.hpp"
+#include "raytrace/app/convert.hpp"
 #include "raytrace/app/invocation.hpp"
 #include "raytrace/app/merge.hpp"
 #include "raytrace/app/povray_command_line.hpp"
@@ -72,6 +73,12 @@ const std::vector<Command>& commands() {
        "                                  and without -o, the frame's numbered image name\n"
        "  --manifest FILE                 list in FILE the scene and the files it read (with --for), the\n"
        "                                  tiles and the image, one a line\n"},
+      {"convert", "<mesh.obj|.ply> <mesh.inc> [--name NAME]", 0, nullptr,
+       "an OBJ or PLY mesh written as a POV-Ray mesh2 include, its normals and uv kept", false, false,
+       [](const std::vector<std::string>& words, std::ostream&, std::ostream&) { return convertCommand(words); },
+       "options:\n"
+       "  --name NAME                     the identifier the include declares (default: the mesh file's name,\n"
+       "                                  capitalised: model.obj declares Model)\n"},
       {"help", "<command>", 0, nullptr, "the usage, summary and options of one command", false, false,
        [](const std::vector<std::string>& words, std::ostream& out, std::ostream&) {
          if (words.size() != 1) throw Error("help takes one command, as in: raytrace help render");

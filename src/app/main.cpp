@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "raytrace/app/commands.hpp"
+#include "raytrace/parse/mesh_file.hpp"
 #include "raytrace/util/error.hpp"
 
 namespace {
@@ -44,6 +45,8 @@ int main(int argc, char** argv) {
     finishStandardOutput();
     return status;
   } catch (const rt::ParseError& e) {
+    std::cerr << e.what() << "\n";
+  } catch (const rt::MeshFileError& e) {
     std::cerr << e.what() << "\n";
   } catch (const rt::Error& e) {
     std::cerr << "raytrace: error: " << e.what() << "\n";

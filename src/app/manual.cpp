@@ -108,6 +108,7 @@ std::string bashCompletion() {
       }
     }
     if (c.name == "merge") options = "-o --output --threads";
+    if (c.name == "convert") options = "--name";
     if (c.name == "help") options = "";
     script += "    " + c.name + ") options=\"" + options + " --help\" ;;\n";
   }
@@ -134,6 +135,9 @@ std::string bashCompletion() {
             "      -o|--output|--preview) COMPREPLY=($(compgen -f -- \"$cur\")) ;;\n"
             "      *) if [[ ${COMP_WORDS[1]} == merge ]]; then\n"
             "           COMPREPLY=($(compgen -d -- \"$cur\") $(compgen -f -X '!*.exr' -- \"$cur\"))\n"
+            "         elif [[ ${COMP_WORDS[1]} == convert ]]; then\n"
+            "           COMPREPLY=($(compgen -d -- \"$cur\") $(compgen -f -X '!*.obj' -- \"$cur\")"
+            " $(compgen -f -X '!*.ply' -- \"$cur\") $(compgen -f -X '!*.inc' -- \"$cur\"))\n"
             "         else\n"
             "           COMPREPLY=($(compgen -d -- \"$cur\") $(compgen -f -X '!*.pov' -- \"$cur\")"
             " $(compgen -f -X '!*.cli' -- \"$cur\"))\n"
@@ -171,7 +175,9 @@ std::string zshCompletion() {
             "case $words[2] in\n"
             "  help) (( CURRENT == 3 )) && _describe -t commands 'command' raytrace_commands ;;\n"
             "  merge) _arguments '(-o --output)'{-o,--output}'[the image to write]:image:_files' "
-            "'--threads[threads]:N:' '*:tile:_files -g \"*.exr\"' ;;\n";
+            "'--threads[threads]:N:' '*:tile:_files -g \"*.exr\"' ;;\n"
+            "  convert) _arguments '--name[the identifier the include declares]:NAME:' "
+            "'1:mesh file:_files -g \"*.(obj|ply)\"' '2:include:_files -g \"*.inc\"' ;;\n";
   for (const CommandSummary& c : commandSummaries()) {
     if (!c.readsScene) continue;
     script += "  " + c.name + ") _arguments";
