@@ -823,7 +823,7 @@ namespace {
 bool texturePatternIn(const Node& n) {
   return std::any_of(n.items.begin(), n.items.end(), [](const Item& it) {
     return (it.kind == Item::Kind::Keyword && patternKind(it.word)) || isFunction(it) || patternBlock(it) ||
-           (it.kind == Item::Kind::Node && it.node->keyword == "texture_map");
+           (it.kind == Item::Kind::Node && (it.node->keyword == "texture_map" || it.node->keyword == "tiles"));
   });
 }
 
@@ -831,6 +831,23 @@ std::shared_ptr<const Texture> subTexture(const Node& n, const Surface& defaults
   Surface sub = defaults;
   readSurfaceItem(n, sub, defaults, refusals);
   return std::make_shared<const Texture>(bounded(makeTexture(sub, {})));
+}
+
+// The old `tiles { texture { A } tile2 texture { B } }`: checker's two blocks, B first (as POV-Ray draws it,
+// the same picture as `checker texture { B } texture { A }`); false when refused.
+bool readTiles(const Node& n, TexturePattern& tp, const Surface& defaults, Refusals& refusals) {
+  const auto texture = [](const Item& it) { return it.kind == Item::Kind::Node && it.node->keyword == "texture"; };
+  const auto tile2 = [](const Item& it) { return it.kind == Item::Kind::Keyword && it.word == "tile2"; };
+  const auto split = std::find_if(n.items.begin(), n.items.end(), tile2);
+  const bool written = split != n.items.begin() && split != n.items.end() && split + 1 != n.items.end() &&
+                       std::all_of(n.items.begin(), split, texture) && std::all_of(split + 1, n.items.end(), texture);
+  if (!written) throw ParseError(n.loc, "tiles needs 'texture { … } tile2 texture { … }'");
+  if (n.items.size() != 3) {
+    refusals.refuse(n.loc, "tiles of layered textures");
+    return false;
+  }
+  tp.textures = {subTexture(*n.items[2].node, defaults, refusals), subTexture(*n.items[0].node, defaults, refusals)};
+  return true;
 }
 
 // `texture { checker texture { … } texture { … } }` or `texture { gradient x texture_map { [v texture { … }] … } }`.
@@ -860,6 +877,9 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
         selector.map.push_back({e.node->items[0].value.v[0], solidPigment({Color(float(tp->textures.size())), 0, 0})});
         tp->textures.push_back(subTexture(body, defaults, refusals));
       }
+    } else if (it.kind == Item::Kind::Node && it.node->keyword == "tiles") {
+      if (readTiles(*it.node, *tp, defaults, refusals)) selector.pattern = makePattern(*patternKind("checker"), {});
+      draft = PatternDraft{};
     } else if (std::unique_ptr<Pattern> pattern = draft.start(n, i, refusals)) {
       selector.pattern = std::move(pattern);
       selector.wave = draft.kind->wave;
