@@ -4,6 +4,13 @@
 
 namespace rt {
 
+namespace {
+thread_local glm::dvec3 theSurfaceNormal{0, 0, 1};
+}  // namespace
+
+void setSurfaceNormal(const glm::dvec3& n) { theSurfaceNormal = n; }
+const glm::dvec3& surfaceNormal() { return theSurfaceNormal; }
+
 const PatternKind* patternKind(std::string_view name) {
   constexpr Wave kTriangle = Wave::Triangle;
   static constexpr PatternKind kKinds[] = {
@@ -32,6 +39,7 @@ const PatternKind* patternKind(std::string_view name) {
       {"quilted", false, makeQuilted},
       {"radial", false, makeRadial, Wave::Ramp, false, true, &kRadialMap},
       {"ripples", false, makeRipples},
+      {"slope", false, makeSlope},  // its block read by surface_reader.cpp
       {"spherical", false, makeSpherical},
       {"spiral1", true, makeSpiral1, kTriangle, true, false},  // `spiral1 N`: N arms
       {"spotted", false, makeBozo},
@@ -69,6 +77,7 @@ class Turbulent final : public Pattern {
   int blocks() const override { return base_->blocks(); }
   Color defaultBlock(int i) const override { return base_->defaultBlock(i); }
   bool hasBump() const override { return base_->hasBump(); }
+  bool readsNormal() const override { return base_->readsNormal(); }
   glm::dvec3 bump(const glm::dvec3& p) const override {
     return base_->bump(p + turbulentOffset(p, turbulence_) * turbulence_.amount);
   }

@@ -37,6 +37,14 @@ double waveValue(double raw, double frequency, double phase, Wave wave, double e
   return shaped(v, wave, exponent);
 }
 
+bool readsNormal(const Pigment& p) {
+  if (p.pattern && p.pattern->readsNormal()) return true;
+  for (const MapEntry& e : p.map) {
+    if (readsNormal(*e.pigment)) return true;
+  }
+  return std::any_of(p.list.begin(), p.list.end(), [](const auto& q) { return readsNormal(*q); });
+}
+
 glm::dvec3 Pigment::patternPoint(const glm::dvec3& p) const {
   if (warps.empty()) return glm::dvec3(fromTexture * glm::dvec4(p, 1));
   glm::dvec3 q = p;

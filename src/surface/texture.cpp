@@ -35,6 +35,16 @@ Material layerMaterial(const FinishTerms& f, const Rgbft& c) {
   return m;
 }
 
+namespace {
+
+// Whether a normal's pattern, or one of its map's normals, reads the surface's normal (slope).
+bool readsNormal(const Normal& n) {
+  if (n.pattern && n.pattern->readsNormal()) return true;
+  return std::any_of(n.map.begin(), n.map.end(), [](const NormalEntry& e) { return readsNormal(*e.normal); });
+}
+
+}  // namespace
+
 Texture bounded(Texture t) {
   Material& b = t.bound;
   b = Material{};
@@ -53,13 +63,17 @@ Texture bounded(Texture t) {
   };
   for (const TextureLayer& layer : t.layers) {
     t.bumpy = t.bumpy || layer.normal;
+    t.readsNormal = t.readsNormal || (layer.normal && readsNormal(*layer.normal));
     if (layer.pattern) {
+      t.readsNormal = t.readsNormal || readsNormal(layer.pattern->selector);
       for (const auto& sub : layer.pattern->textures) {
         take(sub->bound);
         t.bumpy = t.bumpy || sub->bumpy;
+        t.readsNormal = t.readsNormal || sub->readsNormal;
       }
       continue;
     }
+    t.readsNormal = t.readsNormal || readsNormal(*layer.pigment);
     anyColour(*layer.pigment, [&](const Rgbft& c) {
       take(layerMaterial(layer.finish, c));
       return false;

@@ -79,13 +79,12 @@ template <class T> class Object {
   // untextured scene nothing measurable (docs/performance.md, "Textures").
   const Material& materialAt(const Hit<T>& hit, Material& scratch) const {
     if (!texture_) return material_;
-    scratch = texture_->uvMapped ? texture_->inSpace(glm::dvec3(hit.uv, 0)) : texture_->at(glm::dvec3(hit.point));
-    return scratch;
+    return textured(hit, scratch, hit.normal);
   }
-  // The same, and the shading normal `normal` bent where the texture has a normal.
+  // The same, and the shading normal `normal` (facing the viewer) bent where the texture has a normal.
   const Material& materialAt(const Hit<T>& hit, Material& scratch, Vec3<T>& normal) const {
     if (!texture_) return material_;
-    materialAt(hit, scratch);
+    textured(hit, scratch, normal);
     if (texture_->bumpy) normal = Vec3<T>(texture_->bent(glm::dvec3(hit.point), glm::dvec3(normal)));
     return scratch;
   }
@@ -98,6 +97,13 @@ template <class T> class Object {
   int id() const { return id_; }  // 1-based position in the scene file, as printrays shows it
 
  private:
+  // The texture at the hit, where `facing` is the surface's normal that a slope pattern reads.
+  const Material& textured(const Hit<T>& hit, Material& scratch, const Vec3<T>& facing) const {
+    if (texture_->readsNormal) setSurfaceNormal(glm::normalize(glm::dvec3(facing)));
+    scratch = texture_->uvMapped ? texture_->inSpace(glm::dvec3(hit.uv, 0)) : texture_->at(glm::dvec3(hit.point));
+    return scratch;
+  }
+
   Material material_;
   int id_;
   std::shared_ptr<const Texture> texture_;

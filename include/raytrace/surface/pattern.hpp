@@ -29,7 +29,15 @@ class Pattern {
   // against per unit of the normal's amount (surface/normal.hpp).
   virtual bool hasBump() const { return false; }
   virtual glm::dvec3 bump(const glm::dvec3&) const { return glm::dvec3(0); }
+  // Whether the value reads the surface's normal at the hit (slope) besides the point: a texture holding such
+  // a pattern sets surfaceNormal() before it is read (Texture::readsNormal).
+  virtual bool readsNormal() const { return false; }
 };
+
+// The world-space unit normal, facing the viewer, of the surface being shaded on this thread: what slope reads
+// (POV-Ray 3.7 manual, "Slope Pattern"). Set only for a texture that reads it, so other textures pay nothing.
+void setSurfaceNormal(const glm::dvec3& n);
+const glm::dvec3& surfaceNormal();
 
 // How a continuous pattern's value is shaped before the map reads it (POV-Ray's wave modifiers).
 enum class Wave { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
@@ -61,6 +69,15 @@ struct FractalArgs {
   double exteriorFactor = 1, interiorFactor = 1;
 };
 
+// slope's `<direction>, lo, hi` and `altitude <altitude>, lo, hi`: the slope value s in [0, 1] and the
+// altitude along the vector, each mapped from [lo, hi] to [0, 1] and weighted by its vector's length.
+struct SlopeArgs {
+  glm::dvec3 direction{0, 1, 0};
+  double lo = 0, hi = 1;
+  glm::dvec3 altitude{0};
+  double altitudeLo = 0, altitudeHi = 1;
+};
+
 // What makes a pattern: the vector after its keyword (`gradient <1, 0, 0>`) and the pigment's modifiers that
 // change the pattern itself.
 struct PatternArgs {
@@ -76,6 +93,7 @@ struct PatternArgs {
   glm::dvec3 brickSize{8, 3, 4.5};  // brick's brick_size and mortar
   double mortar = 0.5;
   FractalArgs fractal;
+  SlopeArgs slope;
   double frequency = 1, phase = 0;  // a normal's, which ripples and waves read themselves
 };
 

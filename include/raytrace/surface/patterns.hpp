@@ -30,6 +30,9 @@ std::unique_ptr<Pattern> makeOnion(const PatternArgs&);
 std::unique_ptr<Pattern> makePigmentPattern(const PatternArgs&);
 std::unique_ptr<Pattern> makePlanar(const PatternArgs&);
 std::unique_ptr<Pattern> makeQuilted(const PatternArgs&);
+// Normals only (surface/normal.hpp): a bump_map's image, planar (map_type 0).
+struct ImageMap;
+std::unique_ptr<Pattern> makeBumpMap(const ImageMap& image);
 // Normals only (surface/normal.hpp), in normalPatternKind(): bumps, dents, ripples, waves and wrinkles as
 // POV-Ray bends normals by them.
 std::unique_ptr<Pattern> makeBumpsNormal(const PatternArgs&);
@@ -39,6 +42,7 @@ std::unique_ptr<Pattern> makeWavesNormal(const PatternArgs&);
 std::unique_ptr<Pattern> makeWrinklesNormal(const PatternArgs&);
 std::unique_ptr<Pattern> makeRadial(const PatternArgs&);
 std::unique_ptr<Pattern> makeRipples(const PatternArgs&);
+std::unique_ptr<Pattern> makeSlope(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpherical(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpiral1(const PatternArgs&);
 std::unique_ptr<Pattern> makeWaves(const PatternArgs&);

@@ -64,6 +64,9 @@ struct Pigment {
   glm::dvec3 patternPoint(const glm::dvec3& p) const;
 };
 
+// Whether the pigment's pattern, or a pattern of its map's or list's pigments, reads the surface's normal (slope).
+bool readsNormal(const Pigment& p);
+
 // Whether some colour the pigment can give (its solid colour, or any of its map's or list's) satisfies `pred`.
 template <class F> bool anyColour(const Pigment& p, const F& pred) {
   if (p.image) return pred(imageExtremes(*p.image)[0]) || pred(imageExtremes(*p.image)[1]);

@@ -46,6 +46,7 @@ struct Texture {
   glm::dmat4 fromWorld{1};           // world space to texture space
   Material bound;                    // each term's largest value anywhere (bounded()), for the tracer's cut-off
   bool bumpy = false;                // whether some layer bends the normal (bounded()): bent() does something
+  bool readsNormal = false;          // whether some pattern in it reads the surface's normal (bounded()): slope
   // uv_mapping: the layers read the point (u, v, 0) of the surface's uv coordinates instead of the world point,
   // so the object's transforms do not move them (the POV-Ray 3.7 manual, "UV Mapping").
   bool uvMapped = false;
@@ -62,7 +63,7 @@ struct Texture {
   glm::dvec3 bentInSpace(const glm::dvec3& p, const glm::dmat3& toTexture, const glm::dvec3& n) const;
 };
 
-// The texture with `bound` and `bumpy` filled in: each term's largest over every colour its pigments can give. A blend
+// The texture with `bound`, `bumpy` and `readsNormal` filled in: each term's largest over every colour its pigments can give. A blend
 // or a layer mixes colours with weights summing to at most 1, so the largest of the colours bounds it.
 Texture bounded(Texture t);
 

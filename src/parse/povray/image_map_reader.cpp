@@ -1,12 +1,30 @@
 // `image_map { [type] "file" [map_type 0|1|2|5] [interpolate 2|4] [once] [filter all F] [transmit all T]
-// [filter I, F] [transmit I, F] [gamma G] }` (POV-Ray 3.7 manual, "Image Maps").
+// [filter I, F] [transmit I, F] [gamma G] }` (POV-Ray 3.7 manual, "Image Maps"), and a normal's
+// `bump_map { … [bump_size S] [use_index | use_color] }` ("Bump Map").
 #include "raytrace/parse/povray/surface_reader.hpp"
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
+
+#include "raytrace/util/palette_image.hpp"
 
 namespace rt::povray {
 
-std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) {
+namespace {
+
+// use_index: a palette image's pixels become their indices, as greys whose intensity is the index itself
+// (measured on POV-Ray's renders: the height grows by 1 per index); an image without a palette keeps its colours.
+void useIndices(const std::string& path, ImageMap& image) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::optional<PaletteImage> palette = paletteIndices(bytes);
+  if (!palette || palette->indices.size() != image.pixels.size()) return;
+  for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i].rgb = Color(float(palette->indices[i]));
+}
+
+// An image_map, or a bump_map when `bump` is given: then bump_size, use_index and use_color are read into it.
+std::shared_ptr<const ImageMap> readImage(const Node& n, Refusals& refusals, BumpMapSettings* bump) {
   static constexpr std::string_view kTypes[] = {"gif", "hdr", "jpeg", "pgm", "png", "ppm", "sys", "tga"};
   static constexpr std::string_view kRefusedTypes[] = {"exr", "iff", "tiff"};
   std::string name;
@@ -75,20 +93,27 @@ std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) 
     } else if (w == "filter" || w == "transmit") {
       const int index = int(number(i, it, "a palette index and an amount"));
       channels.push_back({index, w == "transmit", float(number(i, it, "a palette index and an amount"))});
+    } else if (bump && w == "bump_size") {
+      bump->size = number(i, it, "a float");
+    } else if (bump && (w == "use_index" || w == "use_color" || w == "use_colour")) {
+      bump->useIndex = w == "use_index";
     } else {
       // use_color, use_index, premultiplied …
-      refusals.refuse(it.loc, "image_map " + std::string(w));
+      refusals.refuse(it.loc, std::string(n.keyword) + " " + std::string(w));
       refused = true;
     }
   }
-  if (name.empty()) throw ParseError(n.loc, "image_map needs an image file");
+  if (name.empty()) throw ParseError(n.loc, std::string(n.keyword) + " needs an image file");
   if (refused) return nullptr;
   const std::string path = refusals.findFile ? refusals.findFile(name) : name;
   if (path.empty()) throw ParseError(nameAt, "cannot find the image map \"" + name + "\"");
   const std::optional<double> working = refusals.imageGamma ? refusals.imageGamma() : std::optional<double>(1.0);
   // Before #version 3.7 a file's values are the scene's colours as they are; from 3.7 on they are decoded
   // (sRGB unless `gamma` says otherwise) and put in the scene's working gamma (measured against POV-Ray 3.7).
-  auto image = std::make_shared<ImageMap>(readImageFile(path, working ? fileGamma : -1, working.value_or(1), nameAt, channels));
+  // A bump map's file holds linear heights: its values are taken as they are (the manual, "Bump Map").
+  auto image = bump ? std::make_shared<ImageMap>(readImageFile(path, -1, 1, nameAt))
+                    : std::make_shared<ImageMap>(readImageFile(path, working ? fileGamma : -1, working.value_or(1), nameAt, channels));
+  if (bump && bump->useIndex) useIndices(path, *image);
   image->mapping = settings.mapping;
   image->interpolation = settings.interpolation;
   image->once = settings.once;
@@ -98,6 +123,14 @@ std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) 
   }
   image->findExtremes();
   return image;
+}
+
+}  // namespace
+
+std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) { return readImage(n, refusals, nullptr); }
+
+std::shared_ptr<const ImageMap> readBumpMap(const Node& n, Refusals& refusals, BumpMapSettings& settings) {
+  return readImage(n, refusals, &settings);
 }
 
 }  // namespace rt::povray

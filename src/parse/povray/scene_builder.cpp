@@ -95,10 +95,18 @@ class Builder {
     return nullptr;
   }
 
+  // A function has no surface, and so no normal for a slope pattern to read: refused.
+  static bool refusedSlope(const Pigment& p, const Node& n, FunctionValue& into) {
+    if (!readsNormal(p)) return false;
+    into.why = "slope in a function";
+    into.whyAt = n.loc;
+    return true;
+  }
+
   // A pattern function's compiled form: the pattern's value at (x, y, z), read with the scene's noise generator.
   void patternFunction(const Node& pattern, FunctionValue& into) {
     const std::shared_ptr<const Pigment> p = functionPigment(pattern, into, patternPigment);
-    if (!p) return;
+    if (!p || refusedSlope(*p, pattern, into)) return;
     using Op = Function::Op;
     into.compiled = std::make_shared<Function>(
         std::vector<Function::Instr>{{Op::Param, 0}, {Op::Param, 1}, {Op::Param, 2}, {Op::Pattern, 0, 0, nullptr, p}}, 3, 3);
@@ -107,7 +115,7 @@ class Builder {
   // A pigment function's pigment, read with the scene's noise generator.
   void pigmentFunction(const Node& pigment, FunctionValue& into) {
     const std::shared_ptr<const Pigment> p = functionPigment(pigment, into, nestedPigment);
-    if (!p) return;
+    if (!p || refusedSlope(*p, pigment, into)) return;
     into.pigment = p;
   }
 

@@ -178,6 +178,48 @@ void readFractalHead(const Node& n, size_t& i, FractalArgs& f) {
                         : (julia ? Set::Magnet2Julia : Set::Magnet2Mandel);
 }
 
+// A pattern written as a block of its own: `pigment_pattern { … }` or `slope { … }`.
+bool patternBlock(const Item& it) {
+  return it.kind == Item::Kind::Node && (it.node->keyword == "pigment_pattern" || it.node->keyword == "slope");
+}
+
+// `slope { <direction> [, lo, hi] [altitude <altitude> [, lo, hi]] }` (POV-Ray 3.7 manual, "Slope Pattern");
+// false when refused (the point_at form).
+bool readSlope(const Node& n, SlopeArgs& a, Refusals& refusals) {
+  size_t i = 0;
+  const auto range = [&](double& lo, double& hi, const char* what) {
+    if (i >= n.items.size() || n.items[i].kind != Item::Kind::Value || n.items[i].value.type != Value::Type::Float) return;
+    const Item& at = n.items[i];
+    const Value* l = &at.value;
+    const Value* h = valueAfter(n, i);
+    if (!h || h->type != Value::Type::Float) throw ParseError(at.loc, std::string("slope's ") + what + " range needs two floats");
+    if (l->v[0] == h->v[0]) throw ParseError(at.loc, std::string("slope's ") + what + " range is empty");
+    lo = l->v[0];
+    hi = h->v[0];
+    ++i;
+  };
+  if (!n.items.empty() && n.items[0].kind == Item::Kind::Keyword && n.items[0].word == "point_at") {
+    refusals.refuse(n.items[0].loc, "slope point_at");
+    return false;
+  }
+  if (n.items.empty() || n.items[0].kind != Item::Kind::Value || !n.items[0].value.numeric() ||
+      glm::length(vec3(n.items[0].value)) == 0) {
+    throw ParseError(n.loc, "slope needs a direction other than <0, 0, 0>");
+  }
+  a.direction = vec3(n.items[0].value);
+  i = 1;
+  range(a.lo, a.hi, "slope");
+  if (i < n.items.size() && n.items[i].kind == Item::Kind::Keyword && n.items[i].word == "altitude") {
+    const Value* v = valueAfter(n, i);
+    if (!v || !v->numeric()) throw ParseError(n.items[i].loc, "'altitude' needs a vector");
+    a.altitude = vec3(*v);
+    ++i;
+    range(a.altitudeLo, a.altitudeHi, "altitude");
+  }
+  if (i < n.items.size()) throw ParseError(n.items[i].loc, "slope takes a direction, a range and an altitude only");
+  return true;
+}
+
 // A pattern being read: its kind and what the pigment's modifiers set, made again with them once the block
 // is read, since the modifiers may follow the colour map.
 struct PatternDraft {
@@ -192,12 +234,12 @@ struct PatternDraft {
                                  const PatternKind* (*kinds)(std::string_view) = patternKind) {
     const Item& it = n.items[i];
     const bool function = isFunction(it);
-    const bool pigment = it.kind == Item::Kind::Node && it.node->keyword == "pigment_pattern";
+    const bool block = patternBlock(it), pigment = block && it.node->keyword == "pigment_pattern";
     const PatternKind* k = function                         ? patternKind("function")
-                           : pigment                        ? patternKind("pigment_pattern")
+                           : block                          ? patternKind(it.node->keyword)
                            : it.kind == Item::Kind::Keyword ? kinds(it.word)
                                                             : nullptr;
-    if (!k || (k->make == makePigmentPattern && !pigment)) return nullptr;  // pigment_pattern needs its block
+    if (!k || (!block && (k->make == makePigmentPattern || k->make == makeSlope))) return nullptr;  // they need their block
     if (function && !static_cast<const FunctionValue&>(*it.value.ref).compiled) {
       const auto& f = static_cast<const FunctionValue&>(*it.value.ref);
       refusals.refuse(f.whyAt, f.why);
@@ -208,6 +250,7 @@ struct PatternDraft {
     args.noise.scene = refusals.sceneNoise;
     if (function) args.function = static_cast<const FunctionValue&>(*it.value.ref).compiled;
     if (pigment) args.pigment = nestedPigment(*it.node, refusals);
+    if (block && !pigment && !readSlope(*it.node, args.slope, refusals)) return nullptr;
     if (k->needsVector) {
       const Value* v = valueAfter(n, i);
       if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a number or a vector");
@@ -387,8 +430,8 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
       continue;
     }
     if (readTransform(n, i, steps, refusals)) continue;
-    const bool pigmentPattern = it.kind == Item::Kind::Node && it.node->keyword == "pigment_pattern";
-    if (it.kind == Item::Kind::Node && !pigmentPattern) {
+    const bool patternNode = patternBlock(it);
+    if (it.kind == Item::Kind::Node && !patternNode) {
       const std::string_view k = it.node->keyword;
       if (k == "pigment" && blocks && p.list.size() < size_t(p.pattern->blocks())) {
         p.list.push_back(nestedPigment(*it.node, refusals));
@@ -408,7 +451,7 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
       }
       continue;
     }
-    if (it.kind != Item::Kind::Keyword && !isFunction(it) && !pigmentPattern) {
+    if (it.kind != Item::Kind::Keyword && !isFunction(it) && !patternNode) {
       refusals.refuse(it, "a value here");
       continue;
     }
@@ -607,14 +650,29 @@ void readNormalMap(const Node& n, std::vector<NormalEntry>& map, bool weightsOpt
   }
 }
 
+// `bump_map { … }` as the normal's pattern, its bump_size the normal's amount; only the planar map is drawn.
+void readBumpMapNormal(const Node& n, Normal& normal, Refusals& refusals) {
+  BumpMapSettings settings;
+  const std::shared_ptr<const ImageMap> image = readBumpMap(n, refusals, settings);
+  if (!image) return;
+  if (image->mapping != ImageMap::Mapping::Planar) {
+    refusals.refuse(n.loc, "bump_map map_type " + std::to_string(int(image->mapping)));
+    return;
+  }
+  normal.pattern = makeBumpMap(*image);
+  normal.map.clear();
+  normal.average = false;
+  if (settings.size) normal.amount = *settings.size;
+}
+
 // `normal { [identifier] pattern [amount] modifiers… }` (POV-Ray 3.7 manual, "Normal").
 void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::vector<TransformStep>& steps,
                      const Normal& base, Refusals& refusals) {
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     if (readTransform(n, i, steps, refusals)) continue;
-    const bool pigmentPattern = it.kind == Item::Kind::Node && it.node->keyword == "pigment_pattern";
-    if (it.kind == Item::Kind::Node && !pigmentPattern) {
+    const bool patternNode = patternBlock(it);
+    if (it.kind == Item::Kind::Node && !patternNode) {
       const std::string_view k = it.node->keyword;
       const bool blocks = normal.pattern && normal.pattern->blocks() > 0;
       if (k == "normal" && blocks && normal.map.size() < size_t(normal.pattern->blocks())) {
@@ -627,12 +685,15 @@ void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::ve
       } else if (k == "normal_map") {
         normal.map.clear();
         readNormalMap(*it.node, normal.map, normal.average, base, refusals);
+      } else if (k == "bump_map") {
+        readBumpMapNormal(*it.node, normal, refusals);
+        draft = PatternDraft{};
       } else {
         refusals.refuse(it, "normal");
       }
       continue;
     }
-    if (it.kind != Item::Kind::Keyword && !pigmentPattern) {
+    if (it.kind != Item::Kind::Keyword && !patternNode) {
       refusals.refuse(it, it.value.type == Value::Type::Function ? "function" : "a value here");
       continue;
     }
@@ -769,8 +830,8 @@ namespace {
 // Whether a texture block is a pattern of textures: a pattern keyword or a texture_map in it.
 bool texturePatternIn(const Node& n) {
   return std::any_of(n.items.begin(), n.items.end(), [](const Item& it) {
-    return (it.kind == Item::Kind::Keyword && patternKind(it.word)) || isFunction(it) ||
-           (it.kind == Item::Kind::Node && it.node->keyword == "texture_map");
+    return (it.kind == Item::Kind::Keyword && patternKind(it.word)) || isFunction(it) || patternBlock(it) ||
+           (it.kind == Item::Kind::Node && (it.node->keyword == "texture_map" || it.node->keyword == "tiles"));
   });
 }
 
@@ -778,6 +839,23 @@ std::shared_ptr<const Texture> subTexture(const Node& n, const Surface& defaults
   Surface sub = defaults;
   readSurfaceItem(n, sub, defaults, refusals);
   return std::make_shared<const Texture>(bounded(makeTexture(sub, {})));
+}
+
+// The old `tiles { texture { A } tile2 texture { B } }`: checker's two blocks, B first (as POV-Ray draws it,
+// the same picture as `checker texture { B } texture { A }`); false when refused.
+bool readTiles(const Node& n, TexturePattern& tp, const Surface& defaults, Refusals& refusals) {
+  const auto texture = [](const Item& it) { return it.kind == Item::Kind::Node && it.node->keyword == "texture"; };
+  const auto tile2 = [](const Item& it) { return it.kind == Item::Kind::Keyword && it.word == "tile2"; };
+  const auto split = std::find_if(n.items.begin(), n.items.end(), tile2);
+  const bool written = split != n.items.begin() && split != n.items.end() && split + 1 != n.items.end() &&
+                       std::all_of(n.items.begin(), split, texture) && std::all_of(split + 1, n.items.end(), texture);
+  if (!written) throw ParseError(n.loc, "tiles needs 'texture { … } tile2 texture { … }'");
+  if (n.items.size() != 3) {
+    refusals.refuse(n.loc, "tiles of layered textures");
+    return false;
+  }
+  tp.textures = {subTexture(*n.items[2].node, defaults, refusals), subTexture(*n.items[0].node, defaults, refusals)};
+  return true;
 }
 
 // `texture { checker texture { … } texture { … } }` or `texture { gradient x texture_map { [v texture { … }] … } }`.
@@ -807,6 +885,9 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
         selector.map.push_back({e.node->items[0].value.v[0], solidPigment({Color(float(tp->textures.size())), 0, 0})});
         tp->textures.push_back(subTexture(body, defaults, refusals));
       }
+    } else if (it.kind == Item::Kind::Node && it.node->keyword == "tiles") {
+      if (readTiles(*it.node, *tp, defaults, refusals)) selector.pattern = makePattern(*patternKind("checker"), {});
+      draft = PatternDraft{};
     } else if (std::unique_ptr<Pattern> pattern = draft.start(n, i, refusals)) {
       selector.pattern = std::move(pattern);
       selector.wave = draft.kind->wave;

@@ -14,6 +14,7 @@ class PigmentPattern final : public Pattern {
     const Color c = pigment_->at(p).rgb;
     return 0.297 * double(c.r) + 0.589 * double(c.g) + 0.114 * double(c.b);
   }
+  bool readsNormal() const override { return rt::readsNormal(*pigment_); }
 
  private:
   std::shared_ptr<const Pigment> pigment_;

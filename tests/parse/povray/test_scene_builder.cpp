@@ -403,7 +403,7 @@ plane { y, 0 pigment { White } normal { average normal_map { [3 gradient x 6] [g
         "scene.pov:3:47: error: a normal_map entry is [value normal]");
   CHECK(failure("plane { y, 0 normal { average } }\n") == "scene.pov:3:14: error: 'average' needs a normal_map");
   CHECK(failure("plane { y, 0 normal { gradient x bump_map { png \"a.png\" } } }\n") ==
-        "scene.pov:3:34: error: 'bump_map' is not supported yet");
+        "scene.pov:3:49: error: cannot find the image map \"a.png\"");
   CHECK(failure("plane { y, 0 normal { gradient x slope_map { [0] } } }\n") ==
         "scene.pov:3:46: error: a slope_map entry is [value, <height, slope>]");
 }

@@ -39,6 +39,14 @@ struct Refusals {
 
 // `image_map { [type] "file" … }` (image_map_reader.cpp); nothing when something in it is refused.
 std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals);
+// A bump_map's own settings: its bump_size, when written, and use_index.
+struct BumpMapSettings {
+  std::optional<double> size;
+  bool useIndex = false;
+};
+// `bump_map { [type] "file" … }` (image_map_reader.cpp): its image, its values left linear; nothing when
+// something in it is refused.
+std::shared_ptr<const ImageMap> readBumpMap(const Node& n, Refusals& refusals, BumpMapSettings& settings);
 
 // `media { … }` in an interior (media_reader.cpp); nothing when something in it is refused.
 std::optional<Media> readMedia(const Node& n, Refusals& refusals);
