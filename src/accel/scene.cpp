@@ -19,6 +19,7 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
     light.color = l.color;
     light.shape = shape;
     light.shadowless = l.shadowless;
+    light.mediaInteraction = l.mediaInteraction;
     if (l.area) light.area = &areas_.emplace_back(*l.area);
     if (l.parallelTo && glm::length(l.position - *l.parallelTo) > 0) {
       light.parallel = Vec3<T>(glm::normalize(l.position - *l.parallelTo));

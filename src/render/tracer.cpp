@@ -580,11 +580,51 @@ template <class T> Color Tracer<T>::transmittance(const Ray<T>& ray, Interval<T>
     if (m.extras->fadeDistance > 0 && glm::dot(ray.dir, hit->normal) > T(0)) {
       through *= interiorFade(m, float((hit->t - segment.min) * glm::length(ray.dir)));
     }
+    // Leaving a medium: the light dimmed by its extinction on the way inside (the manual's note under "Media":
+    // absorbing and scattering media cast shadows).
+    if (m.extras->media && glm::dot(ray.dir, hit->normal) > T(0)) {
+      const double length = double(hit->t - segment.min) * double(glm::length(ray.dir));
+      const glm::dvec3 dir = glm::normalize(glm::dvec3(ray.dir));
+      through *= m.extras->media->kept(glm::dvec3(ray.at(segment.min)), dir, length);
+    }
     if (through == Color(0)) return through;
     segment.min = hit->t;
   }
   return Color(0);
 }
+
+template <class T> struct Tracer<T>::MediaLighting final : MediaLights {
+  explicit MediaLighting(Tracer& tracer) : tracer(tracer) {}
+  void at(const glm::dvec3& point, std::vector<Arrival>& out) override {
+    const Vec3<T> p(point);
+    for (size_t i = 0; i < tracer.scene_.lights().size(); ++i) {
+      const Light<T>& light = tracer.scene_.lights()[i];
+      if (!light.mediaInteraction) continue;
+      // A parallel light shines along its direction from the plane through its position (sampledLight).
+      const Vec3<T> toLight = light.parallel ? *light.parallel : light.position - p;
+      const T distance = light.parallel ? glm::dot(light.position - p, *light.parallel) : glm::length(toLight);
+      const Vec3<T> l = light.parallel ? toLight : toLight / distance;
+      Color color = light.color;
+      if (light.shape) {
+        const glm::dvec3 fromLight = glm::dvec3(p - light.position);
+        const double length = glm::length(fromLight);
+        color *= light.shape->at(fromLight / length, length);
+      }
+      if (!light.shadowless && distance > T(0)) {
+        const Ray<T> ray{p, l};
+        const Interval<T> segment{T(0), distance};
+        if (tracer.filteredShadows_) {
+          color *= tracer.transmittance(ray, segment);
+        } else {
+          ++tracer.counts_.shadow;
+          if (tracer.scene_.occluded(ray, segment, &tracer.lastOccluder_[i])) color = Color(0);
+        }
+      }
+      if (color != Color(0)) out.push_back({glm::dvec3(l), color});
+    }
+  }
+  Tracer& tracer;
+};
 
 template <class T>
 [[gnu::always_inline]] inline
@@ -611,7 +651,8 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
     if (entering && m.extras->media && std::isfinite(t.distance)) {
       const double length = double(t.distance) * double(glm::length(*refracted));
       const glm::dvec3 dir = glm::normalize(glm::dvec3(*refracted));
-      gathered = transmitTint * m.extras->media->through(t.color, glm::dvec3(hit.point), dir, length);
+      MediaLighting lights(*this);
+      gathered = transmitTint * m.extras->media->through(t.color, glm::dvec3(hit.point), dir, length, &lights);
     }
     if (entering && options_.beers) gathered *= beerAttenuation(m.pigment, float(t.distance));
     if (entering && m.extras->fadeDistance > 0) gathered *= interiorFade(m, float(t.distance));

@@ -1,5 +1,6 @@
 // POV-Ray's media: what a ray brings back across them, against POV-Ray 3.7's own pictures.
 #include <cmath>
+#include <functional>
 
 #include <catch2/catch.hpp>
 
@@ -77,4 +78,92 @@ TEST_CASE("Media: a density scales absorption and emission where the steps read 
   quarter->solid.rgb = Color(0.25f);
   m.densities = {quarter};
   CHECK_THAT(across(m, Color(1), 2).r, WithinAbs(across(medium(0.5f, 0.2f, 1), Color(1), 2).r, 1e-6));
+}
+
+namespace {
+
+// One light of colour `light(z)` at each point z along the ray, from `toLight`.
+struct StubLights final : MediaLights {
+  std::function<double(double)> light;
+  glm::dvec3 toLight{1, 0, 0};
+  void at(const glm::dvec3& point, std::vector<Arrival>& out) override { out.push_back({toLight, Color(float(light(point.z)))}); }
+};
+
+Media scattering(int type, float colour, double extinction, int samples) {
+  Media m;
+  m.scattering = Scattering{type, Color(colour), 0, extinction};
+  m.samples = samples;
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("Media: scattering phase functions as POV-Ray 3.7 draws them", "[media]") {
+  // POV-Ray 3.7: a hollow box 2 deep of `scattering { type, c extinction 0 }`, lit by one far light and seen
+  // along +z before black, gives 2·c·phase; cos is that of the angle between the ray and the way to the light.
+  const glm::dvec3 dir(0, 0, 1);
+  const auto toLight = [](double cosine) { return glm::dvec3(std::sqrt(1 - cosine * cosine), 0, cosine); };
+  const struct {
+    int type;
+    double eccentricity, cosine, povray, tolerance;
+  } measured[] = {{1, 0, -1, 1.0, 1e-4},         {1, 0, 0.5, 1.0, 1e-4},          {2, 0, -1, 0.576656, 1e-5},
+                  {2, 0, 0, 0.596933, 1e-4},     {2, 0, 0.5, 1.096246, 1e-4},     {2, 0, 1, 5.766575, 2e-3},
+                  {3, 0, -1, 0.495712, 1e-5},    {3, 0, 0.7071068, 0.651865, 1e-4}, {3, 0, 0.8660254, 3.191043, 1e-3},
+                  {3, 0, 1, 25.281147, 2e-2},    {4, 0, -1, 1.598725, 1e-4},      {4, 0, 0, 0.799369, 1e-5},
+                  {4, 0, 0.5, 0.999200, 1e-4},   {5, 0.5, -1, 0.222210, 1e-4},    {5, 0.5, 0, 0.536660, 1e-4},
+                  {5, 0.5, 1, 6.000038, 2e-3},   {5, -0.3, -1, 2.652972, 1e-3},   {5, -0.3, 0, 0.799649, 1e-4},
+                  {5, -0.3, 1, 0.414206, 1e-4}};
+  for (const auto& m : measured) {
+    INFO("type " << m.type << " eccentricity " << m.eccentricity << " cos " << m.cosine);
+    const Scattering s{m.type, Color(1), m.eccentricity, 0};
+    CHECK_THAT(s.phase(dir, toLight(m.cosine)), WithinAbs(m.povray, m.tolerance));
+  }
+}
+
+TEST_CASE("Media: scattered light is summed as emission is, and extinction absorbs", "[media]") {
+  // POV-Ray 3.7, `scattering { 1, 0.5 }` 2 deep, `samples 1`, lit evenly from the side with no shadow: as
+  // `emission 0.5 absorption 0.5`.
+  StubLights side;
+  side.light = [](double) { return 1.0; };
+  const Media m = scattering(1, 0.5f, 1, 1);
+  CHECK_THAT(m.through(Color(0), glm::dvec3(0), glm::dvec3(0, 0, 1), 2, &side).r, WithinAbs(0.5 * (1 + std::exp(-0.5)), 1e-6));
+  // Without lights, or with extinction 0, it only absorbs, or does nothing.
+  CHECK_THAT(across(m, Color(1), 2).r, WithinAbs(std::exp(-1.0), 1e-6));
+  CHECK_THAT(across(scattering(1, 0.5f, 0, 1), Color(1), 2).r, WithinAbs(1.0, 1e-6));
+}
+
+TEST_CASE("Media: light varying along the way is read at POV-Ray's points, by halves where it varies", "[media]") {
+  const glm::dvec3 start(0), dir(0, 0, 1);
+  SECTION("a light from the front, dimmed by the medium on its way to each point") {
+    // POV-Ray 3.7, `scattering { 1, 0.5 }` 2 deep lit from behind the viewer, by samples.
+    StubLights front;
+    front.light = [](double z) { return std::exp(-0.5 * z); };
+    const struct {
+      int samples;
+      double povray;
+    } measured[] = {{1, 0.610178}, {4, 0.551461}, {6, 0.522026}};
+    for (const auto& m : measured) {
+      INFO("samples " << m.samples);
+      CHECK_THAT(scattering(1, 0.5f, 1, m.samples).through(Color(0), start, dir, 2, &front).r, WithinAbs(m.povray, 2e-5));
+    }
+  }
+  SECTION("a shadow's edge: the points before it are dark") {
+    // POV-Ray 3.7, `scattering { 1, 0.5 extinction 0 } samples 4` 2 deep, the light cut off before z = 0.28:
+    // steps over [0, 0.5], [0.5, 1], [1, 1.5] read down to a sixteenth of that.
+    StubLights edge;
+    edge.light = [](double z) { return z < 0.28 ? 0.0 : 1.0; };
+    CHECK_THAT(scattering(1, 0.5f, 0, 4).through(Color(0), start, dir, 2, &edge).r, WithinAbs(0.805554, 1e-5));
+  }
+  SECTION("a thin shadow at a step's middle, seen only if the light varies by more than aa_threshold") {
+    // POV-Ray 3.7, `scattering { 1, c extinction 0 } samples 4` 2 deep, the light cut off for 0.24 < z < 0.26:
+    // c = 0.5 and 0.02 split the first step, c = 0.01 (0.01·3 channels·2 = 0.06 < 0.1) does not.
+    StubLights thin;
+    thin.light = [](double z) { return z > 0.24 && z < 0.26 ? 0.0 : 1.0; };
+    CHECK_THAT(scattering(1, 0.5f, 0, 4).through(Color(0), start, dir, 2, &thin).r, WithinAbs(34.0 / 36, 1e-5));
+    CHECK_THAT(scattering(1, 0.02f, 0, 4).through(Color(0), start, dir, 2, &thin).r, WithinAbs(0.0377813, 2e-5));
+    CHECK_THAT(scattering(1, 0.01f, 0, 4).through(Color(0), start, dir, 2, &thin).r, WithinAbs(0.0177768, 2e-5));
+    Media level1 = scattering(1, 0.5f, 0, 4);
+    level1.aaLevel = 1;
+    CHECK_THAT(level1.through(Color(0), start, dir, 2, &thin).r, WithinAbs(1.0 - 1.0 / 9, 1e-6));
+  }
 }

@@ -21,6 +21,7 @@ template <class T> struct Light {
   Color color;
   const LightShape* shape = nullptr;
   bool shadowless = false;  // casts no shadows: no shadow ray is traced toward it
+  bool mediaInteraction = true;  // lights scattering media (POV-Ray's media_interaction)
   // An area light or a parallel one (`sampled`) is lit by the tracer one hit at a time, not in packets.
   bool sampled = false;
   const AreaLight* area = nullptr;

@@ -122,8 +122,11 @@ template <class T> class Tracer {
   // secondary rays, weighted (§c.5).
   Color shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, RayRecord* record,
               const std::optional<ShadowRay>* shadows);
-  // The share of a light's colour that reaches the end of a shadow ray through transparent surfaces.
+  // The share of a light's colour that reaches the end of a shadow ray through transparent surfaces, and the
+  // media inside them.
   Color transmittance(const Ray<T>& ray, Interval<T> segment);
+  // What reaches a point of a scattering medium from each light (MediaLights), shadowed as a surface would be.
+  struct MediaLighting;
   // `c` seen through the scene's fogs (fogs_) along the ray up to t (infinite for a ray that leaves the scene).
   Color fogged(Color c, const Ray<T>& ray, T t) const;
   // The weights of the local light and the two secondary rays at a hit; `refracted` receives the transmitted

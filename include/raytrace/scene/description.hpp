@@ -73,6 +73,7 @@ struct LightDesc {
   std::shared_ptr<const glm::dvec3> parallelTo;
   double fadeDistance = 0, fadePower = 0;  // 0: no fading
   bool shadowless = false;
+  bool mediaInteraction = true;  // `media_interaction off`: scattering media do not see it
 };
 
 // How a scene language wants its pictures made: the conventions that reproduce each course's reference

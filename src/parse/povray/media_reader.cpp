@@ -1,6 +1,6 @@
-// `media { absorption C  emission C  intervals N  samples MIN[, MAX]  method 3  density { … } }` in an interior
-// (POV-Ray 3.7 manual, "Media" and "Density"): a medium without scattering; scattering and the other sampling
-// methods are refused.
+// `media { absorption C  emission C  scattering { … }  intervals N  samples MIN[, MAX]  method 3  aa_level N
+// aa_threshold X  density { … } }` in an interior (POV-Ray 3.7 manual, "Media" and "Density"); the other
+// sampling methods are refused.
 #include <algorithm>
 
 #include "raytrace/parse/povray/surface_reader.hpp"
@@ -41,6 +41,33 @@ std::shared_ptr<const Pigment> readDensity(const Node& n, Refusals& refusals) {
   return p;
 }
 
+// `scattering { type, colour [eccentricity e] [extinction x] }` (POV-Ray 3.7 manual, "Scattering").
+Scattering readScattering(const Node& n) {
+  Scattering out;
+  size_t values = 0;
+  for (size_t i = 0; i < n.items.size(); ++i) {
+    const Item& it = n.items[i];
+    if (it.kind == Item::Kind::Value && values == 0) {
+      if (it.value.type != Value::Type::Float || it.value.v[0] < 1 || it.value.v[0] >= 6) {
+        throw ParseError(it.loc, "'scattering' needs a type from 1 to 5");
+      }
+      out.type = int(it.value.v[0]);
+      ++values;
+    } else if (it.kind == Item::Kind::Value && values == 1 && it.value.numeric()) {
+      out.color = colourOf(it.value).rgb;
+      ++values;
+    } else if (it.kind == Item::Kind::Keyword && (it.word == "eccentricity" || it.word == "extinction")) {
+      const Value* v = valueAfter(n, i);
+      if (!v || v->type != Value::Type::Float) throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a number");
+      (it.word == "eccentricity" ? out.eccentricity : out.extinction) = v->v[0];
+    } else {
+      throw ParseError(it.loc, "'scattering' takes a type, a colour, eccentricity and extinction");
+    }
+  }
+  if (values < 2) throw ParseError(n.loc, "'scattering' needs a type and a colour");
+  return out;
+}
+
 }  // namespace
 
 std::optional<Media> readMedia(const Node& n, Refusals& refusals) {
@@ -74,6 +101,10 @@ std::optional<Media> readMedia(const Node& n, Refusals& refusals) {
       media.densities.push_back(readDensity(*it.node, refusals));
       continue;
     }
+    if (it.kind == Item::Kind::Node && it.node->keyword == "scattering") {
+      media.scattering = readScattering(*it.node);
+      continue;
+    }
     if (it.kind != Item::Kind::Keyword) {
       refuse(it.loc, it.kind == Item::Kind::Node ? std::string(it.node->keyword) : "a value in media");
       continue;
@@ -91,6 +122,12 @@ std::optional<Media> readMedia(const Node& n, Refusals& refusals) {
       const double intervals = number(i, it, "a number of intervals");
       if (intervals < 1) throw ParseError(it.loc, "'intervals' needs at least 1");
       media.intervals = int(intervals);
+    } else if (w == "aa_level") {
+      const double level = number(i, it, "a number of levels");
+      if (level < 1) throw ParseError(it.loc, "'aa_level' needs at least 1");
+      media.aaLevel = int(level);
+    } else if (w == "aa_threshold") {
+      media.aaThreshold = number(i, it, "a threshold");
     } else if (w == "method") {
       if (number(i, it, "1, 2 or 3") != 3) refuse(it.loc, "media method other than 3");
     } else {

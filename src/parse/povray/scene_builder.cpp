@@ -739,6 +739,7 @@ class Builder {
       if (w == "media_interaction" || w == "media_attenuation") {
         const Value* v = valueAfter(n, i);
         if (w == "media_attenuation" && (!v || v->v[0] != 0)) mediaAttenuation_ = it.loc;
+        if (w == "media_interaction") l.mediaInteraction = !v || v->v[0] != 0;
       } else if (w == "shadowless") {
         l.shadowless = true;
       } else if (w == "spotlight" || w == "cylinder") {

@@ -157,7 +157,7 @@ TEST_CASE("povray scene: a fog's turbulence and its modifiers; the scene's noise
         "scene.pov:3:37: error: 'warp' is not supported yet");
 }
 
-TEST_CASE("povray scene: an interior's media and its densities; scattering and other methods are refused", "[povray][media]") {
+TEST_CASE("povray scene: an interior's media, its densities and scattering; other methods are refused", "[povray][media]") {
   const SceneDesc s = scene(R"(
 box { -1, 1 hollow pigment { rgbt 1 }
       interior { media { absorption <0.5, 1, 0> emission 0.2 intervals 3 samples 4, 8 method 3 } } }
@@ -188,8 +188,30 @@ sphere { x * 10, 1 }
   CHECK(dm.densities[3]->at(glm::dvec3(0, 0.5, 0)).rgb == Color(0.6f));
   CHECK(failure("box { -1, 1 interior { media { emission 1 density { spherical warp { toroidal } } } } }\n") ==
         "scene.pov:3:70: error: 'toroidal' is not supported yet");
-  CHECK(failure("box { -1, 1 interior { media { scattering { 1, 0.5 } } } }\n") ==
-        "scene.pov:3:32: error: 'scattering' is not supported yet");
+  // Scattering, its defaults, and method 3's adaptive sampling.
+  const SceneDesc sc = scene("sphere { 0, 1 interior { media { scattering { 5, rgb <0.1, 0.2, 0.3> eccentricity 0.4 }\n"
+                             "  aa_level 5 aa_threshold 0.2 } } }\n"
+                             "sphere { x * 10, 1 interior { media { scattering { 2, 0.5 extinction 0.25 } } } }\n"
+                             "light_source { 0, 1 media_interaction off }\n");
+  const Media& s5 = *sc.objects[0].material.extras->media;
+  REQUIRE(s5.scattering);
+  CHECK(s5.scattering->type == 5);
+  CHECK(s5.scattering->color == Color(0.1f, 0.2f, 0.3f));
+  CHECK(s5.scattering->eccentricity == 0.4);
+  CHECK(s5.scattering->extinction == 1);
+  CHECK(s5.aaLevel == 5);
+  CHECK(s5.aaThreshold == 0.2);
+  const Media& s2 = *sc.objects[1].material.extras->media;
+  CHECK(s2.scattering->type == 2);
+  CHECK(s2.scattering->eccentricity == 0);
+  CHECK(s2.scattering->extinction == 0.25);
+  CHECK(s2.aaLevel == 3);
+  CHECK(s2.aaThreshold == 0.1);
+  CHECK_FALSE(sc.lights[0].mediaInteraction);
+  CHECK(failure("box { -1, 1 interior { media { scattering { 6, 0.5 } } } }\n") ==
+        "scene.pov:3:45: error: 'scattering' needs a type from 1 to 5");
+  CHECK(failure("box { -1, 1 interior { media { scattering { 1 } } } }\n") ==
+        "scene.pov:3:32: error: 'scattering' needs a type and a colour");
   CHECK(failure("box { -1, 1 interior { media { emission 1 method 2 } } }\n") ==
         "scene.pov:3:43: error: 'media method other than 3' is not supported yet");
   CHECK(failure("box { -1, 1 interior { media { emission 1 } media { absorption 1 } } }\n") ==
