@@ -22,8 +22,10 @@ Camera<T>::Camera(const CameraDesc& desc, int width, int height)
       perspective_(desc.projection == &perspectiveProjection()),
       hasBlanks_(desc.projection->blanks),
       projection_(desc.projection->ray),
+      mesh_(desc.mesh),
       frame_{desc.location, desc.rightFollowsImage ? desc.right * (double(width) / height) : desc.right, desc.up,
-             glm::normalize(desc.lookAt - desc.location), desc.directionLength, desc.angle, desc.verticalAngle},
+             glm::normalize(desc.lookAt - desc.location), desc.directionLength, desc.angle, desc.verticalAngle,
+             mesh_.get(), width, height},
       blur_(desc.focalBlur),
       // The lens's radius is a quarter of the aperture: measured from the discs POV-Ray blurs points into.
       lensRadius_(T(desc.focalBlur.aperture / 4)),
@@ -66,6 +68,12 @@ template <class T> Ray<T> Camera<T>::throughLens(const Ray<T>& pinhole, glm::vec
 
 template <class T> Ray<T> Camera<T>::projected(T us, T vs) const {
   const std::optional<EyeRay> eye = projection_(frame_, double(us), double(vs));
+  if (!eye) return Ray<T>{origin_, Vec3<T>(0)};
+  return Ray<T>{Vec3<T>(eye->origin), Vec3<T>(glm::normalize(eye->dir))};
+}
+
+template <class T> Ray<T> Camera<T>::meshRay(int x, int y, int k) const {
+  const std::optional<EyeRay> eye = frame_.mesh->ray(x, height_ - 1 - y, k, width_, height_);
   if (!eye) return Ray<T>{origin_, Vec3<T>(0)};
   return Ray<T>{Vec3<T>(eye->origin), Vec3<T>(glm::normalize(eye->dir))};
 }

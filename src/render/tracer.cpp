@@ -123,6 +123,7 @@ template <class T>
 Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRecord>* trees,
                        std::vector<GatherSummary>* gathers) {
   if (camera.blurred()) return blurredPixel(camera, x, y);
+  if (camera.raysPerPixel() > 1) return meshPixel(camera, x, y);
   const int n = options_.samples;
   if (gathers) gathers->assign(size_t(options_.gi.enabled ? options_.gi.bounceCount() : 0), GatherSummary{});
   gathers_ = gathers;
@@ -144,17 +145,36 @@ Color Tracer<T>::pixel(const Camera<T>& camera, int x, int y, std::vector<RayRec
   return finished(sum / float(n * n));
 }
 
+// A mesh camera's pixel of several rays (manual, "Mesh projection"): the average of the rays its faces give,
+// black when none does.
+template <class T> Color Tracer<T>::meshPixel(const Camera<T>& camera, int x, int y) {
+  Color sum(0);
+  int rays = 0;
+  for (int k = 0; k < camera.raysPerPixel(); ++k) {
+    const Ray<T> ray = camera.meshRay(x, y, k);
+    if (Camera<T>::blank(ray)) continue;
+    Path path;
+    path.key = pixelKey(options_.gi.seed, x, y, k);
+    ++counts_.eye;
+    raysLeft_ = treeRays_ - 1;
+    sampleRaysLeft_ = kSampleRays - 1;
+    sum += trace(ray, RayRecord::Kind::Primary, path, nullptr).color;
+    ++rays;
+  }
+  return finished(rays > 0 ? sum / float(rays) : Color(0));
+}
+
 template <class T> Color Tracer<T>::raised(const Color& c) const {
   const float g = conventions_.gamma;
   return {std::pow(std::max(c.r, 0.0f), g), std::pow(std::max(c.g, 0.0f), g), std::pow(std::max(c.b, 0.0f), g)};
 }
 
 template <class T> const Color* Tracer<T>::tile(const Camera<T>& camera, int x0, int y0, int x1, int y1) {
-  if (camera.blurred()) {
+  if (camera.blurred() || camera.raysPerPixel() > 1) {
     std::vector<Color>& colors = batches_[0].colors;
     colors.clear();
     for (int y = y0; y < y1; ++y) {
-      for (int x = x0; x < x1; ++x) colors.push_back(blurredPixel(camera, x, y));
+      for (int x = x0; x < x1; ++x) colors.push_back(camera.blurred() ? blurredPixel(camera, x, y) : meshPixel(camera, x, y));
     }
     return colors.data();
   }

@@ -19,6 +19,7 @@ const std::vector<ProjectionKind>& projectionKinds() {
       {"fisheye", 0, 90, false, true, fisheyeRay},
       {"omnimax", 0, 90, false, true, omnimaxRay},
       {"panoramic", 0, 90, false, false, panoramicRay},
+      {"mesh_camera", 0, 90, false, true, meshCameraRay},
   };
   return kinds;
 }

@@ -26,6 +26,10 @@ template <class T> class Camera {
   // Whether a ray from ray() is one of the picture's points where the projection draws nothing (outside a
   // fisheye's circle): its direction is zero, and POV-Ray leaves its pixel black.
   static bool blank(const Ray<T>& ray) { return ray.dir == Vec3<T>(0); }
+  // The rays a pixel averages: a mesh camera's rays_per_pixel, 1 for every other camera.
+  int raysPerPixel() const { return frame_.mesh ? frame_.mesh->raysPerPixel : 1; }
+  // Ray k of a mesh camera's pixel (x, y), blank where no face gives one.
+  Ray<T> meshRay(int x, int y, int k) const;
   // Whether any of the picture's points can be blank.
   bool hasBlanks() const { return hasBlanks_; }
   // The eye ray of pixel (x, y), through the pixel's own sample point (CameraDesc::pixelOffset).
@@ -61,6 +65,7 @@ template <class T> class Camera {
   Vec3<T> origin_, right_, up_, forward_;
   bool perspective_, hasBlanks_;
   ProjectionRay projection_;
+  std::shared_ptr<const MeshCamera> mesh_;  // held here: frame_ points into it
   ProjectionFrame frame_;
   CameraDesc::FocalBlur blur_;
   T lensRadius_, focalDistance_;

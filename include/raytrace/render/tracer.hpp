@@ -49,6 +49,8 @@ template <class T> class Tracer {
   // The colour of pixel (x, y) under a camera's focal blur (render/focal_blur.cpp): lens samples until
   // POV-Ray's confidence test holds or the camera's most are taken.
   Color blurredPixel(const Camera<T>& camera, int x, int y);
+  // The colour of pixel (x, y) of a mesh camera with several rays a pixel.
+  Color meshPixel(const Camera<T>& camera, int x, int y);
 
   // With --gi-cache the first bounce's gathered light is looked up in `cache` (docs/gi.md), which must outlive
   // the tracer; a point no record covers gathers as without it and, if `made` is given, appends its record

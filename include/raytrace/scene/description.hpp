@@ -33,6 +33,7 @@ struct CameraDesc {
   const ProjectionKind* projection = &perspectiveProjection();
   // Radians, for the projections that take them; the direction's length as written (panoramic reads it).
   double angle = 0, verticalAngle = 0, directionLength = 1;
+  std::shared_ptr<const MeshCamera> mesh;  // the mesh_camera's faces, with the mesh_camera projection
   // POV-Ray's focal blur (manual, "Focal Blur"): on when aperture and maxSamples are both positive.
   struct FocalBlur {
     double aperture = 0;

@@ -148,20 +148,25 @@ Value Interpreter::functionValue(const SourceLoc& at) {
   }
   expect("{", "to begin the function");
   f->body.name = frames_.back().file->name;
-  const bool pattern = peek().isWord("pattern"), pigment = peek().isWord("pigment");
+  const bool pattern = peek().isWord("pattern"), pigment = peek().isWord("pigment"),
+             transform = peek().isWord("transform"), spline = peek().isWord("spline");
   const Frame& frame = frames_.back();
-  if ((pattern || pigment) && frame.file->tokens[frame.pos + 1].is("{")) {
+  if ((pattern || pigment || transform || spline) && frame.file->tokens[frame.pos + 1].is("{")) {
     SourceLoc patternAt;
     next(&patternAt);
     next();
-    const std::shared_ptr<const Node> node = block(pattern ? "pattern" : "pigment", patternAt, "}");
+    const std::string_view word = pattern ? "pattern" : pigment ? "pigment" : transform ? "transform" : "spline";
+    const std::shared_ptr<const Node> node = block(word, patternAt, "}");
     expect("}", "to end the function");
     f->body.tokens.push_back(Token{});
-    f->why = pattern ? "pattern in a function" : "pigment in a function";
+    f->why = std::string(word) + " in a function";
+    if (spline) f->spline = node;
     f->whyAt = patternAt;
     f->colour = pigment;
+    f->transforms = transform;
     if (pattern && options_.patternFunction) options_.patternFunction(*node, *f);
     if (pigment && options_.pigmentFunction) options_.pigmentFunction(*node, *f);
+    if (transform && options_.transformFunction) options_.transformFunction(*node, *f);
     Value v;
     v.type = Value::Type::Function;
     v.ref = f;

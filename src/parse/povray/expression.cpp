@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "interpreter_state.hpp"
+#include "raytrace/parse/povray/spline.hpp"
 
 namespace rt::povray {
 
@@ -386,13 +387,45 @@ Value Interpreter::identifierValue(const Token& t, const SourceLoc& at) {
     if (peekOperator("(")) return callFunction(*f, name, at);
   }
   if (v->type == Value::Type::Node && static_cast<const Node&>(*v->ref).keyword == "spline" && peekOperator("(")) {
-    fail(at, "calling a spline is not supported yet");
+    return callSpline(static_cast<const Node&>(*v->ref));
   }
   if (v->type == Value::Type::None) fail(at, "'" + std::string(name) + "' has no value");
   return *v;
 }
 
+Value Interpreter::callSpline(const Node& spline) {
+  expect("(", "before the spline's parameter");
+  const SourceLoc tAt = here();
+  const Value t = expression();
+  if (t.type != Value::Type::Float) fail(tAt, std::string("a spline's parameter must be a float, found a ") + typeName(t));
+  const SplinePoints points = splinePoints(spline);
+  SplineKind kind = points.kind;
+  if (peekOperator(",")) {
+    next();
+    SourceLoc kindAt;
+    const Token word = next(&kindAt);
+    const std::optional<SplineKind> named = splineKindNamed(word.text);
+    if (!named) fail(kindAt, "expected a spline type, found " + quote(word.text));
+    kind = *named;
+  }
+  expect(")", "after the spline's parameter");
+  const std::array<double, 5> p = splineAt(points, t.v[0], kind);
+  return points.size == 1 ? Value::number(p[0]) : Value::vector(p, points.size);
+}
+
 Value Interpreter::callFunction(const FunctionDef& f, std::string_view name, const SourceLoc& at) {
+  // A spline function's value is its spline's at the first argument.
+  if (f.spline) {
+    const SourceLoc tAt = here();
+    std::vector<Value> args;
+    readArguments(args);
+    if (args.empty() || args.size() > 3 || args[0].type != Value::Type::Float) {
+      fail(tAt, "function '" + std::string(name) + "' takes the spline's parameter");
+    }
+    const SplinePoints points = splinePoints(*f.spline);
+    const std::array<double, 5> p = splineAt(points, args[0].v[0], points.kind);
+    return points.size == 1 ? Value::number(p[0]) : Value::vector(p, points.size);
+  }
   const Arguments arguments(*this);
   const std::vector<Value>& args = arguments.values;
   // A pigment function's value is its colour at the point.
@@ -407,6 +440,21 @@ Value Interpreter::callFunction(const FunctionDef& f, std::string_view name, con
     }
     const Rgbft c = f.pigment->at({p[0], p[1], p[2]});
     return Value::colour({c.rgb.r, c.rgb.g, c.rgb.b, c.filter, c.transmit});
+  }
+  // A transform function's value is the point moved (POV-Ray's vtransform in transforms.inc calls one).
+  if (f.transform) {
+    if (args.size() > 3) {
+      fail(at, "function '" + std::string(name) + "' takes 3 arguments, found " + std::to_string(args.size()));
+    }
+    double p[3] = {0, 0, 0};
+    for (size_t i = 0; i < args.size(); ++i) {
+      if (args[i].type != Value::Type::Float) fail(at, "function arguments must be floats");
+      p[i] = args[i].v[0];
+    }
+    const std::array<double, 12>& m = *f.transform;
+    std::array<double, 5> moved{};
+    for (size_t j = 0; j < 3; ++j) moved[j] = p[0] * m[j] + p[1] * m[3 + j] + p[2] * m[6 + j] + m[9 + j];
+    return Value::vector(moved, 3);
   }
   const size_t params = f.compiled ? f.compiled->params() : f.params.size();
   if (args.size() > params) {

@@ -238,6 +238,7 @@ class Compiler {
     }
     if (v.type == Value::Type::Function && at("(")) {
       const auto& callee = static_cast<const FunctionValue&>(*v.ref);
+      if (!callee.compiled && (callee.spline || callee.transforms)) throw NotCompiled{callee.why, &t, callee.whyAt};
       if (!callee.compiled) fail(std::string(name), &t);
       const size_t n = arguments();
       if (n > callee.compiled->params()) fail(std::string(name) + " with too many arguments", &t);

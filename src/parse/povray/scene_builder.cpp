@@ -119,6 +119,25 @@ class Builder {
     into.pigment = p;
   }
 
+  // A transform function's matrix, in `matrix`'s 12 numbers.
+  void transformFunction(const Node& transform, FunctionValue& into) {
+    Refusals own = refusals_;
+    own.first.reset();
+    std::vector<TransformStep> steps;
+    readTransformBlock(transform, steps, own);
+    if (own.first) {
+      into.why = own.first->what;
+      into.whyAt = own.first->loc;
+      return;
+    }
+    const glm::dmat4 m = composeTransforms<double>(steps);
+    auto rows = std::make_shared<std::array<double, 12>>();
+    for (size_t i = 0; i < 4; ++i) {
+      for (size_t j = 0; j < 3; ++j) (*rows)[i * 3 + j] = m[int(i)][int(j)];
+    }
+    into.transform = std::move(rows);
+  }
+
   // The runtime object of a declared object, made once: scenes call trace() in loops. Its light sources are
   // not part of the scene, and a refused part is reported once the file is read.
   const Object<double>& runtimeObject(const std::shared_ptr<const Node>& n) {
@@ -388,7 +407,10 @@ class Builder {
     const std::string_view k = n.keyword;
     const size_t firstLight = scene_.lights.size();
     size_t i = 0;
-    if (k == "object") {
+    // `mesh { Name … }` is the declared mesh under what follows, as `object { Name … }` is.
+    const bool namedMesh = (k == "mesh" || k == "mesh2") && !n.items.empty() && n.items[0].kind == Item::Kind::Node &&
+                           (n.items[0].node->keyword == "mesh" || n.items[0].node->keyword == "mesh2");
+    if (k == "object" || namedMesh) {
       if (i >= n.items.size() || n.items[i].kind != Item::Kind::Node) throw ParseError(n.loc, "'object' needs an object identifier");
       if (!object(*n.items[i++].node, o, s)) return false;
     } else {
@@ -495,7 +517,7 @@ class Builder {
     if (o.texture || std::holds_alternative<CsgDesc>(o.shape) || std::holds_alternative<MeshDesc>(o.shape)) {
       moveTextures(o, glm::inverse(composeTransforms<double>(own)));
     }
-    if (textureFrom || k != "object") surface(o, s, std::vector(o.transforms.begin() + long(textureFrom.value_or(o.transforms.size())), o.transforms.end()));
+    if (textureFrom || (k != "object" && !namedMesh)) surface(o, s, std::vector(o.transforms.begin() + long(textureFrom.value_or(o.transforms.size())), o.transforms.end()));
     if (textureFrom) o.textured = true;
     passTextureDown(o);
     refuseUvMapping(o, n.loc);
@@ -588,6 +610,7 @@ class Builder {
     bool angleGiven = false, sizeGiven = false;
     std::vector<TransformStep> steps;
     CameraDesc::FocalBlur blur;
+    std::shared_ptr<MeshCamera> mesh;
   };
 
   // POV-Ray's camera: defaults, then angle sets the direction's length, look_at turns direction, right and up
@@ -638,6 +661,70 @@ class Builder {
     c.focalBlur = k.blur;
     c.focalBlur.focalPoint = glm::dvec3(m * glm::dvec4(k.blur.focalPoint, 1));
     c.loc = n.loc;
+    if (k.mesh) {
+      // A mesh camera reads only the z of the location and of the direction (manual, "Mesh projection").
+      k.mesh->offset = k.location.z;
+      k.mesh->reversed = k.direction.z < -1e-6;
+      c.mesh = k.mesh;
+    }
+  }
+
+  // `mesh_camera { rays distribution [max_distance] mesh { … } … [smooth] }`: the meshes' faces in world space.
+  void meshCamera(const Node& n, PovCamera& k) {
+    auto cam = std::make_shared<MeshCamera>();
+    std::vector<double> numbers;
+    for (size_t i = 0; i < n.items.size(); ++i) {
+      const Item& it = n.items[i];
+      if (it.kind == Item::Kind::Value && it.value.type == Value::Type::Float) {
+        numbers.push_back(it.value.v[0]);
+        if (numbers.size() == 3 && numbers[2] > 1e-6) refuse(it.loc, "mesh_camera's max distance");
+        if (numbers.size() > 3) throw ParseError(it.loc, "'mesh_camera' takes at most three numbers before its meshes");
+      } else if (it.kind == Item::Kind::Keyword && it.word == "smooth") {
+        cam->smooth = true;
+      } else if (it.kind == Item::Kind::Node && (it.node->keyword == "mesh" || it.node->keyword == "mesh2")) {
+        ObjectDesc o;
+        if (!object(*it.node, o)) continue;
+        const auto* mesh = std::get_if<MeshDesc>(&o.shape);
+        if (!mesh) throw ParseError(it.loc, "a mesh_camera's 'mesh' must be a mesh or mesh2");
+        cam->meshes.push_back(meshCameraFaces(*mesh->data, o.worldFromObject()));
+      } else {
+        refuseItem(it, "mesh_camera");
+      }
+    }
+    if (numbers.size() < 2) throw ParseError(n.loc, "'mesh_camera' needs the rays per pixel and the distribution type");
+    cam->raysPerPixel = int(numbers[0]);
+    cam->distribution = int(numbers[1]);
+    if (cam->raysPerPixel < 1) throw ParseError(n.loc, "a mesh_camera needs at least 1 ray per pixel");
+    if (cam->distribution < 0 || cam->distribution > 3 || cam->distribution != numbers[1]) {
+      throw ParseError(n.loc, "a mesh_camera's distribution type must be 0, 1, 2 or 3");
+    }
+    if (cam->meshes.empty()) throw ParseError(n.loc, "a mesh_camera needs a mesh");
+    if (cam->distribution == 0 && cam->meshes.size() < size_t(cam->raysPerPixel)) {
+      throw ParseError(n.loc, "a mesh_camera of distribution 0 needs a mesh for each ray per pixel");
+    }
+    if (cam->distribution >= 2 && cam->raysPerPixel != 1) {
+      throw ParseError(n.loc, "a mesh_camera of distribution " + std::to_string(cam->distribution) +
+                                  " takes 1 ray per pixel");
+    }
+    k.projection = projectionNamed("mesh_camera");
+    k.mesh = std::move(cam);
+  }
+
+  // A mesh's faces under the matrix m: corners, corner normals (by the inverse transpose) and uv vectors.
+  static std::vector<MeshCamera::Face> meshCameraFaces(const MeshData& data, const glm::dmat4& m) {
+    const glm::dmat3 normals = glm::transpose(glm::inverse(glm::dmat3(m)));
+    std::vector<MeshCamera::Face> faces;
+    faces.reserve(data.faces.size());
+    for (const MeshData::Face& f : data.faces) {
+      MeshCamera::Face face{};
+      for (size_t c = 0; c < 3; ++c) {
+        face.corners[c] = glm::dvec3(m * glm::dvec4(data.vertices[f.v[c]], 1));
+        if (f.n[c] >= 0) face.normals[c] = normals * data.normals[size_t(f.n[c])];
+        if (f.uv[c] >= 0) face.uv[c] = data.uvs[size_t(f.uv[c])];
+      }
+      faces.push_back(face);
+    }
+    return faces;
   }
 
   void collectCamera(const Node& n, PovCamera& k) {
@@ -645,6 +732,14 @@ class Builder {
       const Item& it = n.items[i];
       if (it.kind == Item::Kind::Node && it.node->keyword == "camera") {
         collectCamera(*it.node, k);
+        continue;
+      }
+      if (it.kind == Item::Kind::Node && it.node->keyword == "mesh_camera") {
+        meshCamera(*it.node, k);
+        continue;
+      }
+      if (it.kind == Item::Kind::Keyword && it.word == "smooth" && k.mesh) {
+        k.mesh->smooth = true;
         continue;
       }
       if (transformItem(n, i, k.steps)) continue;
@@ -1017,6 +1112,7 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   };
   io.patternFunction = [&builderOf](const Node& pattern, FunctionValue& into) { builderOf->patternFunction(pattern, into); };
   io.pigmentFunction = [&builderOf](const Node& pigment, FunctionValue& into) { builderOf->pigmentFunction(pigment, into); };
+  io.transformFunction = [&builderOf](const Node& t, FunctionValue& into) { builderOf->transformFunction(t, into); };
   Interpreter interpreter(io);
   for (const std::string& d : options.declares) {
     const size_t eq = d.find('=');

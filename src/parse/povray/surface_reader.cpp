@@ -27,15 +27,29 @@ const Value* valueAfter(const Node& n, size_t& i) {
   return nullptr;
 }
 
-namespace {
-
 void readTransformBlock(const Node& n, std::vector<TransformStep>& steps, Refusals& refusals) {
+  std::vector<TransformStep> own;
+  bool inverse = false;
   for (size_t i = 0; i < n.items.size(); ++i) {
-    if (!readTransform(n, i, steps, refusals)) refusals.refuse(n.items[i], "transform");
+    const Item& it = n.items[i];
+    if (it.kind == Item::Kind::Keyword && it.word == "inverse") {
+      inverse = !inverse;
+    } else if (!readTransform(n, i, own, refusals)) {
+      refusals.refuse(it, "transform");
+    }
   }
+  if (!inverse) {
+    steps.insert(steps.end(), own.begin(), own.end());
+    return;
+  }
+  // `inverse` anywhere in the block undoes the whole block (the manual's §3.3.1.12): one matrix step.
+  const glm::dmat4 m = glm::inverse(composeTransforms<double>(own));
+  auto rows = std::make_shared<std::array<double, 12>>();
+  for (size_t r = 0; r < 4; ++r) {
+    for (size_t c = 0; c < 3; ++c) (*rows)[r * 3 + c] = m[int(r)][int(c)];
+  }
+  steps.push_back({TransformStep::Kind::Matrix, glm::dvec3(0), std::move(rows)});
 }
-
-}  // namespace
 
 bool readTurbulence(const Node& n, size_t& i, Turbulence& t) {
   const Item& it = n.items[i];

@@ -46,6 +46,8 @@ struct InterpreterOptions {
   std::function<void(const Node& pattern, FunctionValue& into)> patternFunction;
   // A pigment function, `function { pigment { … } }`: its pigment in `into.pigment`, or null with `into.why`.
   std::function<void(const Node& pigment, FunctionValue& into)> pigmentFunction;
+  // A transform function, `function { transform { … } }`: its matrix in `into.transform`, or null with `into.why`.
+  std::function<void(const Node& transform, FunctionValue& into)> transformFunction;
 };
 
 class Interpreter {
@@ -199,6 +201,8 @@ class Interpreter {
   double truth(const Value& v, const SourceLoc& at);
   Value binary(char op, Value a, Value b, const SourceLoc& at);
   Value callFunction(const FunctionDef& f, std::string_view name, const SourceLoc& at);
+  // A spline's value, `S(t)` or `S(t, TYPE)`: the arguments read here.
+  Value callSpline(const Node& spline);
 
   // Built-in functions (builtins.cpp).
   Value builtin(std::string_view name, const SourceLoc& at);

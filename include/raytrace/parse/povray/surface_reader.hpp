@@ -59,6 +59,8 @@ const Value* valueAfter(const Node& n, size_t& i);
 bool readTurbulence(const Node& n, size_t& i, Turbulence& t);
 // translate, rotate, scale and transform items as steps; false for any other item.
 bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, Refusals& refusals);
+// A `transform { … }` block's items as steps.
+void readTransformBlock(const Node& n, std::vector<TransformStep>& steps, Refusals& refusals);
 
 // A finish with POV-Ray 3.7's defaults.
 struct PovFinish {

@@ -100,6 +100,12 @@ struct FunctionValue : Shared {
   // component of (`F(x, y, z).red`); `compiled` is then null, and so is `pigment` if the pigment was refused.
   bool colour = false;
   std::shared_ptr<const Pigment> pigment;
+  // A transform function, `function { transform { … } }`: a vector function, the image of the point (x, y, z),
+  // x·row 0 + y·row 1 + z·row 2 + row 3 of these 12 numbers (as `matrix` writes them); null if it was refused.
+  bool transforms = false;
+  std::shared_ptr<const std::array<double, 12>> transform;
+  // A spline function, `function { spline { … } }`: the spline, whose value at the first argument it gives.
+  std::shared_ptr<const Node> spline;
   std::string why;
   SourceLoc whyAt;
   double width = 0, height = 0;  // an image function's size, `function W, H { … }` (a height field's); else 0
