@@ -184,7 +184,7 @@ Value Interpreter::functionValue(const SourceLoc& at) {
                                                       "initial_clock", "final_clock", "initial_frame", "final_frame",
                                                       "image_width", "image_height", "version"};
     if (std::find(std::begin(kConstants), std::end(kConstants), name) != std::end(kConstants)) {
-      constant = builtin(name, at);
+      constant = builtin(name, builtinIndex(name), at);
       return &constant;
     }
     const Slot* slot = find(name);

@@ -64,8 +64,6 @@ double Interpreter::truth(const Value& v, const SourceLoc& at) {
   return std::abs(v.v[0]) > kEpsilon ? 1 : 0;
 }
 
-Value Interpreter::expression() { return sum(); }
-
 Value Interpreter::fullExpression() {
   const SourceLoc at = here();
   Value c = logical();
@@ -103,7 +101,7 @@ Value Interpreter::relation() {
     const SourceLoc bAt = here();
     const Value b = sum();
     if (a.type == Value::Type::String && b.type == Value::Type::String) {
-      const int d = a.s.compare(b.s);
+      const int d = a.str().compare(b.str());
       a = Value::number(op == "<" ? d < 0 : op == "<=" ? d <= 0 : op == "=" ? d == 0 : op == "!=" ? d != 0 : op == ">=" ? d >= 0 : d > 0);
       continue;
     }
@@ -141,7 +139,7 @@ Value Interpreter::sum() {
   }
 }
 
-Value Interpreter::product() {
+inline Value Interpreter::product() {
   Value a = unary();
   for (;;) {
     const char op = peekSymbol();
@@ -170,7 +168,7 @@ Value Interpreter::unary() {
   return postfix();
 }
 
-Value Interpreter::postfix() {
+inline Value Interpreter::postfix() {
   Value v = primary();
   while (peekSymbol() == '.') {
     SourceLoc at;
@@ -251,7 +249,7 @@ Value Interpreter::primary() {
   const std::string_view w = t.text;
   if (t.startsValue && !isColourWord(w)) {
     next();
-    return builtin(w, at);
+    return builtin(w, t.builtin, at);
   }
   if (isColourWord(w) || w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") {
     return colour(at);

@@ -25,7 +25,7 @@ std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) 
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     if (it.kind == Item::Kind::Value && it.value.type == Value::Type::String && name.empty()) {
-      name = it.value.s;
+      name = it.value.str();
       nameAt = it.loc;
       continue;
     }

@@ -263,7 +263,7 @@ class Builder {
       const Item& it = take(what);
       if (it.value.type != Value::Type::String) throw ParseError(it.loc, std::string("expected a string for ") + what + ", found a " + typeName(it.value));
       // POV-Ray's default charset, ascii, turns every byte past 127 into a blank; utf8 and sys keep them.
-      std::string s = it.value.s;
+      std::string s = it.value.str();
       if (b_.asciiStrings_) std::replace_if(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) > 127; }, ' ');
       return s;
     }
@@ -538,7 +538,9 @@ class Builder {
     o.material = constantMaterial(s);
     o.finish = writtenFinish(s);
     o.texture = s.patterned() ? std::make_shared<const Texture>(bounded(makeTexture(s, after))) : nullptr;
-    moveMedia(o.material, glm::inverse(composeTransforms<double>(after)));
+    // The inverse only for a medium with densities to move: a million spheres need none.
+    const auto& media = o.material.extras->media;
+    if (media && !media->densities.empty()) moveMedia(o.material, glm::inverse(composeTransforms<double>(after)));
   }
 
   // A medium's densities move with the object as a texture does; `undo` as in moveTextures.

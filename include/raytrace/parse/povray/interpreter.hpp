@@ -180,14 +180,16 @@ class Interpreter {
   void assign(std::string_view name, Value value, size_t level);
 
   // Expressions (expression.cpp).
-  Value expression();   // arithmetic: + - * / and unary operators
+  Value expression() { return sum(); }  // arithmetic: + - * / and unary operators
   Value fullExpression();  // inside parentheses: also relations, & | and ?:
   Value logical();
   Value relation();
   Value sum();
-  Value product();
+  // Forced inline into sum and unary: a scene's operands go down every level, and each call costs more than
+  // the level's own work.
+  [[gnu::always_inline]] Value product();
   Value unary();
-  Value postfix();
+  [[gnu::always_inline]] Value postfix();
   Value primary();
   Value vectorLiteral(const SourceLoc& at);
   Value coefficientList(const SourceLoc& at);
@@ -199,7 +201,8 @@ class Interpreter {
   Value callFunction(const FunctionDef& f, std::string_view name, const SourceLoc& at);
 
   // Built-in functions (builtins.cpp).
-  Value builtin(std::string_view name, const SourceLoc& at);
+  // `index` is the name's builtinIndex.
+  Value builtin(std::string_view name, std::uint8_t index, const SourceLoc& at);
   // A call's `(a, b …)`, read into a vector an earlier call has given back: calls in a loop allocate none.
   struct Arguments {
     Interpreter& in;
