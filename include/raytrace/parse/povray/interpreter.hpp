@@ -132,7 +132,16 @@ class Interpreter {
     return t.kind == Token::Kind::Directive ? peekSymbolAfterDirectives() : 0;
   }
   char peekSymbolAfterDirectives();
-  void expect(std::string_view symbol, const char* what);
+  // The symbol read inline when it is the very next token (no directive or macro can be in the way of a
+  // symbol), else by the out-of-line part, which carries out what comes first or fails.
+  void expect(std::string_view symbol, const char* what) {
+    Frame& f = frames_.back();
+    const Token& t = f.file->tokens[f.pos];
+    if (!t.is(symbol)) return expectExpanding(symbol, what);
+    ++f.pos;
+    if (++tokensRead_ == options_.maxTokens) tooManyTokens(t);
+  }
+  void expectExpanding(std::string_view symbol, const char* what);
   std::string_view expectWord(const char* what, SourceLoc* loc = nullptr);
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
   // One more level of nesting for as long as it lives; too deep a nesting is an error, not a stack overflow.
