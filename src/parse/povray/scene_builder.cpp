@@ -491,8 +491,10 @@ class Builder {
     if (textureFrom) o.textured = true;
     passTextureDown(o);
     refuseUvMapping(o, n.loc);
-    const glm::dmat4 m = composeTransforms<double>(own);
-    for (size_t l = firstLight; l < scene_.lights.size(); ++l) moveLight(scene_.lights[l], m);
+    if (scene_.lights.size() > firstLight) {
+      const glm::dmat4 m = composeTransforms<double>(own);
+      for (size_t l = firstLight; l < scene_.lights.size(); ++l) moveLight(scene_.lights[l], m);
+    }
     return true;
   }
 
