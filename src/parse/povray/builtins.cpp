@@ -72,10 +72,16 @@ void Interpreter::readArguments(std::vector<Value>& args) {
   }
   for (;;) {
     args.push_back(expression());
-    SourceLoc sepAt;
-    const Token sep = next(&sepAt);
-    if (sep.is(")")) return;
-    if (!sep.is(",")) fail(sepAt, "expected ',' or ')' between arguments, found " + quote(sep.text));
+    // The separator by reference, and its place only for the message: this runs for every argument.
+    const Token& sep = peek();
+    const bool close = sep.is(")");
+    if (!close && !sep.is(",")) {
+      SourceLoc sepAt;
+      next(&sepAt);
+      fail(sepAt, "expected ',' or ')' between arguments, found " + quote(sep.text));
+    }
+    next();
+    if (close) return;
   }
 }
 

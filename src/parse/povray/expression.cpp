@@ -264,11 +264,20 @@ Value Interpreter::vectorLiteral(const SourceLoc& at) {
   std::array<double, 5> c{};
   int n = 0;
   for (;;) {
-    const SourceLoc cAt = here();
-    const Value v = expression();
-    if (v.type != Value::Type::Float) fail(cAt, std::string("a vector's component must be a float, found a ") + typeName(v));
+    // A lone number, as sum() would read it, without making a Value.
+    const Token& t = peek();
+    const Frame& f = frames_.back();
+    double x = 0;
+    if (t.kind == Token::Kind::Number && !continuesOperand(f.file->tokens[f.pos + 1])) {
+      x = next().number;
+    } else {
+      const SourceLoc cAt = locOf(t);
+      const Value v = expression();
+      if (v.type != Value::Type::Float) fail(cAt, std::string("a vector's component must be a float, found a ") + typeName(v));
+      x = v.v[0];
+    }
     // Longer lists (a matrix, a polynomial's coefficients) keep their first five: only blocks take them.
-    if (n < 5) c[size_t(n)] = v.v[0];
+    if (n < 5) c[size_t(n)] = x;
     ++n;
     if (peekOperator(",")) next();  // the commas may be left out, and one may end the list
     if (peekOperator(">")) break;
