@@ -189,7 +189,7 @@ Value Interpreter::functionValue(const SourceLoc& at) {
                                                       "initial_clock", "final_clock", "initial_frame", "final_frame",
                                                       "image_width", "image_height", "version"};
     if (std::find(std::begin(kConstants), std::end(kConstants), name) != std::end(kConstants)) {
-      constant = builtin(name, at);
+      constant = builtin(name, builtinIndex(name), at);
       return &constant;
     }
     const Slot* slot = find(name);
@@ -214,13 +214,15 @@ std::shared_ptr<const Node> Interpreter::block(std::string_view keyword, const S
       next();
       return node;
     }
-    Item item;
-    item.loc = locOf(t);
     if (t.kind == Token::Kind::End) fail(at, "this '" + std::string(keyword) + "' has no closing '" + std::string(close) + "'");
     if (t.is(",") || t.is(";")) {
       next();
       continue;
     }
+    const bool coefficients = t.is("<") && coefficientsHere(keyword, node->items);
+    // Made in place: an item (a Value and more) is too large to build and then move for every value of a scene.
+    Item& item = node->items.emplace_back();
+    item.loc = locOf(t);
     if (t.is("[")) {
       next();
       item.kind = Item::Kind::Node;
@@ -233,7 +235,7 @@ std::shared_ptr<const Node> Interpreter::block(std::string_view keyword, const S
       // A text's font selector (`internal 1`), not the built-in function of that name.
       item.word = next().text;
       item.kind = Item::Kind::Keyword;
-    } else if (t.is("<") && coefficientsHere(keyword, node->items)) {
+    } else if (coefficients) {
       item.kind = Item::Kind::Value;
       item.value = coefficientList(item.loc);
     } else if (startsExpression(t)) {
@@ -262,7 +264,6 @@ std::shared_ptr<const Node> Interpreter::block(std::string_view keyword, const S
         fail(item.loc, "objects or blocks nested more than " + std::to_string(kMaxNesting) + " deep");
       }
     }
-    node->items.push_back(std::move(item));
   }
 }
 

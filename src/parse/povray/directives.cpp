@@ -135,14 +135,14 @@ void Interpreter::directive(std::string_view name, const SourceLoc& at) {
     if (text.type != Value::Type::String) fail(at, "#" + std::string(name) + " needs a string, found a " + typeName(text));
     if (options_.debug) {
       if (name == "warning") {
-        *options_.debug << at.str() << ": warning: " << text.s << "\n";
+        *options_.debug << at.str() << ": warning: " << text.str() << "\n";
       } else {
-        *options_.debug << text.s;
+        *options_.debug << text.str();
       }
     }
   } else if (name == "error") {
     const Value text = expression();
-    fail(at, text.type == Value::Type::String ? text.s : std::string("#error"));
+    fail(at, text.type == Value::Type::String ? text.str() : std::string("#error"));
   } else if (name == "fopen") {
     fopenDirective(at);
   } else if (name == "fclose") {
@@ -208,15 +208,15 @@ void Interpreter::includeDirective(const SourceLoc& at) {
   holdFile_ = false;
   if (name.type != Value::Type::String) fail(at, "#include needs a file name, found a " + std::string(typeName(name)));
   // A file the scene wrote earlier is what POV-Ray, which writes at once, would find.
-  if (const DataFileDesc* data = written(name.s)) {
+  if (const DataFileDesc* data = written(name.str())) {
     texts_.push_back(std::make_unique<std::string>(data->text));
   } else {
-    const std::string path = findFile(name.s);
-    if (path.empty()) fail(at, "cannot find the include file " + quote(name.s));
+    const std::string path = findFile(name.str());
+    if (path.empty()) fail(at, "cannot find the include file " + quote(name.str()));
     texts_.push_back(std::make_unique<std::string>());
-    if (!readBytes(path, *texts_.back())) fail(at, "cannot read the include file " + quote(name.s));
+    if (!readBytes(path, *texts_.back())) fail(at, "cannot read the include file " + quote(name.str()));
   }
-  pushFile(name.s, *texts_.back(), &at);
+  pushFile(name.str(), *texts_.back(), &at);
 }
 
 std::string Interpreter::findFile(const std::string& name) {

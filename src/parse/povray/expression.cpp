@@ -65,8 +65,6 @@ double Interpreter::truth(const Value& v, const SourceLoc& at) {
   return std::abs(v.v[0]) > kEpsilon ? 1 : 0;
 }
 
-Value Interpreter::expression() { return sum(); }
-
 Value Interpreter::fullExpression() {
   const SourceLoc at = here();
   Value c = logical();
@@ -104,7 +102,7 @@ Value Interpreter::relation() {
     const SourceLoc bAt = here();
     const Value b = sum();
     if (a.type == Value::Type::String && b.type == Value::Type::String) {
-      const int d = a.s.compare(b.s);
+      const int d = a.str().compare(b.str());
       a = Value::number(op == "<" ? d < 0 : op == "<=" ? d <= 0 : op == "=" ? d == 0 : op == "!=" ? d != 0 : op == ">=" ? d >= 0 : d > 0);
       continue;
     }
@@ -142,7 +140,7 @@ Value Interpreter::sum() {
   }
 }
 
-Value Interpreter::product() {
+inline Value Interpreter::product() {
   Value a = unary();
   for (;;) {
     const char op = peekSymbol();
@@ -171,7 +169,7 @@ Value Interpreter::unary() {
   return postfix();
 }
 
-Value Interpreter::postfix() {
+inline Value Interpreter::postfix() {
   Value v = primary();
   while (peekSymbol() == '.') {
     SourceLoc at;
@@ -252,7 +250,7 @@ Value Interpreter::primary() {
   const std::string_view w = t.text;
   if (t.startsValue && !isColourWord(w)) {
     next();
-    return builtin(w, at);
+    return builtin(w, t.builtin, at);
   }
   if (isColourWord(w) || w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") {
     return colour(at);
@@ -267,11 +265,20 @@ Value Interpreter::vectorLiteral(const SourceLoc& at) {
   std::array<double, 5> c{};
   int n = 0;
   for (;;) {
-    const SourceLoc cAt = here();
-    const Value v = expression();
-    if (v.type != Value::Type::Float) fail(cAt, std::string("a vector's component must be a float, found a ") + typeName(v));
+    // A lone number, as sum() would read it, without making a Value.
+    const Token& t = peek();
+    const Frame& f = frames_.back();
+    double x = 0;
+    if (t.kind == Token::Kind::Number && !continuesOperand(f.file->tokens[f.pos + 1])) {
+      x = next().number;
+    } else {
+      const SourceLoc cAt = locOf(t);
+      const Value v = expression();
+      if (v.type != Value::Type::Float) fail(cAt, std::string("a vector's component must be a float, found a ") + typeName(v));
+      x = v.v[0];
+    }
     // Longer lists (a matrix, a polynomial's coefficients) keep their first five: only blocks take them.
-    if (n < 5) c[size_t(n)] = v.v[0];
+    if (n < 5) c[size_t(n)] = x;
     ++n;
     if (peekOperator(",")) next();  // the commas may be left out, and one may end the list
     if (peekOperator(">")) break;

@@ -69,20 +69,20 @@ void Interpreter::fopenDirective(const SourceLoc& at) {
   const SourceLoc nameAt = here();
   const Value name = expression();
   if (name.type != Value::Type::String) fail(nameAt, "#fopen needs a file name, found a " + std::string(typeName(name)));
-  if (name.s.empty()) fail(nameAt, "#fopen needs a file name, found an empty string");
+  if (name.str().empty()) fail(nameAt, "#fopen needs a file name, found an empty string");
   SourceLoc modeAt;
   const std::string_view mode = expectWord("read, write or append after the file name", &modeAt);
   auto file = std::make_shared<OpenFile>();
   if (mode == "read") {
     file->reading = true;
-    if (const DataFileDesc* data = written(name.s)) {
+    if (const DataFileDesc* data = written(name.str())) {
       file->text = data->text;
     } else {
-      const std::string path = findFile(name.s);
-      if (path.empty()) fail(nameAt, "cannot find the file " + quote(name.s) + " to read");
-      if (!readBytes(path, file->text)) fail(nameAt, "cannot read the file " + quote(name.s));
+      const std::string path = findFile(name.str());
+      if (path.empty()) fail(nameAt, "cannot find the file " + quote(name.str()) + " to read");
+      if (!readBytes(path, file->text)) fail(nameAt, "cannot read the file " + quote(name.str()));
     }
-    file->tokens.name = name.s;
+    file->tokens.name = name.str();
     try {
       lex(file->text, file->tokens);
     } catch (const ParseError& e) {
@@ -92,27 +92,27 @@ void Interpreter::fopenDirective(const SourceLoc& at) {
   } else if (mode == "write" || mode == "append") {
     // A scene from someone else must not create or replace files elsewhere unless the user says so.
     const std::string folder = options_.writeFolder.empty() ? "." : options_.writeFolder;
-    if (!options_.writeAnywhere && !staysInFolder(name.s)) {
-      fail(nameAt, "#fopen may only write a file in the folder of the output image and below, found " + quote(name.s) +
+    if (!options_.writeAnywhere && !staysInFolder(name.str())) {
+      fail(nameAt, "#fopen may only write a file in the folder of the output image and below, found " + quote(name.str()) +
                        " (--allow-write-anywhere allows it)");
     }
-    if (!options_.writeAnywhere && linksOut(folder, name.s)) {
-      fail(nameAt, "#fopen names " + quote(name.s) + ", but a folder on its way is a symbolic link out of the folder "
+    if (!options_.writeAnywhere && linksOut(folder, name.str())) {
+      fail(nameAt, "#fopen names " + quote(name.str()) + ", but a folder on its way is a symbolic link out of the folder "
                    "of the output image (--allow-write-anywhere allows it)");
     }
-    const DataFileDesc* data = written(name.s);
+    const DataFileDesc* data = written(name.str());
     file->data = data ? size_t(data - dataFiles_.data()) : dataFiles_.size();
     if (!data) {
-      dataFiles_.push_back({writePath(name.s), at, {}});
+      dataFiles_.push_back({writePath(name.str()), at, {}});
       // Appending keeps what the file held: it is read now and written back whole with the new text.
       struct stat st;
       const std::string& path = dataFiles_.back().path;
       if (mode == "append" && stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
         if (bytesWritten_ + std::uint64_t(st.st_size) > kMaxSceneWriteBytes) {
-          fail(nameAt, "the file " + quote(name.s) + " to append to is larger than the " +
+          fail(nameAt, "the file " + quote(name.str()) + " to append to is larger than the " +
                            std::to_string(kMaxSceneWriteBytes >> 20) + " MiB a scene may write");
         }
-        if (!readBytes(path, dataFiles_.back().text)) fail(nameAt, "cannot read " + quote(name.s) + " to append to it");
+        if (!readBytes(path, dataFiles_.back().text)) fail(nameAt, "cannot read " + quote(name.str()) + " to append to it");
         bytesWritten_ += dataFiles_.back().text.size();
       }
     } else if (mode == "write") {
@@ -252,7 +252,7 @@ void Interpreter::writeDirective(const SourceLoc& at) {
     const Value v = expression();
     std::string text;
     if (v.type == Value::Type::String && !word) {
-      text = v.s;
+      text = v.str();
     } else if (v.type == Value::Type::Float || v.type == Value::Type::Vector) {
       const int n = v.type == Value::Type::Float ? 1 : v.size;
       for (int i = 0; i < n; ++i) {

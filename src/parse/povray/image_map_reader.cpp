@@ -43,7 +43,7 @@ std::shared_ptr<const ImageMap> readImage(const Node& n, Refusals& refusals, Bum
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     if (it.kind == Item::Kind::Value && it.value.type == Value::Type::String && name.empty()) {
-      name = it.value.s;
+      name = it.value.str();
       nameAt = it.loc;
       continue;
     }

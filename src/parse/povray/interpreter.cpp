@@ -96,7 +96,7 @@ char Interpreter::peekSymbolAfterDirectives() {
   }
 }
 
-void Interpreter::expect(std::string_view symbol, const char* what) {
+void Interpreter::expectExpanding(std::string_view symbol, const char* what) {
   if (peek().is(symbol)) {
     next();
     return;

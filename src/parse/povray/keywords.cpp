@@ -109,8 +109,9 @@ constexpr std::string_view kBuiltins[] = {
 
 }  // namespace
 
-bool isBuiltin(std::string_view word) {
-  return std::binary_search(std::begin(kBuiltins), std::end(kBuiltins), word);
+std::uint8_t builtinIndex(std::string_view word) {
+  const auto* at = std::lower_bound(std::begin(kBuiltins), std::end(kBuiltins), word);
+  return at != std::end(kBuiltins) && *at == word ? std::uint8_t(at - std::begin(kBuiltins) + 1) : 0;
 }
 
 bool isColourWord(std::string_view w) {

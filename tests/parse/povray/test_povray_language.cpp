@@ -339,5 +339,21 @@ TEST_CASE("povray: every file of POV-Ray's standard include library parses when 
   }
 }
 
+TEST_CASE("povray: the lexer marks each built-in word with its place among the built-ins by name", "[povray]") {
+  CHECK(builtinIndex("abs") == 1);
+  CHECK(builtinIndex("acos") == 2);
+  CHECK(builtinIndex("z") == 90);
+  CHECK(builtinIndex("sphere") == 0);
+  CHECK(builtinIndex("Rand") == 0);
+  TokenFile file;
+  lex("rand(R) sphere z", file);
+  REQUIRE(file.tokens.size() == 7);
+  CHECK(int(file.tokens[0].builtin) == builtinIndex("rand"));
+  CHECK(file.tokens[0].builtin != 0);
+  CHECK(file.tokens[2].builtin == 0);  // an identifier
+  CHECK(file.tokens[4].builtin == 0);  // a keyword that is no built-in
+  CHECK(file.tokens[5].builtin == 90);
+}
+
 }  // namespace
 }  // namespace rt::povray

@@ -136,7 +136,16 @@ class Interpreter {
     return t.kind == Token::Kind::Directive ? peekSymbolAfterDirectives() : 0;
   }
   char peekSymbolAfterDirectives();
-  void expect(std::string_view symbol, const char* what);
+  // The symbol read inline when it is the very next token (no directive or macro can be in the way of a
+  // symbol), else by the out-of-line part, which carries out what comes first or fails.
+  void expect(std::string_view symbol, const char* what) {
+    Frame& f = frames_.back();
+    const Token& t = f.file->tokens[f.pos];
+    if (!t.is(symbol)) return expectExpanding(symbol, what);
+    ++f.pos;
+    if (++tokensRead_ == options_.maxTokens) tooManyTokens(t);
+  }
+  void expectExpanding(std::string_view symbol, const char* what);
   std::string_view expectWord(const char* what, SourceLoc* loc = nullptr);
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
   // One more level of nesting for as long as it lives; too deep a nesting is an error, not a stack overflow.
@@ -184,14 +193,16 @@ class Interpreter {
   void assign(std::string_view name, Value value, size_t level);
 
   // Expressions (expression.cpp).
-  Value expression();   // arithmetic: + - * / and unary operators
+  Value expression() { return sum(); }  // arithmetic: + - * / and unary operators
   Value fullExpression();  // inside parentheses: also relations, & | and ?:
   Value logical();
   Value relation();
   Value sum();
-  Value product();
+  // Forced inline into sum and unary: a scene's operands go down every level, and each call costs more than
+  // the level's own work.
+  [[gnu::always_inline]] Value product();
   Value unary();
-  Value postfix();
+  [[gnu::always_inline]] Value postfix();
   Value primary();
   Value vectorLiteral(const SourceLoc& at);
   Value coefficientList(const SourceLoc& at);
@@ -205,7 +216,8 @@ class Interpreter {
   Value callSpline(const Node& spline);
 
   // Built-in functions (builtins.cpp).
-  Value builtin(std::string_view name, const SourceLoc& at);
+  // `index` is the name's builtinIndex.
+  Value builtin(std::string_view name, std::uint8_t index, const SourceLoc& at);
   // A call's `(a, b …)`, read into a vector an earlier call has given back: calls in a loop allocate none.
   struct Arguments {
     Interpreter& in;

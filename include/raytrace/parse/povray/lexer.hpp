@@ -15,9 +15,11 @@ struct Token {
   std::string_view text;  // a word, symbol or directive name; a string's contents with escapes resolved
   double number = 0;
   std::int32_t line = 0, col = 0;
-  // Found once here rather than at every use: a word reserved by POV-Ray 3.7, and one that begins a value.
+  // Found once here rather than at every use: a word reserved by POV-Ray 3.7, one that begins a value, and
+  // which built-in constant or function a word is (builtinIndex).
   bool keyword = false;
   bool startsValue = false;
+  std::uint8_t builtin = 0;
 
   // Symbols have one or two characters: compared directly, this is most of the parser's time otherwise.
   bool is(std::string_view symbol) const {
@@ -37,11 +39,12 @@ struct TokenFile {
   SourceLoc loc(const Token& t) const { return {name, t.line, t.col}; }
 };
 
-// Whether a word is one of the 3.7 keywords (which an identifier may not be), a built-in constant or function,
-// or a word that begins a colour (color, colour, rgb … srgbft).
+// Whether a word is one of the 3.7 keywords (which an identifier may not be), or a word that begins a colour
+// (color, colour, rgb … srgbft).
 bool isKeyword(std::string_view word);
-bool isBuiltin(std::string_view word);
 bool isColourWord(std::string_view word);
+// A built-in constant or function's place among them sorted by name, from 1; 0 for any other word.
+std::uint8_t builtinIndex(std::string_view word);
 
 // Splits `text` into tokens. Throws ParseError for an unterminated string or comment or a stray character.
 void lex(std::string_view text, TokenFile& out);

@@ -24,13 +24,19 @@ struct Shared {
   virtual ~Shared() = default;
 };
 
+// A string's text, shared rather than held in each Value: most values are numbers, which then carry no string
+// to make, move and destroy at every step of an expression.
+struct StringValue : Shared {
+  std::string text;
+  explicit StringValue(std::string t) : text(std::move(t)) {}
+};
+
 struct Value {
   enum class Type : unsigned char { None, Float, Vector, Colour, String, Array, Node, Function, Macro, File };
   Type type = Type::None;
   int size = 1;  // components of a vector (2–5); a colour always has 5: red, green, blue, filter, transmit
   std::array<double, 5> v{};
-  std::string s;
-  std::shared_ptr<Shared> ref;
+  std::shared_ptr<Shared> ref;  // a string's StringValue, or what an array, a node, a function … shares
 
   static Value number(double x) {
     Value r;
@@ -55,9 +61,11 @@ struct Value {
   static Value string(std::string text) {
     Value r;
     r.type = Type::String;
-    r.s = std::move(text);
+    r.ref = std::make_shared<StringValue>(std::move(text));
     return r;
   }
+  // A String's text.
+  const std::string& str() const { return static_cast<const StringValue&>(*ref).text; }
   bool numeric() const { return type == Type::Float || type == Type::Vector || type == Type::Colour; }
 };
 
