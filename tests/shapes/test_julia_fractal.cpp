@@ -161,4 +161,9 @@ TEST_CASE("julia_fractal: read from a scene, with its defaults and its errors", 
         "scene.pov:2:36: error: the julia_fractal slice normal needs a non-zero fourth component");
   CHECK(failure("julia_fractal { <1, 2, 3, 4> hypercomplex cube }\n") ==
         "scene.pov:2:43: error: 'cube' with 'hypercomplex' is not supported yet");
+  // The hypercomplex functions are keywords there, not the built-in functions: refused, pwr with its numbers.
+  CHECK(failure("julia_fractal { <1, 2, 3, 4> hypercomplex pwr(1, 2) max_iteration 5 }\n") ==
+        "scene.pov:2:43: error: 'pwr' is not supported yet");
+  CHECK(failure("julia_fractal { <1, 2, 3, 4> hypercomplex sin max_iteration 5 }\n") ==
+        "scene.pov:2:43: error: 'sin' is not supported yet");
 }
