@@ -19,6 +19,7 @@
 #include "raytrace/shapes/cylinder.hpp"
 #include "raytrace/shapes/disc.hpp"
 #include "raytrace/shapes/isosurface.hpp"
+#include "raytrace/shapes/julia_fractal.hpp"
 #include "raytrace/shapes/lathe.hpp"
 #include "raytrace/shapes/mesh.hpp"
 #include "raytrace/shapes/plane.hpp"
@@ -41,7 +42,7 @@ namespace rt {
 using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, ConeDesc, CylinderDesc, CsgDesc, TorusDesc,
                                QuadricDesc, PolyDesc, TextDesc, PrismDesc, LatheDesc, SorDesc, DiscDesc,
                                SuperellipsoidDesc, BlobDesc, MeshDesc, PolygonDesc, IsosurfaceDesc,
-                               SphereSweepDesc>;
+                               SphereSweepDesc, JuliaFractalDesc>;
 
 struct ClipDesc;
 

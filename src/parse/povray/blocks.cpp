@@ -21,6 +21,13 @@ bool coefficientsHere(std::string_view keyword, const std::vector<Item>& before)
   return ((keyword == "cubic" || keyword == "quartic") && n == 0) || (keyword == "poly" && n == 1);
 }
 
+// The functions a julia_fractal names as keywords (manual, "Julia Fractal") that are also built-in functions.
+bool juliaFunction(const Token& t) {
+  static constexpr std::string_view kWords[] = {"exp",  "sin",  "asin", "sinh", "asinh", "cos", "acos", "cosh",
+                                                "acosh", "tan", "atan", "tanh", "atanh", "ln",  "pwr"};
+  return t.kind == Token::Kind::Word && std::find(std::begin(kWords), std::end(kWords), t.text) != std::end(kWords);
+}
+
 }  // namespace
 
 // Whether `t` begins a value rather than being a keyword of the block it is in.
@@ -235,6 +242,18 @@ std::shared_ptr<const Node> Interpreter::block(std::string_view keyword, const S
       // A text's font selector (`internal 1`), not the built-in function of that name.
       item.word = next().text;
       item.kind = Item::Kind::Keyword;
+    } else if (keyword == "julia_fractal" && juliaFunction(t)) {
+      // A julia_fractal's function (`sin`, `pwr(X, Y)`), not the built-in function of that name; pwr's numbers
+      // are read here, and the julia_fractal refuses the functions it does not draw.
+      item.word = next().text;
+      item.kind = Item::Kind::Keyword;
+      if (item.word == "pwr") {
+        expect("(", "before pwr's numbers");
+        expression();
+        expect(",", "between pwr's numbers");
+        expression();
+        expect(")", "after pwr's numbers");
+      }
     } else if (coefficients) {
       item.kind = Item::Kind::Value;
       item.value = coefficientList(item.loc);

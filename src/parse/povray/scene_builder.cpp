@@ -389,7 +389,7 @@ class Builder {
   // Whether an item is an object: a shape of ours, or one of POV-Ray's that is refused when read.
   static bool isObject(const Item& it) {
     static constexpr std::string_view kPovObjects[] = {
-        "julia_fractal", "light_group", "object", "ovus", "parametric", "polynomial"};
+        "light_group", "object", "ovus", "parametric", "polynomial"};
     if (it.kind != Item::Kind::Node) return false;
     const std::string_view k = it.node->keyword;
     return isShapeKeyword(k) || std::find(std::begin(kPovObjects), std::end(kPovObjects), k) != std::end(kPovObjects);

@@ -587,8 +587,8 @@ TEST_CASE("povray scene: min_extent, max_extent and trace ask the object; a macr
         "0.000,1.000,2.000 2.000,3.000,4.000\n-2.000,-1.000,-1.000 2.000,3.000,4.000\n3.0\n"
         "1.0000,1.0000,0.0000 0.0000,1.0000,0.0000\n0.0000,0.0000,0.0000 0.0000,0.0000,0.0000\n"
         "-1.5000,0.0000,-1.0000\n");
-  CHECK(failure("#declare L = julia_fractal { <-0.083, 0, -0.83, -0.025> }\n#declare V = trace(L, 5*x, -x);\n") ==
-        "scene.pov:3:14: error: 'julia_fractal' is not supported yet");
+  CHECK(failure("#declare L = ovus { 1, 0.5 }\n#declare V = trace(L, 5*x, -x);\n") ==
+        "scene.pov:3:14: error: 'ovus' is not supported yet");
   CHECK(failure("#declare P = plane { y, 0 }\n#declare V = min_extent(P);\n") ==
         "scene.pov:4:25: error: 'min_extent' of an object without bounds, such as a plane");
 }
