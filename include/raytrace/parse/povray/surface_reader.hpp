@@ -31,6 +31,7 @@ struct Refusals {
   };
   std::optional<Unsupported> first;
   bool media = false;  // whether some interior has a medium, which a light's media_attenuation would dim it by
+  std::optional<SourceLoc> mediaAttenuation;  // where a light's `media_attenuation on` is written
   void refuse(const SourceLoc& loc, std::string_view what) {
     if (!first) first = Unsupported{loc, std::string(what)};
   }
