@@ -6,7 +6,7 @@
 
 namespace rt::povray {
 
-std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) {
+std::shared_ptr<const ImageMap> readImageMap(const Node& n, ReadingContext& context) {
   static constexpr std::string_view kTypes[] = {"gif", "hdr", "jpeg", "pgm", "png", "ppm", "sys", "tga"};
   static constexpr std::string_view kRefusedTypes[] = {"exr", "iff", "tiff"};
   std::string name;
@@ -30,14 +30,14 @@ std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) 
       continue;
     }
     if (it.kind != Item::Kind::Keyword) {
-      refusals.refuse(it, "a value in image_map");
+      context.refuse(it, "a value in image_map");
       refused = true;
       continue;
     }
     const std::string_view w = it.word;
     if (std::find(std::begin(kTypes), std::end(kTypes), w) != std::end(kTypes)) continue;
     if (std::find(std::begin(kRefusedTypes), std::end(kRefusedTypes), w) != std::end(kRefusedTypes)) {
-      refusals.refuse(it.loc, "image_map " + std::string(w));
+      context.refuse(it.loc, "image_map " + std::string(w));
       refused = true;
     } else if (w == "once") {
       settings.once = true;
@@ -48,7 +48,7 @@ std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) 
                            : type == 1 ? ImageMap::Mapping::Spherical
                                        : ImageMap::Mapping::Cylindrical;
       } else {
-        refusals.refuse(it.loc, "image_map map_type " + std::to_string(int(type)));
+        context.refuse(it.loc, "image_map map_type " + std::to_string(int(type)));
         refused = true;
       }
     } else if (w == "interpolate") {
@@ -56,7 +56,7 @@ std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) 
       if (kind == 2 || kind == 4) {
         settings.interpolation = kind == 2 ? ImageMap::Interpolation::Bilinear : ImageMap::Interpolation::NormalizedDistance;
       } else {
-        refusals.refuse(it.loc, "image_map interpolate " + std::to_string(int(kind)));
+        context.refuse(it.loc, "image_map interpolate " + std::to_string(int(kind)));
         refused = true;
       }
     } else if (w == "gamma") {
@@ -76,15 +76,15 @@ std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) 
       channels.push_back({index, w == "transmit", float(number(i, it, "a palette index and an amount"))});
     } else {
       // use_color, use_index, premultiplied …
-      refusals.refuse(it.loc, "image_map " + std::string(w));
+      context.refuse(it.loc, "image_map " + std::string(w));
       refused = true;
     }
   }
   if (name.empty()) throw ParseError(n.loc, "image_map needs an image file");
   if (refused) return nullptr;
-  const std::string path = refusals.findFile ? refusals.findFile(name) : name;
+  const std::string path = context.findFile ? context.findFile(name) : name;
   if (path.empty()) throw ParseError(nameAt, "cannot find the image map \"" + name + "\"");
-  const std::optional<double> working = refusals.imageGamma ? refusals.imageGamma() : std::optional<double>(1.0);
+  const std::optional<double> working = context.imageGamma ? context.imageGamma() : std::optional<double>(1.0);
   // Before #version 3.7 a file's values are the scene's colours as they are; from 3.7 on they are decoded
   // (sRGB unless `gamma` says otherwise) and put in the scene's working gamma (measured against POV-Ray 3.7).
   auto image = std::make_shared<ImageMap>(readImageFile(path, working ? fileGamma : -1, working.value_or(1), nameAt, channels));

@@ -29,10 +29,10 @@ AreaDesc areaLight(const Node& n, size_t& i, AreaDesc area) {
 
 }  // namespace
 
-void readLight(const Node& n, LightDesc& l, Refusals& refusals, const LooksLike& looksLikeAt) {
+void readLight(const Node& n, LightDesc& l, ReadingContext& context, const LooksLike& looksLikeAt) {
   size_t i = 0;
   if (i < n.items.size() && n.items[i].kind == Item::Kind::Node && n.items[i].node->keyword == "light_source") {
-    readLight(*n.items[i++].node, l, refusals, looksLikeAt);
+    readLight(*n.items[i++].node, l, context, looksLikeAt);
   }
   if (i < n.items.size() && n.items[i].kind == Item::Kind::Value) l.position = vec3(n.items[i++].value);
   if (i < n.items.size() && n.items[i].kind == Item::Kind::Value) l.color = colourOf(n.items[i++].value).rgb;
@@ -47,19 +47,19 @@ void readLight(const Node& n, LightDesc& l, Refusals& refusals, const LooksLike&
   const Node* looksLike = nullptr;
   for (; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
-    if (readTransform(n, i, steps, refusals)) continue;
+    if (readTransform(n, i, steps, context)) continue;
     if (it.kind == Item::Kind::Node && it.node->keyword == "looks_like") {
       looksLike = it.node.get();
       continue;
     }
     if (it.kind != Item::Kind::Keyword) {
-      refusals.refuse(it, "light_source");
+      context.refuse(it, "light_source");
       continue;
     }
     const std::string_view w = it.word;
     if (w == "media_interaction" || w == "media_attenuation") {
       const Value* v = valueAfter(n, i);
-      if (w == "media_attenuation" && (!v || v->v[0] != 0)) refusals.mediaAttenuation = it.loc;
+      if (w == "media_attenuation" && (!v || v->v[0] != 0)) context.mediaAttenuation = it.loc;
     } else if (w == "shadowless") {
       l.shadowless = true;
     } else if (w == "spotlight" || w == "cylinder") {
@@ -74,7 +74,7 @@ void readLight(const Node& n, LightDesc& l, Refusals& refusals, const LooksLike&
     } else if (w == "area_illumination") {
       // POV-Ray's experimental lighting from each point of the grid; off, the light's centre lights.
       const Value* v = valueAfter(n, i);
-      if (!v || v->v[0] != 0) refusals.refuse(it.loc, w);
+      if (!v || v->v[0] != 0) context.refuse(it.loc, w);
     } else if (w == "point_at" || w == "radius" || w == "falloff" || w == "tightness" || w == "fade_distance" ||
                w == "fade_power" || (w == "adaptive" && area)) {
       const Value* v = valueAfter(n, i);
@@ -87,13 +87,13 @@ void readLight(const Node& n, LightDesc& l, Refusals& refusals, const LooksLike&
       else if (w == "adaptive") area->adaptive = std::max(0, int(v->v[0]));
       else l.fadePower = v->v[0];
     } else {
-      refusals.refuse(it.loc, w);
+      context.refuse(it.loc, w);
     }
   }
   // A cylinder light's radius and falloff are lengths, 0.75 and 1 unless given (manual, "Cylindrical Lights").
   spot.radius = radius.value_or(spot.cylinder && !l.spot ? 0.75 : spot.radius);
   spot.falloff = falloff.value_or(spot.cylinder && !l.spot ? 1.0 : spot.falloff);
-  if (spot.cylinder && spot.tightness != 0 && tightness) refusals.refuse(tightness->loc, "a cylinder light's tightness");
+  if (spot.cylinder && spot.tightness != 0 && tightness) context.refuse(tightness->loc, "a cylinder light's tightness");
   if (isSpot) l.spot = spot;
   if (parallel) l.parallelTo = std::make_shared<const glm::dvec3>(spot.pointAt);
   if (area) l.area = std::make_shared<const AreaDesc>(*area);

@@ -28,8 +28,8 @@ template <class K> struct HasOpen<K, std::void_t<decltype(std::declval<K&>().ope
 class Builder {
  public:
   Builder(SceneDesc& scene, Interpreter& interpreter) : scene_(scene), interpreter_(interpreter) {
-    refusals_.findFile = [this](const std::string& name) { return interpreter_.findFile(name); };
-    refusals_.imageGamma = [this]() -> std::optional<double> {
+    context_.findFile = [this](const std::string& name) { return interpreter_.findFile(name); };
+    context_.imageGamma = [this]() -> std::optional<double> {
       if (interpreter_.version() < 3.7) return std::nullopt;
       return assumedGamma_.value_or(1.0);
     };
@@ -87,12 +87,12 @@ class Builder {
   // The pigment a function reads, with the scene's settings; null, with why in `into`, if it is refused.
   template <class Read>
   std::shared_ptr<const Pigment> functionPigment(const Node& n, FunctionValue& into, Read read) {
-    Refusals own = refusals_;
-    own.first.reset();
+    ReadingContext own = context_;
+    own.firstRefusal.reset();
     const std::shared_ptr<const Pigment> p = read(n, own);
-    if (!own.first) return p;
-    into.why = own.first->what;
-    into.whyAt = own.first->loc;
+    if (!own.firstRefusal) return p;
+    into.why = own.firstRefusal->what;
+    into.whyAt = own.firstRefusal->loc;
     return nullptr;
   }
 
@@ -122,7 +122,7 @@ class Builder {
       const size_t lights = scene_.lights.size();
       ObjectDesc o;
       // What follows would build on a wrong answer: a refusal is reported now.
-      if (!object(*n, o) || refusals_.first) finish();
+      if (!object(*n, o) || context_.firstRefusal) finish();
       scene_.lights.resize(lights);
       statementNode_ = statement;
       made.object = makeObject<double>(o, SphereMethod::Robust, 0, false);
@@ -133,23 +133,23 @@ class Builder {
   void defaults(const Node& n) {
     for (const Item& i : n.items) {
       if (i.kind != Item::Kind::Node) continue;
-      readSurfaceItem(*i.node, default_, default_, refusals_);
+      readSurfaceItem(*i.node, default_, default_, context_);
     }
   }
 
   void finish() {
     // Media do not dim the lights yet: a light that asks them to is refused, once some object has a medium.
-    if (refusals_.mediaAttenuation && refusals_.media) refusals_.refuse(*refusals_.mediaAttenuation, "media_attenuation");
+    if (context_.mediaAttenuation && context_.media) context_.refuse(*context_.mediaAttenuation, "media_attenuation");
     // A ray crosses a medium only up to its next hit: an object that may lie inside or across a medium would
     // cut the medium short behind it, so such scenes are refused (an unbounded medium, or an unbounded object
     // other than a plane, always).
     for (const auto& [index, at] : mediaObjects_) {
       const Ball medium = worldBall(scene_.objects[index]);
       for (size_t j = 0; j < scene_.objects.size(); ++j) {
-        if (j != index && mayCross(medium, scene_.objects[j])) refusals_.refuse(at, "an object inside or across a medium");
+        if (j != index && mayCross(medium, scene_.objects[j])) context_.refuse(at, "an object inside or across a medium");
       }
     }
-    if (refusals_.first) throw ParseError(refusals_.first->loc, "'" + refusals_.first->what + "' is not supported yet");
+    if (const auto& refused = context_.firstRefusal) throw ParseError(refused->loc, "'" + refused->what + "' is not supported yet");
   }
 
  private:
@@ -200,7 +200,7 @@ class Builder {
     return std::abs(glm::dot(normal, medium.center - point)) < medium.radius * glm::length(normal);
   }
 
-  void refuse(const SourceLoc& loc, std::string_view what) { refusals_.refuse(loc, what); }
+  void refuse(const SourceLoc& loc, std::string_view what) { context_.refuse(loc, what); }
   // An item a block inside an object does not take, `where` it is ("'pigment in a blob's sphere' is not
   // supported yet").
   void refuseItem(const Item& it, const std::string& where) {
@@ -210,7 +210,7 @@ class Builder {
     else refuse(it.loc, "a value" + in);
   }
   bool transformItem(const Node& n, size_t& i, std::vector<TransformStep>& steps) {
-    return readTransform(n, i, steps, refusals_);
+    return readTransform(n, i, steps, context_);
   }
 
   // A shape's values for its kind's read() (shapes/kind.hpp), taken from the items of its node in order.
@@ -280,7 +280,7 @@ class Builder {
       // `texture { T }` holds T's own tree: two triangles naming T share one surface.
       source = t.items.size() == 1 && t.items[0].kind == Item::Kind::Node ? static_cast<const void*>(t.items[0].node.get()) : &t;
       Surface s = b_.default_;
-      readSurfaceItem(t, s, b_.default_, b_.refusals_);
+      readSurfaceItem(t, s, b_.default_, b_.context_);
       out.material = constantMaterial(s);
       out.texture = s.patterned() ? std::make_shared<const Texture>(bounded(makeTexture(s, {}))) : nullptr;
       return true;
@@ -446,7 +446,7 @@ class Builder {
           // A second texture block is a layer on top of the first, starting as the #default texture.
           if (m == "texture" && textureBlock) s.layers.push_back(default_.layers.back());
           textureBlock = textureBlock || m == "texture";
-          readSurfaceItem(*it.node, s, default_, refusals_);
+          readSurfaceItem(*it.node, s, default_, context_);
           if (!textureFrom) textureFrom = o.transforms.size();
         } else {
           refuse(it.loc, m);
@@ -642,7 +642,7 @@ class Builder {
       }
       if (transformItem(n, i, k.steps)) continue;
       if (it.kind != Item::Kind::Keyword) {
-        refusals_.refuse(it, "camera");
+        context_.refuse(it, "camera");
         continue;
       }
       const std::string_view w = it.word;
@@ -695,7 +695,7 @@ class Builder {
 
   void light(const Node& n) {
     LightDesc l;
-    readLight(n, l, refusals_,
+    readLight(n, l, context_,
               [this](const Node& looksLike, const glm::dvec3& position, const std::vector<TransformStep>& steps) {
                 lookLike(looksLike, position, steps);
               });
@@ -732,12 +732,12 @@ class Builder {
       const Item& it = n.items[i];
       if (transformItem(n, i, steps)) continue;
       if (it.kind == Item::Kind::Node && it.node->keyword == "pigment") {
-        sky->layers.push_back(nestedPigment(*it.node, refusals_));
+        sky->layers.push_back(nestedPigment(*it.node, context_));
       } else if (it.kind == Item::Kind::Node && it.node->keyword == "sky_sphere") {
         skySphere(*it.node);  // an identifier, modified by what follows
         sky = std::make_shared<SkySphere>(*scene_.sky);
       } else {
-        refusals_.refuse(it, "sky_sphere");
+        context_.refuse(it, "sky_sphere");
       }
     }
     sky->fromWorld = sky->fromWorld * glm::inverse(composeTransforms<double>(steps));
@@ -747,7 +747,7 @@ class Builder {
 
   void fog(const Node& n) {
     Fog f;
-    f.noise.scene = refusals_.sceneNoise;
+    f.noise.scene = context_.sceneNoise;
     std::vector<TransformStep> steps;
     readFog(n, f, steps);
     f.up = glm::normalize(glm::dvec3(composeTransforms<double>(steps) * glm::dvec4(f.up, 0)));
@@ -768,7 +768,7 @@ class Builder {
       }
       const Value* v = it.kind == Item::Kind::Keyword ? valueAfter(n, i) : nullptr;
       if (!v || !v->numeric()) {
-        refusals_.refuse(it, "fog");
+        context_.refuse(it, "fog");
       } else if (it.word == "fog_type" && (v->v[0] == 1 || v->v[0] == 2)) {
         f.type = Fog::Type(int(v->v[0]));
       } else if (it.word == "distance") {
@@ -790,7 +790,7 @@ class Builder {
       } else if (it.word == "lambda") {
         f.turbulence.lambda = float(v->v[0]);
       } else {
-        refusals_.refuse(it, "fog");
+        context_.refuse(it, "fog");
       }
     }
   }
@@ -814,14 +814,14 @@ class Builder {
           assumedGamma_ = v->v[0];
         } else if (w == "noise_generator" && v && v->type == Value::Type::Float) {
           if (v->v[0] == 3) refuse(it.loc, "noise_generator 3");
-          *refusals_.sceneNoise = v->v[0] < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
+          *context_.sceneNoise = v->v[0] < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
         } else if (w == "adc_bailout" || w == "number_of_waves" ||
                    w == "irid_wavelength" || w == "max_intersections" || w == "hf_gray_16") {
         } else {
           refuse(it.loc, w);
         }
       } else if (it.kind == Item::Kind::Node && it.node->keyword == "radiosity") {
-        scene_.radiosity = readRadiosity(*it.node, refusals_);
+        scene_.radiosity = readRadiosity(*it.node, context_);
       } else {
         refuse(it.loc, it.kind == Item::Kind::Node ? it.node->keyword : "global_settings");
       }
@@ -838,7 +838,7 @@ class Builder {
   Interpreter& interpreter_;  // its findFile notes the files the scene reads
   bool asciiStrings_ = true;  // global_settings' charset
   Surface default_;
-  Refusals refusals_;
+  ReadingContext context_;
   std::vector<std::pair<size_t, SourceLoc>> mediaObjects_;  // the objects with a medium, and where each is written
   struct Asked {
     std::shared_ptr<const Node> node;  // held, so that its address names no other node

@@ -15,7 +15,7 @@ using LooksLike =
     std::function<void(const Node& looksLike, const glm::dvec3& position, const std::vector<TransformStep>& steps)>;
 
 // A light's items into `l`, moved by its transforms: an identifier's first, then the ones that follow it.
-void readLight(const Node& n, LightDesc& l, Refusals& refusals, const LooksLike& looksLikeAt);
+void readLight(const Node& n, LightDesc& l, ReadingContext& context, const LooksLike& looksLikeAt);
 
 // The light moved by `m`: its position, its spotlight's point_at, its parallel light's point and its area's axes.
 void moveLight(LightDesc& l, const glm::dmat4& m);
