@@ -56,7 +56,7 @@ class Builder {
       fog(n);
     } else if (k == "background") {
       for (const Item& i : n.items) {
-        if (i.kind == Item::Kind::Value && i.value.numeric()) scene_.conventions.background = colourOf(i.value).rgb;
+        if (i.kind == Item::Kind::Value && i.value.numeric()) scene_.background = colourOf(i.value).rgb;
       }
     } else {
       ObjectDesc o;
@@ -807,7 +807,7 @@ class Builder {
         }
         const Value* v = valueAfter(n, i);
         if (w == "max_trace_level" && v && v->type == Value::Type::Float) {
-          scene_.conventions.maxDepth = int(std::max(1.0, v->v[0]));
+          scene_.depthLimit = int(std::max(1.0, v->v[0]));
         } else if (w == "ambient_light" && v && v->numeric()) {
           ambientLight_ = colourOf(*v).rgb;
         } else if (w == "assumed_gamma" && v && v->type == Value::Type::Float) {
@@ -887,9 +887,6 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   scene.language = SceneLanguage::PovRay;
   scene.camera.right = {1.33, 0, 0};
   scene.camera.lookAt = {0, 0, 1};
-  scene.conventions.reflectionMixes = false;  // POV-Ray adds reflected light to the surface's own
-  scene.conventions.tintReflection = false;
-  scene.conventions.filteredShadows = true;
   InterpreterOptions io;
   io.libraryPaths = options.libraryPaths;
   io.imageWidth = options.imageWidth;
@@ -915,14 +912,9 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   interpreter.run(path, text, [&](const std::shared_ptr<const Node>& n) { builder.statement(n); },
                   [&](const std::shared_ptr<const Node>& n) { builder.defaults(*n); });
   builder.finish();
-  // POV-Ray 3.7 writes the sRGB of each pixel's colour raised to assumed_gamma, which is 1 by default from
-  // #version 3.7 on; an older scene without assumed_gamma has its colours written as they are
-  // (docs/povray-language.md, "Gamma").
-  const double gamma = builder.assumedGamma_.value_or(interpreter.version() >= 3.7 ? 1.0 : 0.0);
-  if (gamma > 0) {
-    scene.conventions.toByte = Conventions::ToByte::Srgb;
-    scene.conventions.gamma = float(gamma);
-  }
+  // assumed_gamma is 1 by default from #version 3.7 on; an older scene without it has its colours written as
+  // they are (docs/povray-language.md, "Gamma").
+  scene.dialect = Dialect::povray(builder.assumedGamma_.value_or(interpreter.version() >= 3.7 ? 1.0 : 0.0));
   // With radiosity a 3.7 scene's ambient term is 0 and its emission alone lights; an older scene's ambient (times
   // ambient_light) still does, as emission would (POV-Ray 3.7 manual, "How Radiosity Works"; measured, docs/gi.md).
   const bool noAmbient = scene.radiosity && interpreter.version() >= 3.7;
