@@ -251,7 +251,8 @@ const std::vector<Option> kOptions = {
      "how a .pov file is read (default: POV-Ray 3.7 when it uses a\n"
      "directive or global_settings, else the course's subset)",
      [](Words& w, const std::string& v, const std::string&) {
-       w.load.dialect = choice("--dialect", v, Names<Dialect>{{"course", Dialect::Course}, {"povray", Dialect::PovRay}});
+       w.load.dialect = choice("--dialect", v,
+                               Names<DialectChoice>{{"course", DialectChoice::Course}, {"povray", DialectChoice::PovRay}});
      }},
     {"-L", nullptr, "DIR", Form::Either, Scope::Any, Section::General,
      "a folder a POV-Ray scene's #include searches, after the scene's\n"

@@ -42,7 +42,7 @@ bool isIdentifier(const std::string& name) {
   for (const char c : name) {
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
   }
-  return !povray::isKeyword(name) && !povray::isBuiltin(name);
+  return !povray::isKeyword(name) && povray::builtinIndex(name) == 0;
 }
 
 }  // namespace

@@ -87,7 +87,7 @@ std::vector<Target> targets(const Invocation& inv, bool sceneWrites) {
 // The image of inv's picture, or of its region, written to `path`. An OpenEXR file carries the render's
 // attributes (tile_header.hpp), so that merge takes a whole image as a tile of itself.
 void write(const Invocation& inv, const char* command, Image&& image, const Target& target,
-           Conventions::ToByte mode) {
+           Dialect::ToByte mode) {
   if (imageFormat(target.path) != ImageFormat::Exr) return writeImage(image, target.path, mode, inv.options.threads);
   const Region region = inv.region.value_or(wholeImage(inv.width, inv.height));
   writeExr(ExrImage{inv.width, inv.height, region, std::move(image), tileHeader(inv, command, target.write)},
@@ -191,12 +191,12 @@ int raycast(const Invocation& inv, std::ostream&) {
         const auto hit = scene.closestHit(camera.pixelRay(x, y), {}, Sight::Image);
         Material textured;
         image.at(x - region.x0, y - bottom) =
-            hit ? hit->object->materialAt(*hit, textured).pigment : inv.scene.conventions.background;
+            hit ? hit->object->materialAt(*hit, textured).pigment : inv.scene.background;
       }
     }
     return 0;
   });
-  write(inv, "raycast", std::move(image), target, inv.scene.conventions.toByte);
+  write(inv, "raycast", std::move(image), target, inv.scene.dialect.toByte());
   writeDataFiles(inv);
   writeManifest(inv, {target});
   return 0;
@@ -242,11 +242,11 @@ int renderImage(const Invocation& inv, std::ostream&) {
     // closes once the image is written.
     const Region region = inv.region.value_or(wholeImage(inv.width, inv.height));
     std::optional<LivePicture> picture;
-    if (inv.display || !inv.preview.empty()) picture.emplace(inv.height, region, scene.conventions.toByte);
+    if (inv.display || !inv.preview.empty()) picture.emplace(inv.height, region, scene.dialect.toByte());
     std::optional<DisplayWindow> window;
     if (inv.display) window.emplace(*picture, *inv.errors);
     std::optional<PreviewFile> preview;
-    if (!inv.preview.empty()) preview.emplace(*picture, inv.preview, scene.conventions.toByte, *inv.errors);
+    if (!inv.preview.empty()) preview.emplace(*picture, inv.preview, scene.dialect.toByte(), *inv.errors);
     RenderMonitor monitor{inv.progress, &times, &rays, picture ? &*picture : nullptr};
     // A whole PNG is rendered straight to bytes; everything else keeps the floats.
     if (!inv.region && imageFormat(path) == ImageFormat::Png) {
@@ -259,7 +259,7 @@ int renderImage(const Invocation& inv, std::ostream&) {
       Image image = render(scene, inv.width, inv.height, region, options, monitor);
       preview.reset();
       Stopwatch watch;
-      write(inv, "render", std::move(image), target, scene.conventions.toByte);
+      write(inv, "render", std::move(image), target, scene.dialect.toByte());
       writing += watch.lap();
     }
   };

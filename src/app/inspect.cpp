@@ -32,7 +32,7 @@ void printPixelRay(std::ostream& out, int x, int y, const glm::dvec3& origin, co
 }
 
 // A colour as the course prints it, "(r, g, b)" in bytes (§a.0).
-std::string bytes(const Color& c, Conventions::ToByte mode) {
+std::string bytes(const Color& c, Dialect::ToByte mode) {
   return "(" + std::to_string(toByte(c.r, mode)) + ", " + std::to_string(toByte(c.g, mode)) + ", " +
          std::to_string(toByte(c.b, mode)) + ")";
 }
@@ -54,7 +54,7 @@ int pixelcolor(const Invocation& inv, std::ostream& out) {
     }
     out << "T = " << fixed4(eye.t) << "\nObject Type: " << eye.objectType
         << "\nBRDF: " << (inv.options.brdf == Brdf::BlinnPhong ? "Blinn-Phong" : "Cook-Torrance")
-        << "\nColor: " << bytes(color, inv.scene.conventions.toByte) << "\n";
+        << "\nColor: " << bytes(color, inv.scene.dialect.toByte()) << "\n";
     return 0;
   });
 }
@@ -68,7 +68,7 @@ int rayTrees(const Invocation& inv, std::ostream& out, bool decorated) {
     const Color color = withTracer(inv, scene, camera, [&](auto& tracer) {
       return tracer.pixel(camera, inv.x, inv.y, &trees, &gathers);
     });
-    printRayTrees(out, inv.x, inv.y, bytes(color, inv.scene.conventions.toByte), trees, decorated, gathers);
+    printRayTrees(out, inv.x, inv.y, bytes(color, inv.scene.dialect.toByte()), trees, decorated, gathers);
     return 0;
   });
 }

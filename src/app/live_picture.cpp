@@ -6,7 +6,7 @@
 
 namespace rt {
 
-LivePicture::LivePicture(int height, const Region& region, Conventions::ToByte mode)
+LivePicture::LivePicture(int height, const Region& region, Dialect::ToByte mode)
     : bottom_(height - region.y1), left_(region.x0), mode_(mode), colors_(region.width(), region.height()),
       bytes_(region.width(), region.height()) {
   // The colours start black; the bytes start unset.

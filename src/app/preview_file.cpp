@@ -7,7 +7,7 @@
 
 namespace rt {
 
-PreviewFile::PreviewFile(const LivePicture& picture, std::string path, Conventions::ToByte mode,
+PreviewFile::PreviewFile(const LivePicture& picture, std::string path, Dialect::ToByte mode,
                          std::ostream& errors, double seconds)
     : picture_(picture), path_(std::move(path)), mode_(mode), errors_(errors) {
   thread_ = std::thread([this, seconds] {

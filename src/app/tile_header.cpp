@@ -16,11 +16,11 @@ namespace rt {
 
 namespace {
 
-const char* toByteName(Conventions::ToByte mode) {
+const char* toByteName(Dialect::ToByte mode) {
   switch (mode) {
-    case Conventions::ToByte::Round: return "round";
-    case Conventions::ToByte::Truncate: return "truncate";
-    case Conventions::ToByte::Srgb: return "srgb";
+    case Dialect::ToByte::Round: return "round";
+    case Dialect::ToByte::Truncate: return "truncate";
+    case Dialect::ToByte::Srgb: return "srgb";
   }
   return "round";
 }
@@ -61,7 +61,7 @@ std::map<std::string, std::string> tileHeader(const Invocation& inv, const std::
       {"raytrace.sceneHash", contentHash(inv.scenePath, inv.scene.inputFiles)},
       {"raytrace.size", std::to_string(inv.width) + "x" + std::to_string(inv.height)},
       {"raytrace.options", pixelFlags(inv.options)},
-      {kToByteAttribute, toByteName(inv.scene.conventions.toByte)},
+      {kToByteAttribute, toByteName(inv.scene.dialect.toByte())},
       {kTilePartAttribute, inv.tile.empty() ? std::to_string(r.x0) + "," + std::to_string(r.y0) + "," +
                                                   std::to_string(r.x1) + "," + std::to_string(r.y1)
                                             : inv.tile},
@@ -115,11 +115,11 @@ std::string tileStaleness(const Invocation& inv, const std::string& command, con
   return "";
 }
 
-Conventions::ToByte toByteOf(const std::map<std::string, std::string>& header, const std::string& file) {
+Dialect::ToByte toByteOf(const std::map<std::string, std::string>& header, const std::string& file) {
   const auto it = header.find(kToByteAttribute);
-  if (it != header.end() && it->second == "round") return Conventions::ToByte::Round;
-  if (it != header.end() && it->second == "truncate") return Conventions::ToByte::Truncate;
-  if (it != header.end() && it->second == "srgb") return Conventions::ToByte::Srgb;
+  if (it != header.end() && it->second == "round") return Dialect::ToByte::Round;
+  if (it != header.end() && it->second == "truncate") return Dialect::ToByte::Truncate;
+  if (it != header.end() && it->second == "srgb") return Dialect::ToByte::Srgb;
   throw Error(quote(file, kMaxQuotedPath) + " is not a raytrace tile: it has no " + kToByteAttribute +
               " of round, truncate or srgb");
 }

@@ -39,20 +39,20 @@ Rgb8Image::Rgb8Image(int width, int height) : width_(width), height_(height) {
   bytes_.reset(new unsigned char[size_t(width) * size_t(height) * 3]);
 }
 
-unsigned char toByte(float c, Conventions::ToByte mode) {
+unsigned char toByte(float c, Dialect::ToByte mode) {
   // Branch-free, so that the conversion of a whole image vectorizes: a fractional part that is ≥ 0.5 half the
   // time is a coin toss for a branch predictor. std::max(0, NaN) is 0, as 0 < NaN is false.
   float v = std::min(std::max(0.0f, c), 1.0f);
   // The sRGB transfer function (IEC 61966-2-1), as POV-Ray 3.7 encodes a linear image.
-  if (mode == Conventions::ToByte::Srgb) v = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1 / 2.4f) - 0.055f;
+  if (mode == Dialect::ToByte::Srgb) v = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1 / 2.4f) - 0.055f;
   v *= 255.0f;
   // Round half up (course §a.0) or truncate (.cli §A.4). A float has 24 significant bits, so v + 0.5 is exact
   // in double and rounds v as std::lround(v) would; in float, v = 0.5 − 2⁻²⁵ would round up to 1.
-  const double half = mode == Conventions::ToByte::Truncate ? 0.0 : 0.5;
+  const double half = mode == Dialect::ToByte::Truncate ? 0.0 : 0.5;
   return static_cast<unsigned char>(int(double(v) + half));
 }
 
-void toBytes(const float* in, size_t count, unsigned char* out, Conventions::ToByte mode) {
+void toBytes(const float* in, size_t count, unsigned char* out, Dialect::ToByte mode) {
   for (size_t i = 0; i < count; ++i) out[i] = toByte(in[i], mode);
 }
 

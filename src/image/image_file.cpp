@@ -28,7 +28,7 @@ void checkImagePath(const std::string& path) {
   checkWritableFolder(path);
 }
 
-void writeImage(const Image& image, const std::string& path, Conventions::ToByte mode, int threads) {
+void writeImage(const Image& image, const std::string& path, Dialect::ToByte mode, int threads) {
   switch (imageFormat(path)) {
     case ImageFormat::Png: {
       Rgb8Image bytes(image.width(), image.height());

@@ -94,14 +94,7 @@ class CliParser {
   CliParser(std::string_view text, const std::string& file) : lines_(text, file) {
     scene_.file = file;
     scene_.language = SceneLanguage::Cs3451;
-    // The conventions that reproduce the course's reference images (docs/reference/cs3451.md §A.4).
-    Conventions& c = scene_.conventions;
-    c.toByte = Conventions::ToByte::Truncate;  // §A.4.2: (int)(255·c), Processing's colorCalc
-    c.clampEachBounce = true;                   // §A.4.5 intermediate clamping
-    c.reflectionMixes = false;                  // §A.4.5: local + Krefl·C_refl
-    c.tintReflection = false;                   // Krefl alone weights the reflection
-    c.maxDepth = 9;                             // §A.4.5 recursion limit: reflection rays 1…9,
-    c.shadeDeepest = false;                     // and the 9th returns black when it hits
+    scene_.dialect = Dialect::cs3451();  // the rules that reproduce the course's reference images
   }
 
   SceneDesc parse() {
@@ -125,7 +118,7 @@ class CliParser {
       }
       setFov(v[0], command.loc);
     } else if (name == "background") {
-      scene_.conventions.background = color(numbers(words, 3), 0);
+      scene_.background = color(numbers(words, 3), 0);
     } else if (name == "light") {
       const auto v = numbers(words, 6);
       LightDesc& light = scene_.lights.emplace_back();
@@ -254,7 +247,7 @@ class CliParser {
     }
     if (!haveFov_) throw ParseError(command.loc, "'write' comes before any 'fov', so there is no camera");
     writes_.push_back(WriteDesc{path, command.loc, scene_.lights.size(), scene_.objects.size(), scene_.camera,
-                                scene_.conventions.background});
+                                scene_.background});
   }
 
   LineSplitter lines_;

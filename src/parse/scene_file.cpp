@@ -78,9 +78,9 @@ SceneLanguage sceneLanguage(const std::string& path, std::string_view text) {
   return looksLikeCs3451(text) ? SceneLanguage::Cs3451 : SceneLanguage::Pov;
 }
 
-SceneLanguage povDialect(std::string_view text, Dialect dialect) {
-  if (dialect == Dialect::Auto) return povray::usesPovRayLanguage(text) ? SceneLanguage::PovRay : SceneLanguage::Pov;
-  return dialect == Dialect::PovRay ? SceneLanguage::PovRay : SceneLanguage::Pov;
+SceneLanguage povDialect(std::string_view text, DialectChoice dialect) {
+  if (dialect == DialectChoice::Auto) return povray::usesPovRayLanguage(text) ? SceneLanguage::PovRay : SceneLanguage::Pov;
+  return dialect == DialectChoice::PovRay ? SceneLanguage::PovRay : SceneLanguage::Pov;
 }
 
 SceneDesc loadScene(const std::string& path, int threads, const LoadOptions& options) {

@@ -121,7 +121,7 @@ Image render(const SceneDesc& desc, int width, int height, const Region& region,
 Rgb8Image renderRgb8(const SceneDesc& desc, int width, int height, const RenderOptions& options,
                      const RenderMonitor& monitor) {
   Rgb8Image image(width, height);
-  const Conventions::ToByte mode = desc.conventions.toByte;
+  const Dialect::ToByte mode = desc.dialect.toByte();
   renderRows(desc, width, height, wholeImage(width, height), options, monitor,
              [&](int x0, int y, int x1, const Color* colors) {
     toBytes(glm::value_ptr(*colors), size_t(x1 - x0) * 3, image.at(x0, y), mode);

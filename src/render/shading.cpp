@@ -130,11 +130,11 @@ Color beerAttenuation(const Color& pigment, float distance) {
   return kept;
 }
 
-Weights weights(const Material& m, float fresnel, bool reflectionMixes) {
+Weights weights(const Material& m, float fresnel, bool reflectionReplacesLocal) {
   const float f = m.filter;
   const float k = m.reflection;
   Weights w;
-  w.local = (1.0f - f) * (reflectionMixes ? 1.0f - k : 1.0f);
+  w.local = (1.0f - f) * (reflectionReplacesLocal ? 1.0f - k : 1.0f);
   w.reflection = (1.0f - f) * k + f * fresnel;
   w.transmission = f * (1.0f - fresnel);
   return w;

@@ -68,12 +68,13 @@ template <class T>
 Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
     : scene_(scene),
       options_(options),
-      conventions_(scene.desc().conventions),
+      dialect_(scene.desc().dialect),
+      background_(scene.desc().background),
+      maxDepth_(options.depth.value_or(scene.desc().maxDepth())),
       lastOccluder_(scene.lights().size(), nullptr),
       sky_(scene.desc().sky.get()),
       fogs_(!scene.desc().fogs.empty()),
       batches_(size_t(1 + (options.gi.enabled ? options.gi.bounceCount() : 0))) {
-  if (options.depth) conventions_.maxDepth = *options.depth;
   for (const Light<T>& light : scene.lights()) sampledLights_ = sampledLights_ || light.sampled;
   float localMax = 0, gain = 0;
   // Every material a hit can report: a CSG group's parts' too.
@@ -87,23 +88,22 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
       localMax = std::max(localMax, options.normals ? 1.0f : local);
       const float reflection = std::max(m.reflection, m.extras->reflectionMin);
       gain = std::max(gain, ((1 - m.filter) * reflection + m.filter) * std::max(1.0f, brightest(m.pigment)));
-      filteredShadows_ = filteredShadows_ || (conventions_.filteredShadows && m.filter > 0);
+      filteredShadows_ = filteredShadows_ || (dialect_.filtersShadows() && m.filter > 0);
     });
   }
   // What a ray that leaves the scene brings back; fogs add their colours (throughFogs).
   const SceneDesc& desc = scene.desc();
-  float background = std::max(brightest(conventions_.background), desc.sky ? brightest(desc.sky->bound()) : 0.0f);
+  float background = std::max(brightest(background_), desc.sky ? brightest(desc.sky->bound()) : 0.0f);
   float fogs = 0;
   for (const Fog& f : desc.fogs) fogs += brightest(f.colour.rgb);
   background = std::max(background, fogs);
   localMax = std::max(localMax, fogs);
   const auto level = [&](float children) {
-    const float shaded = localMax + gain * children;
-    return std::max(background, conventions_.clampEachBounce ? std::min(shaded, 1.0f) : shaded);
+    return std::max(background, dialect_.bounced(localMax + gain * children));
   };
   bound_.push_back(level(0));
-  for (int r = 1; r <= conventions_.maxDepth; ++r) bound_.push_back(level(bound_.back()));
-  const int fullDepth = std::min(conventions_.maxDepth, kFullTreeDepth);
+  for (int r = 1; r <= maxDepth_; ++r) bound_.push_back(level(bound_.back()));
+  const int fullDepth = std::min(maxDepth_, kFullTreeDepth);
   // Gathered light has no bound known beforehand: with -gi every secondary ray of any weight is traced, and
   // only the ray budget bounds a tree.
   cutoff_ = options.gi.enabled ? 0.0f : std::ldexp(0.5f / 255.0f, -(fullDepth + 1));
@@ -111,7 +111,7 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
 }
 
 template <class T> bool Tracer<T>::matters(float weight, int depth) {
-  if (raysLeft_ == 0 || sampleRaysLeft_ == 0 || weight * bound_[size_t(conventions_.maxDepth - depth)] < cutoff_) {
+  if (raysLeft_ == 0 || sampleRaysLeft_ == 0 || weight * bound_[size_t(maxDepth_ - depth)] < cutoff_) {
     return false;
   }
   --raysLeft_;
@@ -165,7 +165,7 @@ template <class T> Color Tracer<T>::meshPixel(const Camera<T>& camera, int x, in
 }
 
 template <class T> Color Tracer<T>::raised(const Color& c) const {
-  const float g = conventions_.gamma;
+  const float g = dialect_.gamma();
   return {std::pow(std::max(c.r, 0.0f), g), std::pow(std::max(c.g, 0.0f), g), std::pow(std::max(c.b, 0.0f), g)};
 }
 
@@ -306,14 +306,14 @@ typename Tracer<T>::Traced Tracer<T>::follow(const Ray<T>& ray, const std::optio
     record->dir = glm::dvec3(ray.dir);
   }
   if (!hit) {
-    Color sky = sky_ ? sky_->at(glm::dvec3(ray.dir), conventions_.background) : conventions_.background;
+    Color sky = sky_ ? sky_->at(glm::dvec3(ray.dir), background_) : background_;
     if (fogs_) sky = fogged(sky, ray, std::numeric_limits<T>::infinity());
     if (record) record->color = sky;
     return {sky, std::numeric_limits<T>::infinity()};
   }
   Color color = shade(ray, *hit, path, record, shadows);
   if (fogs_) color = fogged(color, ray, hit->t);
-  if (conventions_.clampEachBounce) color = glm::clamp(color, 0.0f, 1.0f);
+  color = dialect_.bounced(color);
   if (record) record->color = color;
   return {color, hit->t};
 }
@@ -335,8 +335,7 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
     record->normal = glm::dvec3(hit.normal);
     record->t = double(hit.t);
   }
-  // The .cli rule: the deepest ray that hits returns black (docs/reference/cs3451.md §A.4).
-  if (path.depth == conventions_.maxDepth && !conventions_.shadeDeepest) return Color(0);
+  if (path.depth == maxDepth_ && !dialect_.shadesAtDepthLimit()) return Color(0);
   if (options_.normals) return Color(hit.normal) * 0.5f + 0.5f;
 
   const Vec3<T> v = -ray.dir;
@@ -372,11 +371,11 @@ template <class T>
 Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Material& m, const Vec3<T>& n,
                          RayRecord* record, std::optional<Vec3<T>>& refracted) const {
   const float fresnel = options_.fresnel ? schlick(float(glm::dot(n, -ray.dir)), m.ior) : 0.0f;
-  Weights w = weights(m, fresnel, conventions_.reflectionMixes);
+  Weights w = weights(m, fresnel, dialect_.reflectionReplacesLocal());
   if (m.extras->reflectionFalloff > 0) {
     Material varied = m;
     varied.reflection = variableReflection(m, float(glm::dot(n, -ray.dir)));
-    w = weights(varied, fresnel, conventions_.reflectionMixes);
+    w = weights(varied, fresnel, dialect_.reflectionReplacesLocal());
   }
   if (w.transmission > 0) {
     // The outward normal as the shading normal bends it: hit.normal itself where nothing bends it.
@@ -659,7 +658,7 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
   // the object it travelled in (§c.4; Beer's law instead, §c.6), reflected light by the pigment (§c.3).
   const Color transmitTint = entering && !options_.beers ? m.pigment : Color(1);
   child.weight = path.weight * w.transmission * brightest(transmitTint);
-  if (child.depth <= conventions_.maxDepth && w.transmission > 0 && matters(child.weight, child.depth)) {
+  if (child.depth <= maxDepth_ && w.transmission > 0 && matters(child.weight, child.depth)) {
     RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
     if (sub) sub->extraInfo.push_back(entering ? "into-object" : "into-air");
     if (options_.gi.enabled) child.key = childKey(path.key, kRefractionBranch);
@@ -678,12 +677,12 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
     if (entering && m.extras->fadeDistance > 0) gathered *= interiorFade(m, float(t.distance));
     refraction = w.transmission * gathered;
   }
-  Color reflectTint = conventions_.tintReflection ? m.pigment : Color(1);
+  Color reflectTint = dialect_.reflectionTint(m.pigment);
   if (m.extras->reflectionMetallic != 0) {
     reflectTint *= metallicTint(m.pigment, m.extras->reflectionMetallic, float(glm::dot(n, -ray.dir)));
   }
   child.weight = path.weight * w.reflection * brightest(reflectTint);
-  if (child.depth <= conventions_.maxDepth && w.reflection > 0 && matters(child.weight, child.depth)) {
+  if (child.depth <= maxDepth_ && w.reflection > 0 && matters(child.weight, child.depth)) {
     RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
     if (options_.gi.enabled) child.key = childKey(path.key, kReflectionBranch);
     ++counts_.secondary;

@@ -9,8 +9,8 @@ SceneDesc sceneAt(const SceneDesc& whole, const WriteDesc& write) {
   scene.camera = write.camera;
   scene.lights.assign(whole.lights.begin(), whole.lights.begin() + std::ptrdiff_t(write.lights));
   scene.objects.assign(whole.objects.begin(), whole.objects.begin() + std::ptrdiff_t(write.objects));
-  scene.conventions = whole.conventions;
-  scene.conventions.background = write.background;
+  scene.dialect = whole.dialect;
+  scene.background = write.background;
   return scene;
 }
 

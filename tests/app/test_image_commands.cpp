@@ -377,7 +377,7 @@ TEST_CASE("image commands: with --gi-cache, tiles merge into the one-machine byt
   const rt::ExrImage image = rt::readExr(exact);
   for (const auto& [x, y] : {std::pair{20, 15}, std::pair{5, 3}, std::pair{30, 8}}) {
     const rt::Color c = image.pixels.at(x, y);
-    const auto byte = [](float v) { return std::to_string(rt::toByte(v, rt::Conventions().toByte)); };
+    const auto byte = [](float v) { return std::to_string(rt::toByte(v, rt::Dialect::course().toByte())); };
     const std::string printed = outputOf(with({"pixelcolor", scene, "40", "30", std::to_string(x), std::to_string(y)}));
     CAPTURE(x, y, printed);
     REQUIRE(printed.find("No Hit") == std::string::npos);

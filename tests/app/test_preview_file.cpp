@@ -24,7 +24,7 @@ std::vector<rt::Color> pixelsOf(const std::string& path) {
 TEST_CASE("preview: the rows that have arrived, black elsewhere, in the region's place") {
   // Columns 2-5 and rows 1-2 (from the top) of an 8 × 4 picture: picture rows 2 and 1 counted upward.
   const rt::Region region{2, 1, 6, 3};
-  rt::LivePicture picture(4, region, rt::Conventions::ToByte::Round);
+  rt::LivePicture picture(4, region, rt::Dialect::ToByte::Round);
   const std::vector<rt::Color> row{{1, 0, 0}, {0, 0.5f, 0}, {0, 0, 2}};
   picture.row(3, 2, 6, row.data());  // the region's top row, but its first pixel
   CHECK(picture.rowsSeen() == 1);
@@ -32,7 +32,7 @@ TEST_CASE("preview: the rows that have arrived, black elsewhere, in the region's
   const std::string path = dir.file("p.exr");
   std::ostringstream errors;
   {
-    rt::PreviewFile preview(picture, path, rt::Conventions::ToByte::Round, errors, 3600);
+    rt::PreviewFile preview(picture, path, rt::Dialect::ToByte::Round, errors, 3600);
     preview.write();
     const rt::Color black(0);
     CHECK(pixelsOf(path) == std::vector<rt::Color>{black, row[0], row[1], row[2], black, black, black, black});

@@ -18,9 +18,9 @@
 #include "raytrace/image/image_file.hpp"
 #include "temp_dir.hpp"
 
-using rt::Conventions;
+using rt::Dialect;
 using rt::toByte;
-using Mode = Conventions::ToByte;
+using Mode = Dialect::ToByte;
 
 namespace {
 

@@ -27,7 +27,7 @@
 #include "raytrace/util/error.hpp"
 #include "temp_dir.hpp"
 
-using Mode = rt::Conventions::ToByte;
+using Mode = rt::Dialect::ToByte;
 
 namespace {
 

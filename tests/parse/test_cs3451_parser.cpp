@@ -78,7 +78,7 @@ TEST_CASE("cs3451_parser: every command, in the course's argument orders (cs3451
       "write out.png\n");
   CHECK(s.language == SceneLanguage::Cs3451);
   CHECK(s.file == "t.cli");
-  CHECK(s.conventions.background == Color(.2f, .3f, 1));
+  CHECK(s.background == Color(.2f, .3f, 1));
   REQUIRE(s.lights.size() == 1);
   CHECK(s.lights[0].color == Color(.7f, .6f, .5f));  // colour first,
   CHECK(s.lights[0].position == glm::dvec3(4, 3, 8));  // then position
@@ -108,15 +108,15 @@ TEST_CASE("cs3451_parser: every command, in the course's argument orders (cs3451
   CHECK(sceneAt(s, s.writes[0]).writes.empty());
 }
 
-TEST_CASE("cs3451_parser: the language's conventions are set for every scene (cs3451 A.4)") {
-  const Conventions c = parse("fov 60\n").conventions;
-  CHECK(c.background == Color(0));  // the starter's background(0,0,0)
-  CHECK(c.toByte == Conventions::ToByte::Truncate);
-  CHECK(c.clampEachBounce);
-  CHECK_FALSE(c.reflectionMixes);
-  CHECK_FALSE(c.tintReflection);
-  CHECK(c.maxDepth == 9);
-  CHECK_FALSE(c.shadeDeepest);
+TEST_CASE("cs3451_parser: every scene has the language's dialect (cs3451 A.4)") {
+  const SceneDesc s = parse("fov 60\n");
+  CHECK(s.background == Color(0));  // the starter's background(0,0,0)
+  CHECK(s.dialect.toByte() == Dialect::ToByte::Truncate);
+  CHECK(s.dialect.bounced(Color(2, 0.5f, -1)) == Color(1, 0.5f, 0));
+  CHECK_FALSE(s.dialect.reflectionReplacesLocal());
+  CHECK(s.dialect.reflectionTint(Color(0.5f)) == Color(1));
+  CHECK(s.maxDepth() == 9);
+  CHECK_FALSE(s.dialect.shadesAtDepthLimit());
 }
 
 TEST_CASE("cs3451_parser: commands run in order; each write keeps the scene as it stood") {
@@ -133,13 +133,13 @@ TEST_CASE("cs3451_parser: commands run in order; each write keeps the scene as i
   const SceneDesc a = sceneAt(s, s.writes[0]);
   CHECK(a.objects.size() == 1);
   CHECK(a.lights.empty());
-  CHECK(a.conventions.background == Color(0));
+  CHECK(a.background == Color(0));
   CHECK(a.camera.up.y == Approx(2 * std::tan(glm::radians(30.0))));
   const SceneDesc b = sceneAt(s, s.writes[1]);
   CHECK(s.writes[1].path == "b.PNG");
   CHECK(b.objects.size() == 2);
   CHECK(b.lights.size() == 1);
-  CHECK(b.conventions.background == Color(1, 0, 0));
+  CHECK(b.background == Color(1, 0, 0));
   CHECK(b.camera.up.y == Approx(2.0));
   // A surface applies to the objects after it only.
   CHECK(b.objects[0].material.diffuse == Color(.4f, .5f, .6f));

@@ -95,8 +95,8 @@ TEST_CASE("pov: defaults of §b") {
   CHECK(m.roughness == 1.0f);
   CHECK(m.reflection == 0.0f);
   CHECK(m.ior == 1.0f);
-  CHECK(s.conventions.toByte == rt::Conventions::ToByte::Round);
-  CHECK(s.conventions.background == rt::Color(0));
+  CHECK(s.dialect.toByte() == rt::Dialect::ToByte::Round);
+  CHECK(s.background == rt::Color(0));
 }
 
 TEST_CASE("pov: every shape with its parameters") {

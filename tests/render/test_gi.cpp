@@ -43,7 +43,7 @@ TEST_CASE("GI sky: a black sphere above a floor hides sin²α of the cosine-weig
   // the cone's share is sin²α; one bounce, so the sphere returns black. A uniform hemisphere would hide
   // 1 − cos α instead (0.134 here, not 0.25).
   SceneDesc scene;
-  scene.conventions.background = Color(1);
+  scene.background = Color(1);
   scene.camera.location = {0, 1, 10};
   scene.camera.lookAt = {0, 0, 0};
   add(scene, PlaneDesc{{0, 1, 0}, 0}, matte(Color(0), Color(0)));

@@ -144,7 +144,7 @@ TEST_CASE("Ward and Heckbert's gradients match those of a sphere hiding part of 
   // s along x from the foot of the sphere at height H: d/ds = 3Hr²s/(H² + s²)^(5/2). Turning n about axis a:
   // d/dω = −(r²/|C − p|²)·a·(n × ĉ).
   SceneDesc scene;
-  scene.conventions.background = Color(1);
+  scene.background = Color(1);
   scene.camera.location = {1.5, 3, 3};
   scene.camera.lookAt = {1.5, 0, 0};
   scene.camera.right = {1, 0, 0};

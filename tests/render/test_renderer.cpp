@@ -109,32 +109,31 @@ TEST_CASE("Cook-Torrance replaces the specular term under -altbrdf", "[render]")
   checkColor(centre(scene, options), kPigment * float(0.04 / (4 * M_PI * 0.0625)));
 }
 
-TEST_CASE("A mirror mixes in the tinted reflection, or adds it untinted under the .cli conventions", "[render]") {
+TEST_CASE("A mirror mixes in the tinted reflection, or adds it untinted in the .cli dialect", "[render]") {
   SceneDesc scene = emptyScene();
-  scene.conventions.background = Color(0.2f, 0.4f, 0.6f);
+  scene.background = Color(0.2f, 0.4f, 0.6f);
   // The plane z = −5 faces the camera; its reflection goes back past the eye into the background.
   add(scene, PlaneDesc{{0, 0, 1}, -5}, pov(kPigment, 0.2f, 0, 0, 1, 0.5f));
-  const Color b = scene.conventions.background;
+  const Color b = scene.background;
   checkColor(centre(scene), 0.5f * 0.2f * kPigment + 0.5f * kPigment * b);  // §c.3, §c.5
-  scene.conventions.reflectionMixes = false;
-  scene.conventions.tintReflection = false;
-  checkColor(centre(scene), 0.2f * kPigment + 0.5f * b);  // cs3451 §A.4
+  scene.dialect = Dialect::cs3451();
+  checkColor(centre(scene), 0.2f * kPigment + 0.5f * b);  // cs3451 §A.4.5
 }
 
 TEST_CASE("Clamping each bounce keeps every returned colour within [0, 1]", "[render]") {
   SceneDesc scene = emptyScene();
   add(scene, SphereDesc{{0, 0, -5}, 1}, pov(Color(1), 3, 0));
   CHECK(centre(scene).r == 3.0f);
-  scene.conventions.clampEachBounce = true;
+  scene.dialect = Dialect::cs3451();
   CHECK(centre(scene).r == 1.0f);
 }
 
-// Two facing mirrors of reflection ½ and ambient 1: each level adds ½·(½)^depth, so the pixel shows how many
-// levels were shaded.
-SceneDesc mirrorHall() {
+// Two facing mirrors of reflection ½ and ambient `ambient`: in the course's dialect each level adds
+// ½·(½)^depth for ambient 1, so the pixel shows how many levels were shaded.
+SceneDesc mirrorHall(float ambient = 1) {
   SceneDesc scene = emptyScene();
-  add(scene, PlaneDesc{{0, 0, 1}, -5}, pov(Color(1), 1, 0, 0, 1, 0.5f));
-  add(scene, PlaneDesc{{0, 0, -1}, -5}, pov(Color(1), 1, 0, 0, 1, 0.5f));
+  add(scene, PlaneDesc{{0, 0, 1}, -5}, pov(Color(1), ambient, 0, 0, 1, 0.5f));
+  add(scene, PlaneDesc{{0, 0, -1}, -5}, pov(Color(1), ambient, 0, 0, 1, 0.5f));
   return scene;
 }
 
@@ -142,11 +141,14 @@ TEST_CASE("Recursion stops after the primary ray and maxDepth secondary rays", "
   SceneDesc scene = mirrorHall();
   // Course: primary + 5 secondary, all shaded; the deepest one spawns nothing (§c.9).
   CHECK(centre(scene).r == 1.0f - std::ldexp(1.0f, -6));
-  scene.conventions.maxDepth = 2;
+  scene.depthLimit = 2;
   CHECK(centre(scene).r == 1.0f - std::ldexp(1.0f, -3));
-  // .cli: the deepest ray that hits returns black.
-  scene.conventions.shadeDeepest = false;
-  CHECK(centre(scene).r == 0.75f);
+  // .cli: the deepest ray that hits returns black, and each level adds ½ of the one below to its ambient ½:
+  // ½ + ½·(½ + ½·0), where shading the deepest would give ½ + ½·(½ + ½·½).
+  SceneDesc cli = mirrorHall(0.5f);
+  cli.dialect = Dialect::cs3451();
+  cli.depthLimit = 2;
+  CHECK(centre(cli).r == 0.75f);
 }
 
 TEST_CASE("The recorded ray tree is the traced one: one chain of maxDepth reflections", "[render]") {
@@ -166,7 +168,7 @@ TEST_CASE("The recorded ray tree is the traced one: one chain of maxDepth reflec
     CHECK(node->kind == RayRecord::Kind::Reflection);
     ++depth;
   }
-  CHECK(depth == desc.conventions.maxDepth);
+  CHECK(depth == desc.maxDepth());
   CHECK(node->hit);
   CHECK(node->reflection == Color(0));  // its reflection was not traced
 }
@@ -276,7 +278,7 @@ TEST_CASE("renderRgb8 holds the bytes of render()'s colours, on any number of th
       for (int y = 0; y < 37; ++y) {
         for (int x = 0; x < 45; ++x) {
           for (int c = 0; c < 3; ++c) {
-            REQUIRE(bytes.at(x, y)[c] == toByte(colours.at(x, y)[c], scene.conventions.toByte));
+            REQUIRE(bytes.at(x, y)[c] == toByte(colours.at(x, y)[c], scene.dialect.toByte()));
           }
         }
       }
@@ -471,7 +473,7 @@ TEST_CASE("A scene's gamma raises each pixel's colour before it is written, in r
   SceneDesc scene = emptyScene();
   scene.lights.push_back({{0, 4, 0}, Color(1)});
   add(scene, SphereDesc{{0, 0, -5}, 1}, pov(kPigment, 1.0f, 0.0f));
-  scene.conventions.gamma = 2.2f;
+  scene.dialect = Dialect::povray(2.2);
   const Color expected(1.0f, std::pow(0.5f, 2.2f), std::pow(0.25f, 2.2f));
   checkColor(centre(scene), expected);
   const Scene<double> built(scene, chooseArithmetic(scene));

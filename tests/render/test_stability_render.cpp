@@ -29,7 +29,7 @@ bool allFinite(const Image& image) {
 }
 
 // The share of pixels whose 8-bit colour differs in any channel.
-double shareDiffering(const Image& a, const Image& b, Conventions::ToByte mode) {
+double shareDiffering(const Image& a, const Image& b, Dialect::ToByte mode) {
   int differ = 0;
   for (int y = 0; y < a.height(); ++y) {
     for (int x = 0; x < a.width(); ++x) {
@@ -92,7 +92,7 @@ TEST_CASE("a scene moved far from the origin renders like the original", "[stabi
   const Image before = render(original, 160, 120, options);
   const Image after = render(moved, 160, 120, options);
   CHECK(allFinite(after));
-  const double share = shareDiffering(before, after, original.conventions.toByte);
+  const double share = shareDiffering(before, after, original.dialect.toByte());
   CAPTURE(share);
   CHECK(share <= 0.001);
 }
@@ -154,8 +154,7 @@ TEST_CASE("recursion between facing mirrors matches the geometric series", "[sta
   CAPTURE(k, depth);
   SceneDesc scene;
   scene.camera.right = {1, 0, 0};
-  scene.conventions.reflectionMixes = false;  // local + k·reflected, the .cli rule: the series stays simple
-  scene.conventions.tintReflection = false;
+  scene.dialect = Dialect::povray(0);  // local + k·reflected, untinted: the series stays simple
   Material mirror;
   const float e = 0.05f;
   mirror.pigment = Color(1);
@@ -180,11 +179,11 @@ TEST_CASE("renders are deterministic, also with coincident surfaces", "[stabilit
   RenderOptions options;
   options.samples = 2;
   const Image first = render(scene, 80, 60, options), second = render(scene, 80, 60, options);
-  CHECK(shareDiffering(first, second, scene.conventions.toByte) == 0);
+  CHECK(shareDiffering(first, second, scene.dialect.toByte()) == 0);
 
   SceneDesc doubled = scene;
   for (const ObjectDesc& o : scene.objects) doubled.objects.push_back(o);
-  CHECK(shareDiffering(first, render(doubled, 80, 60, options), scene.conventions.toByte) == 0);
+  CHECK(shareDiffering(first, render(doubled, 80, 60, options), scene.dialect.toByte()) == 0);
 }
 
 }  // namespace rt

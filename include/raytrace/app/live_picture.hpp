@@ -15,7 +15,7 @@ namespace rt {
 // a PNG would hold (converted with the scene's convention), so that a window shows what the file will.
 class LivePicture : public PixelObserver {
  public:
-  LivePicture(int height, const Region& region, Conventions::ToByte mode);
+  LivePicture(int height, const Region& region, Dialect::ToByte mode);
 
   void row(int x0, int y, int x1, const Color* colors) override;
 
@@ -30,7 +30,7 @@ class LivePicture : public PixelObserver {
  private:
   int bottom_;  // the picture's row (counted upward) of the region's bottom row
   int left_;
-  Conventions::ToByte mode_;
+  Dialect::ToByte mode_;
   mutable std::mutex mutex_;
   Image colors_;
   Rgb8Image bytes_;

@@ -16,7 +16,7 @@ class PreviewFile {
  public:
   // Starts writing `picture` to `path` every `seconds` (while rows have arrived since the last write). A write
   // that fails is reported once on `errors`, and previewing stops; the render goes on.
-  PreviewFile(const LivePicture& picture, std::string path, Conventions::ToByte mode, std::ostream& errors,
+  PreviewFile(const LivePicture& picture, std::string path, Dialect::ToByte mode, std::ostream& errors,
               double seconds = 3);
   // Writes the picture as it stands one last time and stops.
   ~PreviewFile();
@@ -30,7 +30,7 @@ class PreviewFile {
  private:
   const LivePicture& picture_;
   std::string path_;
-  Conventions::ToByte mode_;
+  Dialect::ToByte mode_;
   std::ostream& errors_;
   bool failed_ = false;
   uint64_t written_ = 0;  // the rows the file last written holds

@@ -13,7 +13,7 @@ namespace rt {
 // people reading the header; merge goes by the data window.
 constexpr const char* kTilePartAttribute = "raytrace.part";
 // The attribute naming the byte conversion ("round" or "truncate") that turns the tile's floats into a PNG's
-// bytes, the scene language's (Conventions::ToByte).
+// bytes, the scene language's (Dialect::ToByte).
 constexpr const char* kToByteAttribute = "raytrace.toByte";
 
 // The attribute naming which of a .cli scene's own images (its `write`) a tile is of.
@@ -35,6 +35,6 @@ std::string tileStaleness(const Invocation& inv, const std::string& command, con
                           const WriteDesc* write = nullptr);
 
 // The byte conversion a header names, or an Error naming `file` for another value.
-Conventions::ToByte toByteOf(const std::map<std::string, std::string>& header, const std::string& file);
+Dialect::ToByte toByteOf(const std::map<std::string, std::string>& header, const std::string& file);
 
 }  // namespace rt

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "raytrace/geometry/math.hpp"
-#include "raytrace/scene/description.hpp"
+#include "raytrace/scene/dialect.hpp"
 
 namespace rt {
 
@@ -55,8 +55,8 @@ class Rgb8Image {
 };
 
 // One colour channel to a byte: clamp to [0,1], then round (course §a.0) or truncate (.cli §A.4).
-unsigned char toByte(float c, Conventions::ToByte mode);
+unsigned char toByte(float c, Dialect::ToByte mode);
 // toByte() of `count` channels in a row, into `out`.
-void toBytes(const float* in, size_t count, unsigned char* out, Conventions::ToByte mode);
+void toBytes(const float* in, size_t count, unsigned char* out, Dialect::ToByte mode);
 
 }  // namespace rt

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "raytrace/image/image.hpp"
-#include "raytrace/scene/description.hpp"
+#include "raytrace/scene/dialect.hpp"
 
 namespace rt {
 
@@ -20,6 +20,6 @@ void checkImagePath(const std::string& path);
 
 // Writes the image in the format its name gives: PNG of its channels converted by toByte(mode) on `threads`
 // threads, or the linear floats themselves. Throws Error.
-void writeImage(const Image& image, const std::string& path, Conventions::ToByte mode, int threads);
+void writeImage(const Image& image, const std::string& path, Dialect::ToByte mode, int threads);
 
 }  // namespace rt

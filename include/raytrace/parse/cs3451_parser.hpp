@@ -10,7 +10,7 @@
 namespace rt {
 
 // Parses a whole .cli text. The result is the scene as it stands at the end of the file, with one WriteDesc
-// per `write` (the scene as it stood at that line) and the language's conventions (docs/reference/cs3451.md §A.4).
+// per `write` (the scene as it stood at that line) and the language's dialect (Dialect::cs3451()).
 // Throws ParseError ("file:line:col: error: …") at the first problem, so nothing is rendered from a bad file.
 SceneDesc parseCs3451(std::string_view text, const std::string& file);
 

@@ -38,10 +38,10 @@ SceneLanguage sceneLanguage(const std::string& path, std::string_view text);
 
 // How a .pov file is read: by the rule of docs/povray-language.md (POV-Ray 3.7 when it uses a directive or
 // global_settings, else the course's subset), or as the command line's --dialect says.
-enum class Dialect { Auto, Course, PovRay };
+enum class DialectChoice { Auto, Course, PovRay };
 
 struct LoadOptions {
-  Dialect dialect = Dialect::Auto;
+  DialectChoice dialect = DialectChoice::Auto;
   std::vector<std::string> libraryPaths;  // -L: folders a POV-Ray scene's #include searches
   int width = 320, height = 240;          // POV-Ray's image_width and image_height
   std::vector<std::string> declares;      // -D name=value: identifiers a POV-Ray scene starts with
@@ -51,7 +51,7 @@ struct LoadOptions {
 };
 
 // The POV language a .pov file is read in.
-SceneLanguage povDialect(std::string_view text, Dialect dialect);
+SceneLanguage povDialect(std::string_view text, DialectChoice dialect);
 
 // Reads and parses a scene in its language (sceneLanguage), a large POV file on up to `threads` threads.
 SceneDesc loadScene(const std::string& path, int threads = 1, const LoadOptions& options = {});

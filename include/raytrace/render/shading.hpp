@@ -74,10 +74,11 @@ Color metallicTint(const Color& pigment, float metallic, float cosTheta);
 
 // How a hit's colour is split between its local shading and its two secondary rays (§c.5): local
 // (1−f)(1−k), reflection (1−f)k + fF, transmission f(1−F) for filter f, reflection k and Fresnel
-// reflectance F. When reflection does not mix (the .cli rule, cs3451 §A.4) local keeps (1−f) whole.
+// reflectance F. When reflection does not replace local light (Dialect::reflectionReplacesLocal: the .cli rule,
+// cs3451 §A.4.5, and POV-Ray's) local keeps (1−f) whole.
 struct Weights {
   float local = 1, reflection = 0, transmission = 0;
 };
-Weights weights(const Material& m, float fresnel, bool reflectionMixes);
+Weights weights(const Material& m, float fresnel, bool reflectionReplacesLocal);
 
 }  // namespace rt

@@ -26,7 +26,7 @@ constexpr uint64_t kSampleRays = uint64_t(1) << 20;
 
 template <class T> class Tracer {
  public:
-  // Reads the options and the scene's Conventions; `scene` must outlive the tracer. A tracer keeps a shadow
+  // Reads the options and the scene's Dialect; `scene` must outlive the tracer. A tracer keeps a shadow
   // cache and its buffers, so each thread uses its own copy.
   Tracer(const Scene<T>& scene, const RenderOptions& options);
 
@@ -42,9 +42,9 @@ template <class T> class Tracer {
   // the root of ray i's random numbers (pixelKey). Neither averaged nor finished; the tracer's own memory,
   // valid until its next call. Adaptive anti-aliasing (render/antialias) traces its samples with it.
   const Color* eyeRays(const Ray<T>* rays, const uint64_t* keys, size_t count);
-  // A pixel's average as it is written: raised to the scene's gamma (Conventions::gamma). Inline: anti-aliasing
+  // A pixel's average as it is written: raised to the scene's gamma (Dialect::gamma). Inline: anti-aliasing
   // finishes every pixel's first ray to compare it.
-  Color finished(const Color& c) const { return conventions_.gamma == 1 ? c : raised(c); }
+  Color finished(const Color& c) const { return dialect_.gamma() == 1 ? c : raised(c); }
 
   // The colour of pixel (x, y) under a camera's focal blur (render/focal_blur.cpp): lens samples until
   // POV-Ray's confidence test holds or the camera's most are taken.
@@ -189,7 +189,9 @@ template <class T> class Tracer {
 
   const Scene<T>& scene_;
   RenderOptions options_;
-  Conventions conventions_;
+  Dialect dialect_;
+  Color background_;  // what a ray that leaves the scene sees where no sky is
+  int maxDepth_;      // the deepest secondary ray traced: the command line's, the scene's or its dialect's
   std::vector<float> bound_;  // bound_[r]: the brightest colour a ray with r levels of recursion left can return
   float cutoff_;
   int treeRays_;      // the most rays an eye ray's tree may have: a full tree of depth min(maxDepth, kFullTreeDepth)

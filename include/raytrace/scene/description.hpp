@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "raytrace/util/error.hpp"
+#include "raytrace/scene/dialect.hpp"
 #include "raytrace/scene/radiosity.hpp"
 #include "raytrace/scene/projection.hpp"
 #include "raytrace/shapes/shape_desc.hpp"
@@ -77,25 +78,8 @@ struct LightDesc {
   bool mediaInteraction = true;  // `media_interaction off`: scattering media do not see it
 };
 
-// How a scene language wants its pictures made: the conventions that reproduce each course's reference
-// images. They belong to the language, not to the renderer, so each parser fills them in once.
-struct Conventions {
-  Color background{0};
-  // course: round(c·255); .cli: (int)(c·255); POV-Ray 3.7 with assumed_gamma 1: round(sRGB(c)·255)
-  enum class ToByte { Round, Truncate, Srgb } toByte = ToByte::Round;
-  // POV-Ray's assumed_gamma other than 1: each pixel's colour c becomes c^gamma before it is written (so that
-  // sRGB(c^gamma) are its bytes, as POV-Ray's pictures show).
-  float gamma = 1;
-  bool clampEachBounce = false;  // .cli clamps every shade() result to [0,1] before it is weighted
-  bool reflectionMixes = true;   // course: local·(1−f)(1−k) + k·C·reflected; .cli: local + k·reflected
-  bool tintReflection = true;    // course multiplies reflected light by the pigment (§c.3)
-  int maxDepth = 5;              // deepest secondary ray (primary = 0) that is traced (§c.9)
-  bool shadeDeepest = true;      // .cli: a ray at maxDepth that hits returns black (cs3451 §A.4)
-  bool filteredShadows = false;  // POV-Ray: light reaches a point through transparent surfaces, tinted by each
-};
-
-// Pov is the course's subset of POV-Ray; PovRay the POV-Ray 3.7 language (docs/povray-language.md), whose
-// shading model later work picks by this.
+// Pov is the course's subset of POV-Ray; PovRay the POV-Ray 3.7 language (docs/povray-language.md). Each
+// language's shading rules are its Dialect (dialect.hpp).
 enum class SceneLanguage { Pov, Cs3451, PovRay };
 
 // An image the file itself asks for (.cli `write`), showing the scene as it stood at that command. A .cli file
@@ -123,7 +107,9 @@ struct SceneDesc {
   CameraDesc camera;
   std::vector<LightDesc> lights;
   std::vector<ObjectDesc> objects;
-  Conventions conventions;
+  Dialect dialect = Dialect::course();  // the language's shading rules, chosen by its parser
+  Color background{0};
+  std::optional<int> depthLimit;  // the scene's own (POV-Ray's max_trace_level), over its dialect's
   std::shared_ptr<const SkySphere> sky;  // seen where a ray leaves the scene, over the background
   std::vector<Fog> fogs;                 // each ray crosses them in order
   std::optional<RadiosityDesc> radiosity;  // POV-Ray's radiosity block: the ambient term gathered (docs/gi.md)
@@ -134,6 +120,8 @@ struct SceneDesc {
   // The files besides itself whose contents the scene read (includes, images, #read data, fonts), as found,
   // in the order first found: what a tile of it depends on.
   std::vector<std::string> inputFiles;
+  // The deepest secondary ray traced (the eye ray is depth 0): the scene's limit, or its dialect's.
+  int maxDepth() const { return depthLimit.value_or(dialect.depthLimit()); }
 };
 
 // The scene `write` shows (see WriteDesc), without the writes.

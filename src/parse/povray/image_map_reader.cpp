@@ -24,7 +24,7 @@ void useIndices(const std::string& path, ImageMap& image) {
 }
 
 // An image_map, or a bump_map when `bump` is given: then bump_size, use_index and use_color are read into it.
-std::shared_ptr<const ImageMap> readImage(const Node& n, Refusals& refusals, BumpMapSettings* bump) {
+std::shared_ptr<const ImageMap> readImage(const Node& n, ReadingContext& context, BumpMapSettings* bump) {
   static constexpr std::string_view kTypes[] = {"gif", "hdr", "jpeg", "pgm", "png", "ppm", "sys", "tga"};
   static constexpr std::string_view kRefusedTypes[] = {"exr", "iff", "tiff"};
   std::string name;
@@ -48,14 +48,14 @@ std::shared_ptr<const ImageMap> readImage(const Node& n, Refusals& refusals, Bum
       continue;
     }
     if (it.kind != Item::Kind::Keyword) {
-      refusals.refuse(it, "a value in image_map");
+      context.refuse(it, "a value in image_map");
       refused = true;
       continue;
     }
     const std::string_view w = it.word;
     if (std::find(std::begin(kTypes), std::end(kTypes), w) != std::end(kTypes)) continue;
     if (std::find(std::begin(kRefusedTypes), std::end(kRefusedTypes), w) != std::end(kRefusedTypes)) {
-      refusals.refuse(it.loc, "image_map " + std::string(w));
+      context.refuse(it.loc, "image_map " + std::string(w));
       refused = true;
     } else if (w == "once") {
       settings.once = true;
@@ -67,7 +67,7 @@ std::shared_ptr<const ImageMap> readImage(const Node& n, Refusals& refusals, Bum
                            : type == 2 ? ImageMap::Mapping::Cylindrical
                                        : ImageMap::Mapping::Torus;
       } else {
-        refusals.refuse(it.loc, "image_map map_type " + std::to_string(int(type)));
+        context.refuse(it.loc, "image_map map_type " + std::to_string(int(type)));
         refused = true;
       }
     } else if (w == "interpolate") {
@@ -75,7 +75,7 @@ std::shared_ptr<const ImageMap> readImage(const Node& n, Refusals& refusals, Bum
       if (kind == 2 || kind == 4) {
         settings.interpolation = kind == 2 ? ImageMap::Interpolation::Bilinear : ImageMap::Interpolation::NormalizedDistance;
       } else {
-        refusals.refuse(it.loc, "image_map interpolate " + std::to_string(int(kind)));
+        context.refuse(it.loc, "image_map interpolate " + std::to_string(int(kind)));
         refused = true;
       }
     } else if (w == "gamma") {
@@ -99,15 +99,15 @@ std::shared_ptr<const ImageMap> readImage(const Node& n, Refusals& refusals, Bum
       bump->useIndex = w == "use_index";
     } else {
       // use_color, use_index, premultiplied …
-      refusals.refuse(it.loc, std::string(n.keyword) + " " + std::string(w));
+      context.refuse(it.loc, std::string(n.keyword) + " " + std::string(w));
       refused = true;
     }
   }
   if (name.empty()) throw ParseError(n.loc, std::string(n.keyword) + " needs an image file");
   if (refused) return nullptr;
-  const std::string path = refusals.findFile ? refusals.findFile(name) : name;
+  const std::string path = context.findFile ? context.findFile(name) : name;
   if (path.empty()) throw ParseError(nameAt, "cannot find the image map \"" + name + "\"");
-  const std::optional<double> working = refusals.imageGamma ? refusals.imageGamma() : std::optional<double>(1.0);
+  const std::optional<double> working = context.imageGamma ? context.imageGamma() : std::optional<double>(1.0);
   // Before #version 3.7 a file's values are the scene's colours as they are; from 3.7 on they are decoded
   // (sRGB unless `gamma` says otherwise) and put in the scene's working gamma (measured against POV-Ray 3.7).
   // A bump map's file holds linear heights: its values are taken as they are (the manual, "Bump Map").
@@ -127,10 +127,10 @@ std::shared_ptr<const ImageMap> readImage(const Node& n, Refusals& refusals, Bum
 
 }  // namespace
 
-std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals) { return readImage(n, refusals, nullptr); }
+std::shared_ptr<const ImageMap> readImageMap(const Node& n, ReadingContext& context) { return readImage(n, context, nullptr); }
 
-std::shared_ptr<const ImageMap> readBumpMap(const Node& n, Refusals& refusals, BumpMapSettings& settings) {
-  return readImage(n, refusals, &settings);
+std::shared_ptr<const ImageMap> readBumpMap(const Node& n, ReadingContext& context, BumpMapSettings& settings) {
+  return readImage(n, context, &settings);
 }
 
 }  // namespace rt::povray

@@ -23,9 +23,9 @@ std::shared_ptr<const Node> asPigment(const Node& n) {
 
 // `density { … }`. Unlike a pigment's, a density's defaults are white and, for a pattern without a map, a
 // ramp from black at 0 to white at 1 (POV-Ray 3.7 manual, "Density").
-std::shared_ptr<const Pigment> readDensity(const Node& n, Refusals& refusals) {
+std::shared_ptr<const Pigment> readDensity(const Node& n, ReadingContext& context) {
   const std::shared_ptr<const Node> body = asPigment(n);
-  auto p = std::make_shared<Pigment>(*nestedPigment(*body, refusals));
+  auto p = std::make_shared<Pigment>(*nestedPigment(*body, context));
   const bool coloured = std::any_of(body->items.begin(), body->items.end(), [](const Item& it) {
     return (it.kind == Item::Kind::Value && it.value.numeric()) || (it.kind == Item::Kind::Node && it.node->keyword == "pigment");
   });
@@ -70,11 +70,11 @@ Scattering readScattering(const Node& n) {
 
 }  // namespace
 
-std::optional<Media> readMedia(const Node& n, Refusals& refusals) {
+std::optional<Media> readMedia(const Node& n, ReadingContext& context) {
   Media media;
   bool refused = false;
   const auto refuse = [&](const SourceLoc& loc, std::string_view what) {
-    refusals.refuse(loc, what);
+    context.refuse(loc, what);
     refused = true;
   };
   // The value after item i (i moves onto it), which follows the keyword `key`.
@@ -92,13 +92,13 @@ std::optional<Media> readMedia(const Node& n, Refusals& refusals) {
     const Item& it = n.items[i];
     if (it.kind == Item::Kind::Node && it.node->keyword == "media") {
       // A declared medium, which the rest of the block modifies.
-      const std::optional<Media> declared = readMedia(*it.node, refusals);
+      const std::optional<Media> declared = readMedia(*it.node, context);
       if (declared) media = *declared;
       refused = refused || !declared;
       continue;
     }
     if (it.kind == Item::Kind::Node && it.node->keyword == "density") {
-      media.densities.push_back(readDensity(*it.node, refusals));
+      media.densities.push_back(readDensity(*it.node, context));
       continue;
     }
     if (it.kind == Item::Kind::Node && it.node->keyword == "scattering") {
@@ -135,7 +135,7 @@ std::optional<Media> readMedia(const Node& n, Refusals& refusals) {
     }
   }
   if (refused) return std::nullopt;
-  refusals.media = true;
+  context.media = true;
   return media;
 }
 

@@ -44,12 +44,12 @@ int second(const Node& n, size_t& i, int least) {
 
 }  // namespace
 
-RadiosityDesc readRadiosity(const Node& n, Refusals& refusals) {
+RadiosityDesc readRadiosity(const Node& n, ReadingContext& context) {
   RadiosityDesc r;
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     if (it.kind != Item::Kind::Keyword) {
-      refusals.refuse(it, "radiosity");
+      context.refuse(it, "radiosity");
       continue;
     }
     const std::string_view w = it.word;
@@ -90,7 +90,7 @@ RadiosityDesc readRadiosity(const Node& n, Refusals& refusals) {
     } else if (w == "recursion_limit") {
       r.recursionLimit = whole(n, i, 1);
     } else {
-      refusals.refuse(it.loc, w);
+      context.refuse(it.loc, w);
       valueAfter(n, i);
     }
   }

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "raytrace/parse/povray/interpreter.hpp"
+#include "raytrace/parse/povray/light_reader.hpp"
 #include "raytrace/parse/povray/radiosity_reader.hpp"
 #include "raytrace/parse/povray/surface_reader.hpp"
 #include "raytrace/shapes/make_object.hpp"
@@ -30,8 +31,8 @@ constexpr size_t kFourfoldFrom = 4096;
 class Builder {
  public:
   Builder(SceneDesc& scene, Interpreter& interpreter) : scene_(scene), interpreter_(interpreter) {
-    refusals_.findFile = [this](const std::string& name) { return interpreter_.findFile(name); };
-    refusals_.imageGamma = [this]() -> std::optional<double> {
+    context_.findFile = [this](const std::string& name) { return interpreter_.findFile(name); };
+    context_.imageGamma = [this]() -> std::optional<double> {
       if (interpreter_.version() < 3.7) return std::nullopt;
       return assumedGamma_.value_or(1.0);
     };
@@ -58,7 +59,7 @@ class Builder {
       fog(n);
     } else if (k == "background") {
       for (const Item& i : n.items) {
-        if (i.kind == Item::Kind::Value && i.value.numeric()) scene_.conventions.background = colourOf(i.value).rgb;
+        if (i.kind == Item::Kind::Value && i.value.numeric()) scene_.background = colourOf(i.value).rgb;
       }
     } else {
       ObjectDesc o;
@@ -89,12 +90,12 @@ class Builder {
   // The pigment a function reads, with the scene's settings; null, with why in `into`, if it is refused.
   template <class Read>
   std::shared_ptr<const Pigment> functionPigment(const Node& n, FunctionValue& into, Read read) {
-    Refusals own = refusals_;
-    own.first.reset();
+    ReadingContext own = context_;
+    own.firstRefusal.reset();
     const std::shared_ptr<const Pigment> p = read(n, own);
-    if (!own.first) return p;
-    into.why = own.first->what;
-    into.whyAt = own.first->loc;
+    if (!own.firstRefusal) return p;
+    into.why = own.firstRefusal->what;
+    into.whyAt = own.firstRefusal->loc;
     return nullptr;
   }
 
@@ -124,13 +125,13 @@ class Builder {
 
   // A transform function's matrix, in `matrix`'s 12 numbers.
   void transformFunction(const Node& transform, FunctionValue& into) {
-    Refusals own = refusals_;
-    own.first.reset();
+    ReadingContext own = context_;
+    own.firstRefusal.reset();
     std::vector<TransformStep> steps;
     readTransformBlock(transform, steps, own);
-    if (own.first) {
-      into.why = own.first->what;
-      into.whyAt = own.first->loc;
+    if (own.firstRefusal) {
+      into.why = own.firstRefusal->what;
+      into.whyAt = own.firstRefusal->loc;
       return;
     }
     const glm::dmat4 m = composeTransforms<double>(steps);
@@ -151,7 +152,7 @@ class Builder {
       const size_t lights = scene_.lights.size();
       ObjectDesc o;
       // What follows would build on a wrong answer: a refusal is reported now.
-      if (!object(*n, o) || refusals_.first) finish();
+      if (!object(*n, o) || context_.firstRefusal) finish();
       scene_.lights.resize(lights);
       statementNode_ = statement;
       made.object = makeObject<double>(o, SphereMethod::Robust, 0, false);
@@ -162,23 +163,23 @@ class Builder {
   void defaults(const Node& n) {
     for (const Item& i : n.items) {
       if (i.kind != Item::Kind::Node) continue;
-      readSurfaceItem(*i.node, default_, default_, refusals_);
+      readSurfaceItem(*i.node, default_, default_, context_);
     }
   }
 
   void finish() {
     // Media do not dim the lights yet: a light that asks them to is refused, once some object has a medium.
-    if (mediaAttenuation_ && refusals_.media) refusals_.refuse(*mediaAttenuation_, "media_attenuation");
+    if (context_.mediaAttenuation && context_.media) context_.refuse(*context_.mediaAttenuation, "media_attenuation");
     // A ray crosses a medium only up to its next hit: an object that may lie inside or across a medium would
     // cut the medium short behind it, so such scenes are refused (an unbounded medium, or an unbounded object
     // other than a plane, always).
     for (const auto& [index, at] : mediaObjects_) {
       const Ball medium = worldBall(scene_.objects[index]);
       for (size_t j = 0; j < scene_.objects.size(); ++j) {
-        if (j != index && mayCross(medium, scene_.objects[j])) refusals_.refuse(at, "an object inside or across a medium");
+        if (j != index && mayCross(medium, scene_.objects[j])) context_.refuse(at, "an object inside or across a medium");
       }
     }
-    if (refusals_.first) throw ParseError(refusals_.first->loc, "'" + refusals_.first->what + "' is not supported yet");
+    if (const auto& refused = context_.firstRefusal) throw ParseError(refused->loc, "'" + refused->what + "' is not supported yet");
   }
 
  private:
@@ -234,7 +235,7 @@ class Builder {
     return std::abs(glm::dot(normal, medium.center - point)) < medium.radius * glm::length(normal);
   }
 
-  void refuse(const SourceLoc& loc, std::string_view what) { refusals_.refuse(loc, what); }
+  void refuse(const SourceLoc& loc, std::string_view what) { context_.refuse(loc, what); }
   // An item a block inside an object does not take, `where` it is ("'pigment in a blob's sphere' is not
   // supported yet").
   void refuseItem(const Item& it, const std::string& where) {
@@ -244,7 +245,7 @@ class Builder {
     else refuse(it.loc, "a value" + in);
   }
   bool transformItem(const Node& n, size_t& i, std::vector<TransformStep>& steps) {
-    return readTransform(n, i, steps, refusals_);
+    return readTransform(n, i, steps, context_);
   }
 
   // A shape's values for its kind's read() (shapes/kind.hpp), taken from the items of its node in order.
@@ -314,7 +315,7 @@ class Builder {
       // `texture { T }` holds T's own tree: two triangles naming T share one surface.
       source = t.items.size() == 1 && t.items[0].kind == Item::Kind::Node ? static_cast<const void*>(t.items[0].node.get()) : &t;
       Surface s = b_.default_;
-      readSurfaceItem(t, s, b_.default_, b_.refusals_);
+      readSurfaceItem(t, s, b_.default_, b_.context_);
       out.material = constantMaterial(s);
       out.texture = s.patterned() ? std::make_shared<const Texture>(bounded(makeTexture(s, {}))) : nullptr;
       return true;
@@ -483,7 +484,7 @@ class Builder {
           // A second texture block is a layer on top of the first, starting as the #default texture.
           if (m == "texture" && textureBlock) s.layers.push_back(default_.layers.back());
           textureBlock = textureBlock || m == "texture";
-          readSurfaceItem(*it.node, s, default_, refusals_);
+          readSurfaceItem(*it.node, s, default_, context_);
           if (!textureFrom) textureFrom = o.transforms.size();
         } else {
           refuse(it.loc, m);
@@ -756,7 +757,7 @@ class Builder {
       }
       if (transformItem(n, i, k.steps)) continue;
       if (it.kind != Item::Kind::Keyword) {
-        refusals_.refuse(it, "camera");
+        context_.refuse(it, "camera");
         continue;
       }
       const std::string_view w = it.word;
@@ -809,100 +810,11 @@ class Builder {
 
   void light(const Node& n) {
     LightDesc l;
-    readLight(n, l);
+    readLight(n, l, context_,
+              [this](const Node& looksLike, const glm::dvec3& position, const std::vector<TransformStep>& steps) {
+                lookLike(looksLike, position, steps);
+              });
     scene_.lights.push_back(l);
-  }
-
-  // A light's items into `l`, moved by its transforms: an identifier's first, then the ones that follow it.
-  void readLight(const Node& n, LightDesc& l) {
-    size_t i = 0;
-    if (i < n.items.size() && n.items[i].kind == Item::Kind::Node && n.items[i].node->keyword == "light_source") {
-      readLight(*n.items[i++].node, l);
-    }
-    if (i < n.items.size() && n.items[i].kind == Item::Kind::Value) l.position = vec3(n.items[i++].value);
-    if (i < n.items.size() && n.items[i].kind == Item::Kind::Value) l.color = colourOf(n.items[i++].value).rgb;
-    std::vector<TransformStep> steps;
-    // The cone's values may come before `spotlight`, and mean nothing to a light that is not one.
-    bool isSpot = l.spot.has_value(), parallel = l.parallelTo != nullptr;
-    SpotDesc spot = l.spot.value_or(SpotDesc{});
-    if (l.parallelTo) spot.pointAt = *l.parallelTo;
-    std::optional<AreaDesc> area = l.area ? std::optional<AreaDesc>(*l.area) : std::nullopt;
-    std::optional<double> radius, falloff;
-    const Item* tightness = nullptr;
-    const Node* looksLike = nullptr;
-    std::optional<bool> illumination;
-    for (; i < n.items.size(); ++i) {
-      const Item& it = n.items[i];
-      if (transformItem(n, i, steps)) continue;
-      if (it.kind == Item::Kind::Node && it.node->keyword == "looks_like") {
-        looksLike = it.node.get();
-        continue;
-      }
-      if (it.kind != Item::Kind::Keyword) {
-        refusals_.refuse(it, "light_source");
-        continue;
-      }
-      const std::string_view w = it.word;
-      if (w == "media_interaction" || w == "media_attenuation") {
-        const Value* v = valueAfter(n, i);
-        if (w == "media_attenuation" && (!v || v->v[0] != 0)) mediaAttenuation_ = it.loc;
-        if (w == "media_interaction") l.mediaInteraction = !v || v->v[0] != 0;
-      } else if (w == "shadowless") {
-        l.shadowless = true;
-      } else if (w == "spotlight" || w == "cylinder") {
-        isSpot = true;
-        spot.cylinder = w == "cylinder";
-      } else if (w == "parallel") {
-        parallel = true;
-      } else if (w == "area_light") {
-        area = areaLight(n, i, area.value_or(AreaDesc{}));
-      } else if ((w == "jitter" || w == "circular" || w == "orient") && area) {
-        (w == "jitter" ? area->jitter : w == "circular" ? area->circular : area->orient) = true;
-      } else if (w == "area_illumination") {
-        // On (the word alone, or a value other than 0): each grid point lights from its own direction; a light
-        // without a grid is one point, which lights the same either way.
-        const Value* v = valueAfter(n, i);
-        illumination = !v || v->v[0] != 0;
-      } else if (w == "point_at" || w == "radius" || w == "falloff" || w == "tightness" || w == "fade_distance" ||
-                 w == "fade_power" || (w == "adaptive" && area)) {
-        const Value* v = valueAfter(n, i);
-        if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(w) + "' needs a value");
-        if (w == "point_at") spot.pointAt = vec3(*v);
-        else if (w == "radius") radius = v->v[0];
-        else if (w == "falloff") falloff = v->v[0];
-        else if (w == "tightness") spot.tightness = v->v[0], tightness = &it;
-        else if (w == "fade_distance") l.fadeDistance = v->v[0];
-        else if (w == "adaptive") area->adaptive = std::max(0, int(v->v[0]));
-        else l.fadePower = v->v[0];
-      } else {
-        refuse(it.loc, w);
-      }
-    }
-    // A cylinder light's radius and falloff are lengths, 0.75 and 1 unless given (manual, "Cylindrical Lights").
-    spot.radius = radius.value_or(spot.cylinder && !l.spot ? 0.75 : spot.radius);
-    spot.falloff = falloff.value_or(spot.cylinder && !l.spot ? 1.0 : spot.falloff);
-    if (spot.cylinder && spot.tightness != 0 && tightness) refuse(tightness->loc, "a cylinder light's tightness");
-    if (isSpot) l.spot = spot;
-    if (parallel) l.parallelTo = std::make_shared<const glm::dvec3>(spot.pointAt);
-    if (area && illumination) area->illumination = *illumination;
-    if (area) l.area = std::make_shared<const AreaDesc>(*area);
-    if (looksLike) lookLike(*looksLike, l.position, steps);
-    moveLight(l, composeTransforms<double>(steps));
-  }
-
-  // `area_light <axis1>, <axis2>, size1, size2` after the word at i.
-  AreaDesc areaLight(const Node& n, size_t& i, AreaDesc area) {
-    const Item& word = n.items[i];
-    const Value* v[4];
-    for (const Value*& value : v) {
-      value = valueAfter(n, i);
-      if (!value || !value->numeric()) throw ParseError(word.loc, "'area_light' needs two axes and two sizes");
-    }
-    area.axis1 = vec3(*v[0]);
-    area.axis2 = vec3(*v[1]);
-    area.size1 = std::max(1, int(v[2]->v[0]));
-    area.size2 = std::max(1, int(v[3]->v[0]));
-    return area;
   }
 
   // A light's looks_like object: drawn about the light's position and moved with it, casting no shadow
@@ -928,18 +840,6 @@ class Builder {
     }
   }
 
-  static void moveLight(LightDesc& l, const glm::dmat4& m) {
-    l.position = glm::dvec3(m * glm::dvec4(l.position, 1));
-    if (l.spot) l.spot->pointAt = glm::dvec3(m * glm::dvec4(l.spot->pointAt, 1));
-    if (l.parallelTo) l.parallelTo = std::make_shared<const glm::dvec3>(m * glm::dvec4(*l.parallelTo, 1));
-    if (l.area) {
-      AreaDesc a = *l.area;
-      a.axis1 = glm::dvec3(m * glm::dvec4(a.axis1, 0));
-      a.axis2 = glm::dvec3(m * glm::dvec4(a.axis2, 0));
-      l.area = std::make_shared<const AreaDesc>(a);
-    }
-  }
-
   void skySphere(const Node& n) {
     auto sky = std::make_shared<SkySphere>(scene_.sky ? *scene_.sky : SkySphere{});
     std::vector<TransformStep> steps;
@@ -947,12 +847,12 @@ class Builder {
       const Item& it = n.items[i];
       if (transformItem(n, i, steps)) continue;
       if (it.kind == Item::Kind::Node && it.node->keyword == "pigment") {
-        sky->layers.push_back(nestedPigment(*it.node, refusals_));
+        sky->layers.push_back(nestedPigment(*it.node, context_));
       } else if (it.kind == Item::Kind::Node && it.node->keyword == "sky_sphere") {
         skySphere(*it.node);  // an identifier, modified by what follows
         sky = std::make_shared<SkySphere>(*scene_.sky);
       } else {
-        refusals_.refuse(it, "sky_sphere");
+        context_.refuse(it, "sky_sphere");
       }
     }
     sky->fromWorld = sky->fromWorld * glm::inverse(composeTransforms<double>(steps));
@@ -962,7 +862,7 @@ class Builder {
 
   void fog(const Node& n) {
     Fog f;
-    f.noise.scene = refusals_.sceneNoise;
+    f.noise.scene = context_.sceneNoise;
     std::vector<TransformStep> steps;
     readFog(n, f, steps);
     f.up = glm::normalize(glm::dvec3(composeTransforms<double>(steps) * glm::dvec4(f.up, 0)));
@@ -983,7 +883,7 @@ class Builder {
       }
       const Value* v = it.kind == Item::Kind::Keyword ? valueAfter(n, i) : nullptr;
       if (!v || !v->numeric()) {
-        refusals_.refuse(it, "fog");
+        context_.refuse(it, "fog");
       } else if (it.word == "fog_type" && (v->v[0] == 1 || v->v[0] == 2)) {
         f.type = Fog::Type(int(v->v[0]));
       } else if (it.word == "distance") {
@@ -1005,7 +905,7 @@ class Builder {
       } else if (it.word == "lambda") {
         f.turbulence.lambda = float(v->v[0]);
       } else {
-        refusals_.refuse(it, "fog");
+        context_.refuse(it, "fog");
       }
     }
   }
@@ -1022,21 +922,21 @@ class Builder {
         }
         const Value* v = valueAfter(n, i);
         if (w == "max_trace_level" && v && v->type == Value::Type::Float) {
-          scene_.conventions.maxDepth = int(std::max(1.0, v->v[0]));
+          scene_.depthLimit = int(std::max(1.0, v->v[0]));
         } else if (w == "ambient_light" && v && v->numeric()) {
           ambientLight_ = colourOf(*v).rgb;
         } else if (w == "assumed_gamma" && v && v->type == Value::Type::Float) {
           assumedGamma_ = v->v[0];
         } else if (w == "noise_generator" && v && v->type == Value::Type::Float) {
           if (v->v[0] == 3) refuse(it.loc, "noise_generator 3");
-          *refusals_.sceneNoise = v->v[0] < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
+          *context_.sceneNoise = v->v[0] < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
         } else if (w == "adc_bailout" || w == "number_of_waves" ||
                    w == "irid_wavelength" || w == "max_intersections" || w == "hf_gray_16") {
         } else {
           refuse(it.loc, w);
         }
       } else if (it.kind == Item::Kind::Node && it.node->keyword == "radiosity") {
-        scene_.radiosity = readRadiosity(*it.node, refusals_);
+        scene_.radiosity = readRadiosity(*it.node, context_);
       } else {
         refuse(it.loc, it.kind == Item::Kind::Node ? it.node->keyword : "global_settings");
       }
@@ -1053,9 +953,8 @@ class Builder {
   Interpreter& interpreter_;  // its findFile notes the files the scene reads
   bool asciiStrings_ = true;  // global_settings' charset
   Surface default_;
-  Refusals refusals_;
+  ReadingContext context_;
   std::vector<std::pair<size_t, SourceLoc>> mediaObjects_;  // the objects with a medium, and where each is written
-  std::optional<SourceLoc> mediaAttenuation_;  // the first light's `media_attenuation on`
   struct Asked {
     std::shared_ptr<const Node> node;  // held, so that its address names no other node
     std::unique_ptr<Object<double>> object;
@@ -1103,9 +1002,6 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   scene.language = SceneLanguage::PovRay;
   scene.camera.right = {1.33, 0, 0};
   scene.camera.lookAt = {0, 0, 1};
-  scene.conventions.reflectionMixes = false;  // POV-Ray adds reflected light to the surface's own
-  scene.conventions.tintReflection = false;
-  scene.conventions.filteredShadows = true;
   InterpreterOptions io;
   io.libraryPaths = options.libraryPaths;
   io.imageWidth = options.imageWidth;
@@ -1135,14 +1031,9 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   interpreter.run(path, text, [&](const std::shared_ptr<const Node>& n) { builder.statement(n); },
                   [&](const std::shared_ptr<const Node>& n) { builder.defaults(*n); });
   builder.finish();
-  // POV-Ray 3.7 writes the sRGB of each pixel's colour raised to assumed_gamma, which is 1 by default from
-  // #version 3.7 on; an older scene without assumed_gamma has its colours written as they are
-  // (docs/povray-language.md, "Gamma").
-  const double gamma = builder.assumedGamma_.value_or(interpreter.version() >= 3.7 ? 1.0 : 0.0);
-  if (gamma > 0) {
-    scene.conventions.toByte = Conventions::ToByte::Srgb;
-    scene.conventions.gamma = float(gamma);
-  }
+  // assumed_gamma is 1 by default from #version 3.7 on; an older scene without it has its colours written as
+  // they are (docs/povray-language.md, "Gamma").
+  scene.dialect = Dialect::povray(builder.assumedGamma_.value_or(interpreter.version() >= 3.7 ? 1.0 : 0.0));
   // With radiosity a 3.7 scene's ambient term is 0 and its emission alone lights; an older scene's ambient (times
   // ambient_light) still does, as emission would (POV-Ray 3.7 manual, "How Radiosity Works"; measured, docs/gi.md).
   const bool noAmbient = scene.radiosity && interpreter.version() >= 3.7;

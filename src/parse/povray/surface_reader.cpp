@@ -6,7 +6,7 @@
 
 namespace rt::povray {
 
-void Refusals::refuse(const Item& it, std::string_view otherwise) {
+void ReadingContext::refuse(const Item& it, std::string_view otherwise) {
   refuse(it.loc, it.kind == Item::Kind::Keyword ? it.word : it.kind == Item::Kind::Node ? it.node->keyword : otherwise);
 }
 
@@ -27,15 +27,15 @@ const Value* valueAfter(const Node& n, size_t& i) {
   return nullptr;
 }
 
-void readTransformBlock(const Node& n, std::vector<TransformStep>& steps, Refusals& refusals) {
+void readTransformBlock(const Node& n, std::vector<TransformStep>& steps, ReadingContext& context) {
   std::vector<TransformStep> own;
   bool inverse = false;
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     if (it.kind == Item::Kind::Keyword && it.word == "inverse") {
       inverse = !inverse;
-    } else if (!readTransform(n, i, own, refusals)) {
-      refusals.refuse(it, "transform");
+    } else if (!readTransform(n, i, own, context)) {
+      context.refuse(it, "transform");
     }
   }
   if (!inverse) {
@@ -75,22 +75,22 @@ bool readTurbulence(const Node& n, size_t& i, Turbulence& t) {
   return true;
 }
 
-bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, Refusals& refusals) {
+bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, ReadingContext& context) {
   const Item& it = n.items[i];
   if (it.kind == Item::Kind::Node && it.node->keyword == "transform") {
-    readTransformBlock(*it.node, steps, refusals);
+    readTransformBlock(*it.node, steps, context);
     return true;
   }
   if (it.kind != Item::Kind::Keyword) return false;
   const std::string_view w = it.word;
   if (w == "transform") {
-    if (i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Node) readTransformBlock(*n.items[++i].node, steps, refusals);
+    if (i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Node) readTransformBlock(*n.items[++i].node, steps, context);
     return true;
   }
   if (w != "translate" && w != "rotate" && w != "scale" && w != "matrix") return false;
   const Value* v = valueAfter(n, i);
   if (!v) {
-    refusals.refuse(it.loc, w);
+    context.refuse(it.loc, w);
     return true;
   }
   if (w == "matrix") {
@@ -121,7 +121,7 @@ bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, 
   return true;
 }
 
-std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals);
+std::shared_ptr<const Pigment> nestedPigment(const Node& n, ReadingContext& context);
 
 namespace {
 
@@ -131,7 +131,7 @@ std::shared_ptr<const Pigment> solidPigment(const Rgbft& c) {
   return p;
 }
 
-std::vector<WarpMark> readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals);
+std::vector<WarpMark> readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, ReadingContext& context);
 
 // frequency, phase and the wave types of a pigment or a normal; false for any other item.
 template <class Waved> bool readWave(const Node& n, size_t& i, Waved& p) {
@@ -199,7 +199,7 @@ bool patternBlock(const Item& it) {
 
 // `slope { <direction> [, lo, hi] [altitude <altitude> [, lo, hi]] }` (POV-Ray 3.7 manual, "Slope Pattern");
 // false when refused (the point_at form).
-bool readSlope(const Node& n, SlopeArgs& a, Refusals& refusals) {
+bool readSlope(const Node& n, SlopeArgs& a, ReadingContext& context) {
   size_t i = 0;
   const auto range = [&](double& lo, double& hi, const char* what) {
     if (i >= n.items.size() || n.items[i].kind != Item::Kind::Value || n.items[i].value.type != Value::Type::Float) return;
@@ -213,7 +213,7 @@ bool readSlope(const Node& n, SlopeArgs& a, Refusals& refusals) {
     ++i;
   };
   if (!n.items.empty() && n.items[0].kind == Item::Kind::Keyword && n.items[0].word == "point_at") {
-    refusals.refuse(n.items[0].loc, "slope point_at");
+    context.refuse(n.items[0].loc, "slope point_at");
     return false;
   }
   if (n.items.empty() || n.items[0].kind != Item::Kind::Value || !n.items[0].value.numeric() ||
@@ -244,7 +244,7 @@ struct PatternDraft {
 
   // The pattern of keyword n.items[i] (i moves past its vector), or of a `function { … }` value; nothing if the
   // item names no pattern, or is a function that did not compile (refused). `kinds` finds a keyword's kind.
-  std::unique_ptr<Pattern> start(const Node& n, size_t& i, Refusals& refusals,
+  std::unique_ptr<Pattern> start(const Node& n, size_t& i, ReadingContext& context,
                                  const PatternKind* (*kinds)(std::string_view) = patternKind) {
     const Item& it = n.items[i];
     const bool function = isFunction(it);
@@ -256,15 +256,15 @@ struct PatternDraft {
     if (!k || (!block && (k->make == makePigmentPattern || k->make == makeSlope))) return nullptr;  // they need their block
     if (function && !static_cast<const FunctionValue&>(*it.value.ref).compiled) {
       const auto& f = static_cast<const FunctionValue&>(*it.value.ref);
-      refusals.refuse(f.whyAt, f.why);
+      context.refuse(f.whyAt, f.why);
       return nullptr;
     }
     kind = k;
     args = PatternArgs{};
-    args.noise.scene = refusals.sceneNoise;
+    args.noise.scene = context.sceneNoise;
     if (function) args.function = static_cast<const FunctionValue&>(*it.value.ref).compiled;
-    if (pigment) args.pigment = nestedPigment(*it.node, refusals);
-    if (block && !pigment && !readSlope(*it.node, args.slope, refusals)) return nullptr;
+    if (pigment) args.pigment = nestedPigment(*it.node, context);
+    if (block && !pigment && !readSlope(*it.node, args.slope, context)) return nullptr;
     if (k->needsVector) {
       const Value* v = valueAfter(n, i);
       if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(it.word) + "' needs a number or a vector");
@@ -278,7 +278,7 @@ struct PatternDraft {
   // turbulence, octaves, omega, lambda, noise_generator, agate_turb, crackle's form, metric, offset and solid,
   // quilted's control0 and control1, brick's brick_size and mortar, and the fractals' exponent, interior and
   // exterior; false for any other item.
-  bool modifier(const Node& n, size_t& i, Refusals& refusals) {
+  bool modifier(const Node& n, size_t& i, ReadingContext& context) {
     const Item& it = n.items[i];
     if (it.kind != Item::Kind::Keyword) return false;
     const std::string_view w = it.word;
@@ -330,7 +330,7 @@ struct PatternDraft {
       }
       args.fractal.exponent = x >= 2 && x < 34 ? int(x) : 2;  // POV-Ray warns and takes 2 outside 2 to 33
     } else if (x == 3) {
-      refusals.refuse(it.loc, "noise_generator 3");
+      context.refuse(it.loc, "noise_generator 3");
     } else {
       args.noise.own = x < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
     }
@@ -358,14 +358,14 @@ struct PatternDraft {
   }
 
   // The pattern made again with the modifiers read after it.
-  void finish(std::shared_ptr<const Pattern>& pattern, const SourceLoc& at, Refusals& refusals) const {
+  void finish(std::shared_ptr<const Pattern>& pattern, const SourceLoc& at, ReadingContext& context) const {
     if (!modified || !pattern) return;
     if (!kind) {
-      refusals.refuse(at, "turbulence on a pattern of an earlier block");
+      context.refuse(at, "turbulence on a pattern of an earlier block");
       return;
     }
     if (args.turbulence.on() && !kind->turbulenceDrawn) {
-      refusals.refuse(at, "turbulence on " + std::string(kind->name));
+      context.refuse(at, "turbulence on " + std::string(kind->name));
       return;
     }
     pattern = makePattern(*kind, args);
@@ -378,15 +378,15 @@ namespace {
 
 // color_map or pigment_map entries: `[value colour]`, `[value pigment { … }]`, or the old `[v0 v1 colour0 colour1]`.
 // An average's entries may leave out their weight, which is then 1.
-void readMap(const Node& n, std::vector<MapEntry>& map, Refusals& refusals, bool weightsOptional = false) {
+void readMap(const Node& n, std::vector<MapEntry>& map, ReadingContext& context, bool weightsOptional = false) {
   for (const Item& it : n.items) {
     if (it.kind == Item::Kind::Node && (it.node->keyword == "color_map" || it.node->keyword == "colour_map" ||
                                         it.node->keyword == "pigment_map")) {
-      readMap(*it.node, map, refusals, weightsOptional);  // a map identifier
+      readMap(*it.node, map, context, weightsOptional);  // a map identifier
       continue;
     }
     if (it.kind != Item::Kind::Node || it.node->keyword != "[") {
-      refusals.refuse(it, "a map entry");
+      context.refuse(it, "a map entry");
       continue;
     }
     const std::vector<Item>& items = it.node->items;
@@ -405,14 +405,14 @@ void readMap(const Node& n, std::vector<MapEntry>& map, Refusals& refusals, bool
     if (listed) {
       for (size_t j = k; j < items.size(); ++j) {
         const Item& e = items[j];
-        pigments.push_back(e.kind == Item::Kind::Value ? solidPigment(colourOf(e.value)) : nestedPigment(*e.node, refusals));
+        pigments.push_back(e.kind == Item::Kind::Value ? solidPigment(colourOf(e.value)) : nestedPigment(*e.node, context));
       }
     } else {
       Node body;
       body.keyword = "pigment";
       body.loc = items[k].loc;
       body.items.assign(items.begin() + long(k), items.end());
-      pigments.push_back(nestedPigment(body, refusals));
+      pigments.push_back(nestedPigment(body, context));
     }
     // `[0.5 1]` is a value and a grey.
     if (pigments.empty() && values.size() == 2) pigments.push_back(solidPigment({Color(float(values[1])), 0, 0}));
@@ -430,7 +430,7 @@ void readMap(const Node& n, std::vector<MapEntry>& map, Refusals& refusals, bool
 }
 
 void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vector<TransformStep>& steps,
-                      Refusals& refusals) {
+                      ReadingContext& context) {
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     const bool blocks = p.pattern && p.pattern->blocks() > 0;
@@ -443,34 +443,34 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
       }
       continue;
     }
-    if (readTransform(n, i, steps, refusals)) continue;
+    if (readTransform(n, i, steps, context)) continue;
     const bool patternNode = patternBlock(it);
     if (it.kind == Item::Kind::Node && !patternNode) {
       const std::string_view k = it.node->keyword;
       if (k == "pigment" && blocks && p.list.size() < size_t(p.pattern->blocks())) {
-        p.list.push_back(nestedPigment(*it.node, refusals));
+        p.list.push_back(nestedPigment(*it.node, context));
       } else if (k == "pigment") {
-        readPigmentItems(*it.node, p, draft, steps, refusals);  // an identifier, modified by what follows
+        readPigmentItems(*it.node, p, draft, steps, context);  // an identifier, modified by what follows
       } else if (k == "warp") {
-        if (std::shared_ptr<const Warp> warp = readWarp(*it.node, refusals)) draft.warps.push_back({steps.size(), warp});
+        if (std::shared_ptr<const Warp> warp = readWarp(*it.node, context)) draft.warps.push_back({steps.size(), warp});
       } else if (k == "color_map" || k == "colour_map" || k == "pigment_map") {
         p.map.clear();
-        readMap(*it.node, p.map, refusals, p.average);
+        readMap(*it.node, p.map, context, p.average);
       } else if (k == "image_map") {
         p = Pigment{};
-        p.image = readImageMap(*it.node, refusals);
+        p.image = readImageMap(*it.node, context);
         draft = PatternDraft{};
       } else {
-        refusals.refuse(it, "pigment");
+        context.refuse(it, "pigment");
       }
       continue;
     }
     if (it.kind != Item::Kind::Keyword && !isFunction(it) && !patternNode) {
-      refusals.refuse(it, "a value here");
+      context.refuse(it, "a value here");
       continue;
     }
     const std::string_view w = it.word;
-    if (std::unique_ptr<Pattern> pattern = draft.start(n, i, refusals)) {
+    if (std::unique_ptr<Pattern> pattern = draft.start(n, i, context)) {
       const Rgbft keep = p.solid;
       p = Pigment{};
       p.solid = keep;
@@ -501,16 +501,16 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
       draft = PatternDraft{};
     } else if (w == "quick_color" || w == "quick_colour") {
       valueAfter(n, i);
-    } else if (!readWave(n, i, p) && !draft.modifier(n, i, refusals)) {
-      refusals.refuse(it.loc, w);
+    } else if (!readWave(n, i, p) && !draft.modifier(n, i, context)) {
+      context.refuse(it.loc, w);
     }
   }
 }
 
-std::vector<WarpMark> readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, Refusals& refusals) {
+std::vector<WarpMark> readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, ReadingContext& context) {
   PatternDraft draft;
-  readPigmentItems(n, p, draft, steps, refusals);
-  draft.finish(p.pattern, n.loc, refusals);
+  readPigmentItems(n, p, draft, steps, context);
+  draft.finish(p.pattern, n.loc, context);
   // Without a map a continuous pattern is drawn with its kind's own map, else as a grey ramp, black at 0 and
   // white at 1 (measured with pigment functions).
   if (p.average && p.map.empty()) throw ParseError(n.loc, "'average' needs a pigment_map");
@@ -529,7 +529,7 @@ std::vector<WarpMark> readPigment(const Node& n, Pigment& p, std::vector<Transfo
 
 // `reflection { [min,] max [fresnel on] [falloff F] }` (POV-Ray 3.7 manual, "Specular Reflection"): one value
 // reflects the same at every angle, two vary from the first facing the viewer to the second at grazing angles.
-void readReflection(const Node& n, PovFinish& f, Refusals& refusals) {
+void readReflection(const Node& n, PovFinish& f, ReadingContext& context) {
   std::vector<double> values;
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& r = n.items[i];
@@ -547,7 +547,7 @@ void readReflection(const Node& n, PovFinish& f, Refusals& refusals) {
     } else if (r.kind == Item::Kind::Keyword && r.word == "exponent" && v && v->numeric() && v->v[0] == 1) {
       continue;  // POV-Ray's default: reflected light as it is
     } else {
-      refusals.refuse(r, "reflection");
+      context.refuse(r, "reflection");
     }
   }
   if (values.empty()) return;
@@ -555,19 +555,19 @@ void readReflection(const Node& n, PovFinish& f, Refusals& refusals) {
   f.reflectionMin = values.size() > 1 ? std::optional<double>(values.front()) : std::nullopt;
 }
 
-void readFinish(const Node& n, PovFinish& f, Refusals& refusals) {
+void readFinish(const Node& n, PovFinish& f, ReadingContext& context) {
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     if (it.kind == Item::Kind::Node && it.node->keyword == "finish") {
-      readFinish(*it.node, f, refusals);
+      readFinish(*it.node, f, context);
       continue;
     }
     if (it.kind == Item::Kind::Node && it.node->keyword == "reflection") {
-      readReflection(*it.node, f, refusals);
+      readReflection(*it.node, f, context);
       continue;
     }
     if (it.kind != Item::Kind::Keyword) {
-      refusals.refuse(it, "finish");
+      context.refuse(it, "finish");
       continue;
     }
     const std::string_view w = it.word;
@@ -578,7 +578,7 @@ void readFinish(const Node& n, PovFinish& f, Refusals& refusals) {
       continue;
     }
     if (!v || !v->numeric()) {
-      refusals.refuse(it.loc, w);
+      context.refuse(it.loc, w);
       continue;
     }
     const double x = v->v[0];
@@ -604,7 +604,7 @@ void readFinish(const Node& n, PovFinish& f, Refusals& refusals) {
     } else if (w == "brilliance") {
       f.brilliance = x;
     } else {
-      refusals.refuse(it.loc, w);
+      context.refuse(it.loc, w);
     }
   }
 }
@@ -627,13 +627,13 @@ void readSlopeMap(const Node& n, std::vector<SlopeEntry>& slopes) {
   std::stable_sort(slopes.begin(), slopes.end(), [](const SlopeEntry& a, const SlopeEntry& b) { return a.value < b.value; });
 }
 
-void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, Refusals& refusals);
+void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, ReadingContext& context);
 
 // A map's or a list's normal, which starts as the #default texture's, as every normal block does.
-std::shared_ptr<const Normal> nestedNormal(const Node& n, const Normal& base, Refusals& refusals) {
+std::shared_ptr<const Normal> nestedNormal(const Node& n, const Normal& base, ReadingContext& context) {
   auto normal = std::make_shared<Normal>(base);
   std::vector<TransformStep> steps;
-  readNormal(n, *normal, steps, refusals);
+  readNormal(n, *normal, steps, context);
   normal->fromTexture = glm::inverse(composeTransforms<double>(steps));
   return normal;
 }
@@ -641,10 +641,10 @@ std::shared_ptr<const Normal> nestedNormal(const Node& n, const Normal& base, Re
 // normal_map entries `[value normal items…]`, or a normal_map identifier; an average's may leave out their
 // weight, which is then 1.
 void readNormalMap(const Node& n, std::vector<NormalEntry>& map, bool weightsOptional, const Normal& base,
-                   Refusals& refusals) {
+                   ReadingContext& context) {
   for (const Item& it : n.items) {
     if (it.kind == Item::Kind::Node && it.node->keyword == "normal_map") {
-      readNormalMap(*it.node, map, weightsOptional, base, refusals);
+      readNormalMap(*it.node, map, weightsOptional, base, context);
       continue;
     }
     const std::vector<Item>* e = it.kind == Item::Kind::Node && it.node->keyword == "[" ? &it.node->items : nullptr;
@@ -656,7 +656,7 @@ void readNormalMap(const Node& n, std::vector<NormalEntry>& map, bool weightsOpt
     body.keyword = "normal";
     body.loc = it.loc;
     body.items.assign(e->begin() + (weighted ? 1 : 0), e->end());
-    map.push_back({weighted ? (*e)[0].value.v[0] : 1.0, nestedNormal(body, base, refusals)});
+    map.push_back({weighted ? (*e)[0].value.v[0] : 1.0, nestedNormal(body, base, context)});
   }
   // POV-Ray reads the entries in order and expects them sorted; a stable sort keeps equal values' order.
   if (!weightsOptional) {
@@ -665,12 +665,12 @@ void readNormalMap(const Node& n, std::vector<NormalEntry>& map, bool weightsOpt
 }
 
 // `bump_map { … }` as the normal's pattern, its bump_size the normal's amount; only the planar map is drawn.
-void readBumpMapNormal(const Node& n, Normal& normal, Refusals& refusals) {
+void readBumpMapNormal(const Node& n, Normal& normal, ReadingContext& context) {
   BumpMapSettings settings;
-  const std::shared_ptr<const ImageMap> image = readBumpMap(n, refusals, settings);
+  const std::shared_ptr<const ImageMap> image = readBumpMap(n, context, settings);
   if (!image) return;
   if (image->mapping != ImageMap::Mapping::Planar) {
-    refusals.refuse(n.loc, "bump_map map_type " + std::to_string(int(image->mapping)));
+    context.refuse(n.loc, "bump_map map_type " + std::to_string(int(image->mapping)));
     return;
   }
   normal.pattern = makeBumpMap(*image);
@@ -681,44 +681,44 @@ void readBumpMapNormal(const Node& n, Normal& normal, Refusals& refusals) {
 
 // `normal { [identifier] pattern [amount] modifiers… }` (POV-Ray 3.7 manual, "Normal").
 void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::vector<TransformStep>& steps,
-                     const Normal& base, Refusals& refusals) {
+                     const Normal& base, ReadingContext& context) {
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
-    if (readTransform(n, i, steps, refusals)) continue;
+    if (readTransform(n, i, steps, context)) continue;
     const bool patternNode = patternBlock(it);
     if (it.kind == Item::Kind::Node && !patternNode) {
       const std::string_view k = it.node->keyword;
       const bool blocks = normal.pattern && normal.pattern->blocks() > 0;
       if (k == "normal" && blocks && normal.map.size() < size_t(normal.pattern->blocks())) {
-        normal.map.push_back({double(normal.map.size()), nestedNormal(*it.node, base, refusals)});
+        normal.map.push_back({double(normal.map.size()), nestedNormal(*it.node, base, context)});
       } else if (k == "normal") {
-        readNormalItems(*it.node, normal, draft, steps, base, refusals);  // an identifier, modified by what follows
+        readNormalItems(*it.node, normal, draft, steps, base, context);  // an identifier, modified by what follows
       } else if (k == "slope_map") {
         normal.slopes.clear();
         readSlopeMap(*it.node, normal.slopes);
       } else if (k == "normal_map") {
         normal.map.clear();
-        readNormalMap(*it.node, normal.map, normal.average, base, refusals);
+        readNormalMap(*it.node, normal.map, normal.average, base, context);
       } else if (k == "bump_map") {
-        readBumpMapNormal(*it.node, normal, refusals);
+        readBumpMapNormal(*it.node, normal, context);
         draft = PatternDraft{};
       } else {
-        refusals.refuse(it, "normal");
+        context.refuse(it, "normal");
       }
       continue;
     }
     if (it.kind != Item::Kind::Keyword && !patternNode) {
-      refusals.refuse(it, it.value.type == Value::Type::Function ? "function" : "a value here");
+      context.refuse(it, it.value.type == Value::Type::Function ? "function" : "a value here");
       continue;
     }
     const std::string_view w = it.word;
     // POV-Ray bends the normal by a formula of its own for facets, not by its value's slope.
     if (w == "facets") {
-      refusals.refuse(it.loc, w);
+      context.refuse(it.loc, w);
       continue;
     }
-    std::unique_ptr<Pattern> pattern = draft.start(n, i, refusals, normalPatternKind);
-    if (!pattern) pattern = draft.start(n, i, refusals);
+    std::unique_ptr<Pattern> pattern = draft.start(n, i, context, normalPatternKind);
+    if (!pattern) pattern = draft.start(n, i, context);
     if (pattern) {
       normal.pattern = std::move(pattern);
       normal.average = false;
@@ -739,28 +739,28 @@ void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::ve
     } else if (w == "no_bump_scale") {
       const Value* v = i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value ? valueAfter(n, i) : nullptr;
       normal.bumpScale = v && v->v[0] == 0;
-    } else if (!readWave(n, i, normal) && !draft.modifier(n, i, refusals)) {
-      refusals.refuse(it.loc, w);
+    } else if (!readWave(n, i, normal) && !draft.modifier(n, i, context)) {
+      context.refuse(it.loc, w);
     }
   }
 }
 
-void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, Refusals& refusals) {
+void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, ReadingContext& context) {
   PatternDraft draft;
   Normal base = normal;
   base.pattern.reset();
   base.map.clear();
   base.average = false;
-  readNormalItems(n, normal, draft, steps, base, refusals);
+  readNormalItems(n, normal, draft, steps, base, context);
   // A normal's own formula reads its frequency and phase itself (ripples, waves).
   if (draft.kind && draft.kind == normalPatternKind(draft.kind->name)) {
     draft.args.frequency = normal.frequency;
     draft.args.phase = normal.phase;
     draft.modified = true;
   }
-  draft.finish(normal.pattern, n.loc, refusals);
+  draft.finish(normal.pattern, n.loc, context);
   if (normal.average && normal.map.empty()) throw ParseError(n.loc, "'average' needs a normal_map");
-  if (!normal.average && !normal.map.empty() && !normal.pattern && !refusals.first) {
+  if (!normal.average && !normal.map.empty() && !normal.pattern && !context.firstRefusal) {
     throw ParseError(n.loc, "a normal_map needs a pattern");
   }
 }
@@ -812,21 +812,21 @@ void placeTransforms(Pigment& p, const std::vector<TransformStep>& steps, const 
   p.afterWarps = glm::inverse(composeTransforms<double>({steps.begin(), steps.begin() + long(end)}));
 }
 
-std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals) {
+std::shared_ptr<const Pigment> nestedPigment(const Node& n, ReadingContext& context) {
   auto p = std::make_shared<Pigment>();
   std::vector<TransformStep> steps;
-  const std::vector<WarpMark> warps = readPigment(n, *p, steps, refusals);
+  const std::vector<WarpMark> warps = readPigment(n, *p, steps, context);
   placeTransforms(*p, steps, warps);
   return p;
 }
 
-std::shared_ptr<const Pigment> patternPigment(const Node& n, Refusals& refusals) {
+std::shared_ptr<const Pigment> patternPigment(const Node& n, ReadingContext& context) {
   auto p = std::make_shared<Pigment>();
   std::vector<TransformStep> steps;
   PatternDraft draft;
-  readPigmentItems(n, *p, draft, steps, refusals);
-  draft.finish(p->pattern, n.loc, refusals);
-  if (!p->pattern) refusals.refuse(n.loc, "a pattern function without a pattern");
+  readPigmentItems(n, *p, draft, steps, context);
+  draft.finish(p->pattern, n.loc, context);
+  if (!p->pattern) context.refuse(n.loc, "a pattern function without a pattern");
   p->fromTexture = glm::inverse(composeTransforms<double>(steps));
   return p;
 }
@@ -849,15 +849,15 @@ bool texturePatternIn(const Node& n) {
   });
 }
 
-std::shared_ptr<const Texture> subTexture(const Node& n, const Surface& defaults, Refusals& refusals) {
+std::shared_ptr<const Texture> subTexture(const Node& n, const Surface& defaults, ReadingContext& context) {
   Surface sub = defaults;
-  readSurfaceItem(n, sub, defaults, refusals);
+  readSurfaceItem(n, sub, defaults, context);
   return std::make_shared<const Texture>(bounded(makeTexture(sub, {})));
 }
 
 // The old `tiles { texture { A } tile2 texture { B } }`: checker's two blocks, B first (as POV-Ray draws it,
 // the same picture as `checker texture { B } texture { A }`); false when refused.
-bool readTiles(const Node& n, TexturePattern& tp, const Surface& defaults, Refusals& refusals) {
+bool readTiles(const Node& n, TexturePattern& tp, const Surface& defaults, ReadingContext& context) {
   const auto texture = [](const Item& it) { return it.kind == Item::Kind::Node && it.node->keyword == "texture"; };
   const auto tile2 = [](const Item& it) { return it.kind == Item::Kind::Keyword && it.word == "tile2"; };
   const auto split = std::find_if(n.items.begin(), n.items.end(), tile2);
@@ -865,31 +865,31 @@ bool readTiles(const Node& n, TexturePattern& tp, const Surface& defaults, Refus
                        std::all_of(n.items.begin(), split, texture) && std::all_of(split + 1, n.items.end(), texture);
   if (!written) throw ParseError(n.loc, "tiles needs 'texture { … } tile2 texture { … }'");
   if (n.items.size() != 3) {
-    refusals.refuse(n.loc, "tiles of layered textures");
+    context.refuse(n.loc, "tiles of layered textures");
     return false;
   }
-  tp.textures = {subTexture(*n.items[2].node, defaults, refusals), subTexture(*n.items[0].node, defaults, refusals)};
+  tp.textures = {subTexture(*n.items[2].node, defaults, context), subTexture(*n.items[0].node, defaults, context)};
   return true;
 }
 
 // `texture { checker texture { … } texture { … } }` or `texture { gradient x texture_map { [v texture { … }] … } }`.
-std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Surface& defaults, Refusals& refusals) {
+std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Surface& defaults, ReadingContext& context) {
   auto tp = std::make_shared<TexturePattern>();
   Pigment& selector = tp->selector;
   PatternDraft draft;
   std::vector<TransformStep> steps;
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
-    if (readTransform(n, i, steps, refusals)) continue;
+    if (readTransform(n, i, steps, context)) continue;
     if (it.kind == Item::Kind::Node && it.node->keyword == "texture") {
-      tp->textures.push_back(subTexture(*it.node, defaults, refusals));
+      tp->textures.push_back(subTexture(*it.node, defaults, context));
     } else if (it.kind == Item::Kind::Node && it.node->keyword == "texture_map") {
       for (const Item& e : it.node->items) {
         // `[value texture { … }]`, or `[value pigment { … } finish { … } …]`: a texture's items written bare.
         const bool entry = e.kind == Item::Kind::Node && e.node->keyword == "[" && e.node->items.size() >= 2 &&
                            e.node->items[0].kind == Item::Kind::Value && e.node->items[0].value.type == Value::Type::Float;
         if (!entry) {
-          refusals.refuse(e, "a texture_map entry");
+          context.refuse(e, "a texture_map entry");
           continue;
         }
         Node body;
@@ -897,23 +897,23 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
         body.loc = e.loc;
         body.items.assign(e.node->items.begin() + 1, e.node->items.end());
         selector.map.push_back({e.node->items[0].value.v[0], solidPigment({Color(float(tp->textures.size())), 0, 0})});
-        tp->textures.push_back(subTexture(body, defaults, refusals));
+        tp->textures.push_back(subTexture(body, defaults, context));
       }
     } else if (it.kind == Item::Kind::Node && it.node->keyword == "tiles") {
-      if (readTiles(*it.node, *tp, defaults, refusals)) selector.pattern = makePattern(*patternKind("checker"), {});
+      if (readTiles(*it.node, *tp, defaults, context)) selector.pattern = makePattern(*patternKind("checker"), {});
       draft = PatternDraft{};
-    } else if (std::unique_ptr<Pattern> pattern = draft.start(n, i, refusals)) {
+    } else if (std::unique_ptr<Pattern> pattern = draft.start(n, i, context)) {
       selector.pattern = std::move(pattern);
       selector.wave = draft.kind->wave;
-    } else if (!readWave(n, i, selector) && !draft.modifier(n, i, refusals)) {
-      refusals.refuse(it, "texture");
+    } else if (!readWave(n, i, selector) && !draft.modifier(n, i, context)) {
+      context.refuse(it, "texture");
     }
   }
-  draft.finish(selector.pattern, n.loc, refusals);
+  draft.finish(selector.pattern, n.loc, context);
   const int blocks = selector.pattern ? selector.pattern->blocks() : 0;
   for (int b = 0; b < blocks; ++b) selector.list.push_back(solidPigment({Color(float(b)), 0, 0}));
   if (!selector.pattern) {
-    refusals.refuse(n.loc, "texture");  // its pattern was refused above
+    context.refuse(n.loc, "texture");  // its pattern was refused above
     tp->textures.assign(1, std::make_shared<const Texture>());
   } else if (tp->textures.size() < size_t(std::max(blocks, 1)) || (blocks == 0 && selector.map.empty())) {
     throw ParseError(n.loc, "this texture pattern needs " + std::to_string(std::max(blocks, 1)) +
@@ -925,7 +925,7 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
 
 }  // namespace
 
-void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusals& refusals) {
+void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, ReadingContext& context) {
   const std::string_view k = n.keyword;
   // uv_mapping in a pigment, normal or texture maps the whole surface by its uv coordinates: the block is read
   // without it.
@@ -934,20 +934,20 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
     Node without = n;
     without.items.erase(std::remove_if(without.items.begin(), without.items.end(), uv), without.items.end());
     s.uvMapped = true;
-    readSurfaceItem(without, s, defaults, refusals);
+    readSurfaceItem(without, s, defaults, context);
     return;
   }
   SurfaceLayer& top = s.layers.back();
   if (k == "pigment") {
-    const std::vector<WarpMark> warps = readPigment(n, top.pigment, top.steps, refusals);
+    const std::vector<WarpMark> warps = readPigment(n, top.pigment, top.steps, context);
     top.warps.insert(top.warps.end(), warps.begin(), warps.end());
   } else if (k == "finish") {
-    readFinish(n, top.finish, refusals);
+    readFinish(n, top.finish, context);
   } else if (k == "normal") {
     if (!top.normal) top.normal.emplace();
-    readNormal(n, *top.normal, top.normalSteps, refusals);
+    readNormal(n, *top.normal, top.normalSteps, context);
   } else if (k == "texture" && texturePatternIn(n)) {
-    top.pattern = readTexturePattern(n, defaults, refusals);
+    top.pattern = readTexturePattern(n, defaults, context);
   } else if (k == "texture" || k == "material") {
     // A transform moves every layer the block has read so far (a layered texture identifier's too), and the
     // normals they have by then.
@@ -956,9 +956,9 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
       const Item& it = n.items[i];
       std::vector<TransformStep> steps;
       if (it.kind == Item::Kind::Node) {
-        readSurfaceItem(*it.node, s, defaults, refusals);
-      } else if (!readTransform(n, i, steps, refusals)) {
-        refusals.refuse(it, k);
+        readSurfaceItem(*it.node, s, defaults, context);
+      } else if (!readTransform(n, i, steps, context)) {
+        context.refuse(it, k);
       }
       for (size_t l = first; l < s.layers.size(); ++l) {
         SurfaceLayer& layer = s.layers[l];
@@ -970,7 +970,7 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
     // Each layer starts as the #default texture, on top of the ones before.
     for (size_t i = 0; i < n.items.size(); ++i) {
       if (i > 0) s.layers.push_back(defaults.layers.back());
-      readSurfaceItem(*n.items[i].node, s, defaults, refusals);
+      readSurfaceItem(*n.items[i].node, s, defaults, context);
     }
   } else if (k == "interior") {
     for (size_t i = 0; i < n.items.size(); ++i) {
@@ -987,15 +987,15 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusal
          : it.word == "caustics"      ? s.caustics
                                       : s.fadePower) = v->v[0];
       } else if (it.kind == Item::Kind::Node && it.node->keyword == "interior") {
-        readSurfaceItem(*it.node, s, defaults, refusals);
+        readSurfaceItem(*it.node, s, defaults, context);
       } else if (it.kind == Item::Kind::Node && it.node->keyword == "media" && !s.media) {
-        s.media = readMedia(*it.node, refusals);
+        s.media = readMedia(*it.node, context);
       } else {
-        refusals.refuse(it, "interior");
+        context.refuse(it, "interior");
       }
     }
   } else {
-    refusals.refuse(n.loc, k);
+    context.refuse(n.loc, k);
   }
 }
 

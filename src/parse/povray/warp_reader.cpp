@@ -10,7 +10,7 @@ namespace {
 // Reads a warp's items: its keyword at n.items[0] and what follows.
 class WarpItems {
  public:
-  WarpItems(const Node& n, Refusals& refusals) : n_(n), refusals_(refusals) {}
+  WarpItems(const Node& n, ReadingContext& context) : n_(n), context_(context) {}
 
   // The value after item i as a vector (a float promoted), or a float; i moves onto it.
   glm::dvec3 vector(size_t& i) { return vec3(value(i, "a float or a vector")); }
@@ -27,11 +27,11 @@ class WarpItems {
     }
   }
   void refuse(const Item& it) {
-    refusals_.refuse(it, "a value in a warp");
+    context_.refuse(it, "a value in a warp");
     refused_ = true;
   }
   void refuse(const SourceLoc& loc, std::string_view what) {
-    refusals_.refuse(loc, what);
+    context_.refuse(loc, what);
     refused_ = true;
   }
   bool refused() const { return refused_; }
@@ -47,7 +47,7 @@ class WarpItems {
   }
 
   const Node& n_;
-  Refusals& refusals_;
+  ReadingContext& context_;
   std::string key_;
   bool refused_ = false;
 };
@@ -133,17 +133,17 @@ constexpr WarpKind kWarps[] = {
 
 }  // namespace
 
-std::shared_ptr<const Warp> readWarp(const Node& n, Refusals& refusals) {
+std::shared_ptr<const Warp> readWarp(const Node& n, ReadingContext& context) {
   if (n.items.empty() || n.items[0].kind != Item::Kind::Keyword) {
     throw ParseError(n.loc, "a warp needs its kind: turbulence, repeat, black_hole, planar, …");
   }
   for (const WarpKind& kind : kWarps) {
     if (kind.name != n.items[0].word) continue;
-    WarpItems items(n, refusals);
+    WarpItems items(n, context);
     std::shared_ptr<const Warp> warp = kind.read(items);
     return items.refused() ? nullptr : warp;
   }
-  refusals.refuse(n.items[0], "warp");
+  context.refuse(n.items[0], "warp");
   return nullptr;
 }
 

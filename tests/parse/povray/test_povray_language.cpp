@@ -310,10 +310,10 @@ TEST_CASE("povray: a .pov file is POV-Ray 3.7 when it uses a directive or global
   CHECK_FALSE(usesPovRayLanguage("/* #declare */ sphere { <0,0,0>, 1 pigment { color rgb <1,0,0> } }"));
   CHECK_FALSE(usesPovRayLanguage("my_global_settings"));
   // --dialect overrides the rule either way.
-  CHECK(povDialect("camera {}", Dialect::Auto) == SceneLanguage::Pov);
-  CHECK(povDialect("#version 3.7;", Dialect::Auto) == SceneLanguage::PovRay);
-  CHECK(povDialect("#version 3.7;", Dialect::Course) == SceneLanguage::Pov);
-  CHECK(povDialect("camera {}", Dialect::PovRay) == SceneLanguage::PovRay);
+  CHECK(povDialect("camera {}", DialectChoice::Auto) == SceneLanguage::Pov);
+  CHECK(povDialect("#version 3.7;", DialectChoice::Auto) == SceneLanguage::PovRay);
+  CHECK(povDialect("#version 3.7;", DialectChoice::Course) == SceneLanguage::Pov);
+  CHECK(povDialect("camera {}", DialectChoice::PovRay) == SceneLanguage::PovRay);
 }
 
 TEST_CASE("povray: every file of POV-Ray's standard include library parses when included", "[povray]") {

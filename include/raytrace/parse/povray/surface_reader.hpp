@@ -16,29 +16,35 @@
 
 namespace rt::povray {
 
-// What reading one file's surfaces shares: the first thing met that POV-Ray has and raytrace cannot draw yet
-// (reading goes on, so that a real mistake later in the file is still reported as one), and the scene's noise
-// generator, which patterns read when drawn since global_settings may set it after them.
-struct Refusals {
-  std::shared_ptr<NoiseGenerator> sceneNoise = std::make_shared<NoiseGenerator>(NoiseGenerator::RangeCorrected);
-  // Where a file the scene names is (empty when it is not found), and the scene's working gamma for an image
-  // map's colours when it is read: assumed_gamma, or nothing before #version 3.7, which takes them as they are.
-  std::function<std::string(const std::string&)> findFile;
-  std::function<std::optional<double>()> imageGamma;
+// What every reader of one scene file shares: the refusal policy, where the files the scene names are, and the
+// scene-wide settings that readers need. Each reader takes the one context.
+struct ReadingContext {
+  // The first thing met that POV-Ray has and raytrace cannot draw yet: reading goes on, so that a real mistake
+  // later in the file is still reported as one.
   struct Unsupported {
     SourceLoc loc;
     std::string what;
   };
-  std::optional<Unsupported> first;
-  bool media = false;  // whether some interior has a medium, which a light's media_attenuation would dim it by
+  std::optional<Unsupported> firstRefusal;
   void refuse(const SourceLoc& loc, std::string_view what) {
-    if (!first) first = Unsupported{loc, std::string(what)};
+    if (!firstRefusal) firstRefusal = Unsupported{loc, std::string(what)};
   }
   void refuse(const Item& it, std::string_view otherwise);  // names the item's keyword, or `otherwise`
+
+  // Where a file the scene names is (empty when it is not found).
+  std::function<std::string(const std::string&)> findFile;
+
+  // The scene's noise generator, which patterns read when drawn since global_settings may set it after them.
+  std::shared_ptr<NoiseGenerator> sceneNoise = std::make_shared<NoiseGenerator>(NoiseGenerator::RangeCorrected);
+  // The scene's working gamma for an image map's colours when it is read: assumed_gamma, or nothing before
+  // #version 3.7, which takes them as they are.
+  std::function<std::optional<double>()> imageGamma;
+  bool media = false;  // whether some interior has a medium, which a light's media_attenuation would dim it by
+  std::optional<SourceLoc> mediaAttenuation;  // where a light's `media_attenuation on` is written
 };
 
 // `image_map { [type] "file" … }` (image_map_reader.cpp); nothing when something in it is refused.
-std::shared_ptr<const ImageMap> readImageMap(const Node& n, Refusals& refusals);
+std::shared_ptr<const ImageMap> readImageMap(const Node& n, ReadingContext& context);
 // A bump_map's own settings: its bump_size, when written, and use_index.
 struct BumpMapSettings {
   std::optional<double> size;
@@ -46,10 +52,10 @@ struct BumpMapSettings {
 };
 // `bump_map { [type] "file" … }` (image_map_reader.cpp): its image, its values left linear; nothing when
 // something in it is refused.
-std::shared_ptr<const ImageMap> readBumpMap(const Node& n, Refusals& refusals, BumpMapSettings& settings);
+std::shared_ptr<const ImageMap> readBumpMap(const Node& n, ReadingContext& context, BumpMapSettings& settings);
 
 // `media { … }` in an interior (media_reader.cpp); nothing when something in it is refused.
-std::optional<Media> readMedia(const Node& n, Refusals& refusals);
+std::optional<Media> readMedia(const Node& n, ReadingContext& context);
 
 glm::dvec3 vec3(const Value& v);
 Rgbft colourOf(const Value& v);
@@ -58,9 +64,9 @@ const Value* valueAfter(const Node& n, size_t& i);
 // turbulence, octaves, omega and lambda into t (i moves past the value); false for any other item.
 bool readTurbulence(const Node& n, size_t& i, Turbulence& t);
 // translate, rotate, scale and transform items as steps; false for any other item.
-bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, Refusals& refusals);
+bool readTransform(const Node& n, size_t& i, std::vector<TransformStep>& steps, ReadingContext& context);
 // A `transform { … }` block's items as steps.
-void readTransformBlock(const Node& n, std::vector<TransformStep>& steps, Refusals& refusals);
+void readTransformBlock(const Node& n, std::vector<TransformStep>& steps, ReadingContext& context);
 
 // A finish with POV-Ray 3.7's defaults.
 struct PovFinish {
@@ -82,7 +88,7 @@ struct WarpMark {
 };
 
 // The warp a `warp { … }` block describes (warp_reader.cpp); nothing when it is refused or moves no point.
-std::shared_ptr<const Warp> readWarp(const Node& n, Refusals& refusals);
+std::shared_ptr<const Warp> readWarp(const Node& n, ReadingContext& context);
 
 // The pigment's fromTexture, and its warps between its transforms.
 void placeTransforms(Pigment& p, const std::vector<TransformStep>& steps, const std::vector<WarpMark>& warps);
@@ -109,14 +115,14 @@ struct Surface {
 };
 
 // A pigment block on its own, its transforms folded into its fromTexture: a map's or a list's entry, a sky's layer.
-std::shared_ptr<const Pigment> nestedPigment(const Node& n, Refusals& refusals);
+std::shared_ptr<const Pigment> nestedPigment(const Node& n, ReadingContext& context);
 
 // The `pattern { … }` of a pattern function as a pigment without colours, whose value() the function returns.
-std::shared_ptr<const Pigment> patternPigment(const Node& n, Refusals& refusals);
+std::shared_ptr<const Pigment> patternPigment(const Node& n, ReadingContext& context);
 
 // pigment, finish, normal, texture, material or interior into `s`; anything else is refused. A texture inside a
 // texture pattern starts as `defaults` (#default).
-void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Refusals& refusals);
+void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, ReadingContext& context);
 
 // The constant material of the surface's top layer; its ambient is not yet scaled by ambient_light.
 Material constantMaterial(const Surface& s);
