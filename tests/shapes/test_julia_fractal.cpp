@@ -4,7 +4,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "raytrace/parse/povray/scene_builder.hpp"
+#include "pov_scene.hpp"
 #include "raytrace/shapes/julia_fractal.hpp"
 
 using namespace rt;
@@ -29,19 +29,6 @@ JuliaFractalParams params(glm::dvec4 constant, bool hypercomplex, JuliaFunction 
 }
 
 const JuliaFractalParams& parsed(const SceneDesc& s) { return *std::get<JuliaFractalDesc>(s.objects.at(0).shape).params; }
-
-SceneDesc scene(const std::string& body) {
-  return povray::parsePovRay("#version 3.7;\n" + body, "scene.pov", povray::PovRayOptions{{}, 320, 240, false});
-}
-
-std::string failure(const std::string& body) {
-  try {
-    scene(body);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 }  // namespace
 
@@ -142,7 +129,7 @@ TEST_CASE("julia_fractal: a ray leaving a hit does not find it again; one missin
 }
 
 TEST_CASE("julia_fractal: read from a scene, with its defaults and its errors", "[julia_fractal]") {
-  const JuliaFractalParams d = parsed(scene("julia_fractal { <1, 2, 3, 4> }\n"));
+  const JuliaFractalParams d = parsed(test::pov("julia_fractal { <1, 2, 3, 4> }\n"));
   CHECK(d.constant == glm::dvec4(1, 2, 3, 4));
   CHECK_FALSE(d.hypercomplex);
   CHECK(d.function == JuliaFunction::Sqr);
@@ -150,20 +137,20 @@ TEST_CASE("julia_fractal: read from a scene, with its defaults and its errors", 
   CHECK(d.precision == 20);
   CHECK(d.slice == glm::dvec4(0, 0, 0, 1));
   const JuliaFractalParams e =
-      parsed(scene("julia_fractal { <1, 2, 3, 4> max_iteration 7 hypercomplex precision 0.5 slice <0, 0, 3, 4>, 2 }\n"));
+      parsed(test::pov("julia_fractal { <1, 2, 3, 4> max_iteration 7 hypercomplex precision 0.5 slice <0, 0, 3, 4>, 2 }\n"));
   CHECK(e.hypercomplex);
   CHECK(e.maxIteration == 7);
   CHECK(e.step() == 1);  // precision below 1 counts as 1
   CHECK(glm::length(e.slice - glm::dvec4(0, 0, 0.6, 0.8)) < 1e-15);
   CHECK(e.sliceDistance == 2);
-  CHECK(failure("julia_fractal { <1, 2, 3> }\n") == "scene.pov:2:17: error: the julia_fractal parameter's components need 4 numbers, found 3");
-  CHECK(failure("julia_fractal { <1, 2, 3, 4> slice <1, 0, 0, 0>, 1 }\n") ==
+  CHECK(test::povFailure("julia_fractal { <1, 2, 3> }\n") == "scene.pov:2:17: error: the julia_fractal parameter's components need 4 numbers, found 3");
+  CHECK(test::povFailure("julia_fractal { <1, 2, 3, 4> slice <1, 0, 0, 0>, 1 }\n") ==
         "scene.pov:2:36: error: the julia_fractal slice normal needs a non-zero fourth component");
-  CHECK(failure("julia_fractal { <1, 2, 3, 4> hypercomplex cube }\n") ==
+  CHECK(test::povFailure("julia_fractal { <1, 2, 3, 4> hypercomplex cube }\n") ==
         "scene.pov:2:43: error: 'cube' with 'hypercomplex' is not supported yet");
   // The hypercomplex functions are keywords there, not the built-in functions: refused, pwr with its numbers.
-  CHECK(failure("julia_fractal { <1, 2, 3, 4> hypercomplex pwr(1, 2) max_iteration 5 }\n") ==
+  CHECK(test::povFailure("julia_fractal { <1, 2, 3, 4> hypercomplex pwr(1, 2) max_iteration 5 }\n") ==
         "scene.pov:2:43: error: 'pwr' is not supported yet");
-  CHECK(failure("julia_fractal { <1, 2, 3, 4> hypercomplex sin max_iteration 5 }\n") ==
+  CHECK(test::povFailure("julia_fractal { <1, 2, 3, 4> hypercomplex sin max_iteration 5 }\n") ==
         "scene.pov:2:43: error: 'sin' is not supported yet");
 }

@@ -435,8 +435,8 @@ Value Interpreter::callFunction(const FunctionDef& f, std::string_view name, con
   }
   const Arguments arguments(*this);
   const std::vector<Value>& args = arguments.values;
-  // A pigment function's value is its colour at the point.
-  if (f.pigment) {
+  // A pigment or transform function reads a point: up to three floats, the missing ones 0.
+  const auto point = [&] {
     if (args.size() > 3) {
       fail(at, "function '" + std::string(name) + "' takes 3 arguments, found " + std::to_string(args.size()));
     }
@@ -445,19 +445,16 @@ Value Interpreter::callFunction(const FunctionDef& f, std::string_view name, con
       if (args[i].type != Value::Type::Float) fail(at, "function arguments must be floats");
       p[i] = args[i].v[0];
     }
-    const Rgbft c = f.pigment->at({p[0], p[1], p[2]});
+    return glm::dvec3(p[0], p[1], p[2]);
+  };
+  // A pigment function's value is its colour at the point.
+  if (f.pigment) {
+    const Rgbft c = f.pigment->at(point());
     return Value::colour({c.rgb.r, c.rgb.g, c.rgb.b, c.filter, c.transmit});
   }
   // A transform function's value is the point moved (POV-Ray's vtransform in transforms.inc calls one).
   if (f.transform) {
-    if (args.size() > 3) {
-      fail(at, "function '" + std::string(name) + "' takes 3 arguments, found " + std::to_string(args.size()));
-    }
-    double p[3] = {0, 0, 0};
-    for (size_t i = 0; i < args.size(); ++i) {
-      if (args[i].type != Value::Type::Float) fail(at, "function arguments must be floats");
-      p[i] = args[i].v[0];
-    }
+    const glm::dvec3 p = point();
     const std::array<double, 12>& m = *f.transform;
     std::array<double, 5> moved{};
     for (size_t j = 0; j < 3; ++j) moved[j] = p[0] * m[j] + p[1] * m[3 + j] + p[2] * m[6 + j] + m[9 + j];
