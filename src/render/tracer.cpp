@@ -537,7 +537,9 @@ typename Tracer<T>::Local Tracer<T>::lightLoop(const Hit<T>& hit, const Material
     if (bent && nl <= 0.0f) continue;
     diffuse += lightColor * m.diffuse * (m.brilliance == 1.0f ? nl : std::pow(nl, m.brilliance));
     if (!kPlain && crand > 0) diffuse -= grain(lightColor, m, hit.point, i);
-    if (m.specular == Color(0)) continue;  // a matte surface: no power to take
+    // A matte surface has no power to take; a shadowless light gives no highlight (the manual's "Shadowless
+    // Lights", as POV-Ray's pictures show).
+    if (m.specular == Color(0) || light.shadowless) continue;
     specular += lightColor * m.specular * specularFactor(n, v, s->l, m);
   }
   return {diffuse, specular};
@@ -572,7 +574,7 @@ void Tracer<T>::illuminate(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v
       const float nl = std::min(float(glm::dot(n, l)), 1.0f);
       if (!(nl > 0.0f)) continue;
       d += each * m.diffuse * (m.brilliance == 1.0f ? nl : std::pow(nl, m.brilliance));
-      if (m.specular != Color(0)) s += each * m.specular * specularFactor(n, v, l, m);
+      if (m.specular != Color(0) && !light.shadowless) s += each * m.specular * specularFactor(n, v, l, m);
     }
   }
   diffuse += d;

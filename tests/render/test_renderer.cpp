@@ -379,6 +379,22 @@ TEST_CASE("crand lowers each point's diffuse light by crand·u·C·light, 0 ≤ 
   CHECK(high > 0.27f);
 }
 
+TEST_CASE("A shadowless light gives diffuse light but no highlight, from a point or an area light", "[render]") {
+  // A wall facing the camera and the light head on: n·l = 1 and the highlight at its peak. Diffuse alone is
+  // 0.6·0.5 = 0.3; with the highlight (phong 0.5) it is 0.3 + 0.5 = 0.8. POV-Ray's manual ("Shadowless
+  // Lights"): such a light causes no highlights.
+  const auto wall = [](const std::string& light) {
+    const std::string text = "#version 3.7;\n"
+        "camera { orthographic location <0, 0, -10> look_at 0 right 4*x up 4*y }\n"
+        "light_source { <0, 0, -1e6> rgb 1 " + light + " }\n"
+        "plane { -z, 0 pigment { rgb 0.5 } finish { ambient 0 diffuse 0.6 phong 0.5 phong_size 1 } }\n";
+    return centre(rt::povray::parsePovRay(text, "wall.pov", rt::povray::PovRayOptions{{}, 1, 1, false}));
+  };
+  checkColor(wall(""), Color(0.8f));
+  checkColor(wall("shadowless"), Color(0.3f));
+  checkColor(wall("shadowless area_light 2*x, 2*y, 2, 2 area_illumination"), Color(0.3f));
+}
+
 TEST_CASE("A jittered area light gives the same picture on any threads, and pixel() agrees", "[render]") {
   const std::string text = "#version 3.7;\n"
       "camera { location <0, 3, -4> look_at 0 }\n"
