@@ -79,6 +79,11 @@ Texture bounded(Texture t) {
       return false;
     });
   }
+  if (t.interior) {
+    take(t.interior->bound);
+    t.bumpy = t.bumpy || t.interior->bumpy;
+    t.readsNormal = t.readsNormal || t.interior->readsNormal;
+  }
   return t;
 }
 

@@ -79,13 +79,15 @@ template <class T> class Object {
   // untextured scene nothing measurable (docs/performance.md, "Textures").
   const Material& materialAt(const Hit<T>& hit, Material& scratch) const {
     if (!texture_) return material_;
-    return textured(hit, scratch, hit.normal);
+    textured(hit, scratch, hit.normal);
+    return scratch;
   }
-  // The same, and the shading normal `normal` (facing the viewer) bent where the texture has a normal.
+  // The same, and the shading normal `normal` (facing the viewer) bent where the texture has a normal; the
+  // interior_texture is what a hit sees where `normal` points into the object.
   const Material& materialAt(const Hit<T>& hit, Material& scratch, Vec3<T>& normal) const {
     if (!texture_) return material_;
-    textured(hit, scratch, normal);
-    if (texture_->bumpy) normal = Vec3<T>(texture_->bent(glm::dvec3(hit.point), glm::dvec3(normal)));
+    const Texture& seen = textured(hit, scratch, normal);
+    if (seen.bumpy) normal = Vec3<T>(seen.bent(glm::dvec3(hit.point), glm::dvec3(normal)));
     return scratch;
   }
   void setTexture(std::shared_ptr<const Texture> texture) { texture_ = std::move(texture); }
@@ -97,11 +99,13 @@ template <class T> class Object {
   int id() const { return id_; }  // 1-based position in the scene file, as printrays shows it
 
  private:
-  // The texture at the hit, where `facing` is the surface's normal that a slope pattern reads.
-  const Material& textured(const Hit<T>& hit, Material& scratch, const Vec3<T>& facing) const {
-    if (texture_->readsNormal) setSurfaceNormal(glm::normalize(glm::dvec3(facing)));
-    scratch = texture_->uvMapped ? texture_->inSpace(glm::dvec3(hit.uv, 0)) : texture_->at(glm::dvec3(hit.point));
-    return scratch;
+  // The texture at the hit into `scratch`, where `facing` is the surface's normal that a slope pattern reads;
+  // returns the texture seen: the interior one where `facing` points into the object.
+  const Texture& textured(const Hit<T>& hit, Material& scratch, const Vec3<T>& facing) const {
+    const Texture& seen = texture_->interior && glm::dot(facing, hit.normal) < T(0) ? *texture_->interior : *texture_;
+    if (seen.readsNormal) setSurfaceNormal(glm::normalize(glm::dvec3(facing)));
+    scratch = seen.uvMapped ? seen.inSpace(glm::dvec3(hit.uv, 0)) : seen.at(glm::dvec3(hit.point));
+    return seen;
   }
 
   Material material_;

@@ -50,6 +50,9 @@ struct Texture {
   // uv_mapping: the layers read the point (u, v, 0) of the surface's uv coordinates instead of the world point,
   // so the object's transforms do not move them (the POV-Ray 3.7 manual, "UV Mapping").
   bool uvMapped = false;
+  // POV-Ray's interior_texture: what a hit sees from inside the surface (its normal facing away from the ray);
+  // none: the same texture from both sides (the POV-Ray 3.7 manual, "Interior Texture").
+  std::shared_ptr<const Texture> interior;
 
   // What shading reads at a world point of the surface.
   Material at(const glm::dvec3& point) const { return inSpace(glm::dvec3(fromWorld * glm::dvec4(point, 1))); }
@@ -63,8 +66,8 @@ struct Texture {
   glm::dvec3 bentInSpace(const glm::dvec3& p, const glm::dmat3& toTexture, const glm::dvec3& n) const;
 };
 
-// The texture with `bound`, `bumpy` and `readsNormal` filled in: each term's largest over every colour its pigments can give. A blend
-// or a layer mixes colours with weights summing to at most 1, so the largest of the colours bounds it.
+// The texture with `bound`, `bumpy` and `readsNormal` filled in: each term's largest over every colour its pigments can give
+// (its interior's too). A blend or a layer mixes colours with weights summing to at most 1, so the largest of the colours bounds it.
 Texture bounded(Texture t);
 
 // A layer's material at a colour: ka·C, kd·C, and the terms that do not depend on the colour.

@@ -486,6 +486,14 @@ class Builder {
           textureBlock = textureBlock || m == "texture";
           readSurfaceItem(*it.node, s, default_, context_);
           if (!textureFrom) textureFrom = o.transforms.size();
+        } else if (m == "interior_texture") {
+          // Read as a texture block of its own, starting as the #default texture.
+          Node body = *it.node;
+          body.keyword = "texture";
+          Surface inside = default_;
+          readSurfaceItem(body, inside, default_, context_);
+          s.inside = std::make_shared<const Surface>(std::move(inside));
+          if (!textureFrom) textureFrom = o.transforms.size();
         } else {
           refuse(it.loc, m);
         }
@@ -596,22 +604,23 @@ class Builder {
   // `undo` takes this level's world back to the one they were made in.
   static void moveTextures(ObjectDesc& o, const glm::dmat4& undo) {
     moveMedia(o.material, undo);
-    if (o.texture) {
-      auto t = std::make_shared<Texture>(*o.texture);
-      t->fromWorld = t->fromWorld * undo;
-      o.texture = t;
-    }
+    if (o.texture) o.texture = moved(*o.texture, undo);
     if (auto* csg = std::get_if<CsgDesc>(&o.shape)) {
       for (ObjectDesc& child : csg->children) moveTextures(child, undo);
     }
     if (auto* mesh = std::get_if<MeshDesc>(&o.shape)) {
       for (FaceSurface& face : mesh->surfaces) {
-        if (!face.texture) continue;
-        auto t = std::make_shared<Texture>(*face.texture);
-        t->fromWorld = t->fromWorld * undo;
-        face.texture = t;
+        if (face.texture) face.texture = moved(*face.texture, undo);
       }
     }
+  }
+
+  // The texture, and its interior one, with `undo` before its own map from world space.
+  static std::shared_ptr<const Texture> moved(const Texture& texture, const glm::dmat4& undo) {
+    auto t = std::make_shared<Texture>(texture);
+    t->fromWorld = t->fromWorld * undo;
+    if (t->interior) t->interior = moved(*t->interior, undo);
+    return t;
   }
 
   // A camera statement's items as written (an identifier's first), before POV-Ray's rules combine them.
@@ -976,6 +985,7 @@ Texture ambientScaled(Texture t, const Color& light) {
     for (auto& sub : pattern->textures) sub = std::make_shared<const Texture>(ambientScaled(*sub, light));
     layer.pattern = pattern;
   }
+  if (t.interior) t.interior = std::make_shared<const Texture>(ambientScaled(*t.interior, light));
   return bounded(std::move(t));
 }
 

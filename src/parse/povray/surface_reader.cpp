@@ -836,7 +836,7 @@ std::shared_ptr<const Pigment> patternPigment(const Node& n, ReadingContext& con
 bool Surface::patterned() const {
   const SurfaceLayer& l = layers[0];
   return layers.size() > 1 || l.pigment.pattern || l.pigment.average || l.pigment.image || l.pattern || l.normal ||
-         l.finish.emission != Color(0);
+         l.finish.emission != Color(0) || inside;
 }
 
 namespace {
@@ -1030,6 +1030,7 @@ Texture makeTexture(const Surface& s, const std::vector<TransformStep>& after) {
   }
   t.fromWorld = glm::inverse(composeTransforms<double>(after));
   t.uvMapped = s.uvMapped;
+  if (s.inside) t.interior = std::make_shared<const Texture>(bounded(makeTexture(*s.inside, after)));
   return t;
 }
 
