@@ -46,7 +46,7 @@ TEST_CASE("light shape: a spotlight's cone, its smooth edge and its tightness, a
 TEST_CASE("light shape: a cylinder light's radius and falloff are distances from its axis", "[light]") {
   LightDesc l;
   l.position = {0, 10, 0};
-  l.spot = SpotDesc{{0, 0, 0}, 1, 2, 0, true};
+  l.spot = SpotDesc{{0, 0, 0}, 1, 2, 0, lightKindNamed("cylinder")};
   const LightShape s(l);
   // The point of the plane y = 0 at `x` from the axis.
   const auto at = [&](double x) {

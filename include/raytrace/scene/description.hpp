@@ -11,6 +11,7 @@
 
 #include "raytrace/util/error.hpp"
 #include "raytrace/scene/dialect.hpp"
+#include "raytrace/scene/light_kind.hpp"
 #include "raytrace/scene/radiosity.hpp"
 #include "raytrace/scene/projection.hpp"
 #include "raytrace/shapes/shape_desc.hpp"
@@ -45,13 +46,13 @@ struct CameraDesc {
   SourceLoc loc;  // the `camera` statement (POV) or the `fov` command (.cli) that set it, for messages
 };
 
-// A POV-Ray spotlight's cone (docs/povray-language.md, "What is drawn, and what is refused"). At namespace
-// scope: inside LightDesc, clang would take it as not default-constructible inside std::optional.
+// A POV-Ray light's emitter kind (a spotlight or a cylinder light, scene/light_kind.hpp) and its values as
+// written. At namespace scope: inside LightDesc, clang would take it as not default-constructible inside
+// std::optional.
 struct SpotDesc {
   glm::dvec3 pointAt{0};
-  double radius = 30, falloff = 45, tightness = 0;  // degrees, degrees, exponent: POV-Ray's defaults
-  // POV-Ray's `cylinder` light: the same fringe across the distance from the axis, radius and falloff lengths.
-  bool cylinder = false;
+  double radius = 30, falloff = 45, tightness = 0;  // a spotlight's degrees, degrees, exponent: POV-Ray's defaults
+  const LightKind* kind = &spotlightKind();
 };
 
 // A POV-Ray area light (docs/povray-language.md, "Lights"): a size1 × size2 grid of points over the rectangle

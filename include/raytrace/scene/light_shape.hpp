@@ -1,6 +1,5 @@
-// How a POV-Ray light's strength varies over the scene: a spotlight's cone, a cylinder light's cylinder and a
-// light's fading with distance (POV-Ray 3.7 manual, "Spotlights", "Cylindrical Lights" and "Light Fading"; the
-// edges fitted to POV-Ray's pictures).
+// How a POV-Ray light's strength varies over the scene: its emitter kind's shaping (scene/light_kind.hpp) and a
+// light's fading with distance (POV-Ray 3.7 manual, "Light Fading").
 #pragma once
 
 #include "raytrace/geometry/math.hpp"
@@ -9,11 +8,8 @@
 namespace rt {
 
 struct LightShape {
-  bool spot = false;
-  bool cylinder = false;  // a cylinder light: radius and falloff are distances from the axis
-  double radius = 0, falloff = 0;
-  glm::dvec3 axis{0, -1, 0};          // unit, from the light toward its point_at
-  double cosRadius = 1, cosFalloff = 1, tightness = 0;
+  const LightKind* kind = nullptr;  // null: the same all around
+  Emitter emitter;
   double fadeDistance = 0, fadePower = 0;
 
   explicit LightShape(const LightDesc& light);

@@ -1,5 +1,6 @@
-// `light_source { … }` (POV-Ray 3.7 manual, "Light Sources"): point lights, spotlights, cylinder lights, parallel
-// and area lights; what else a light may say is refused.
+// `light_source { … }` (POV-Ray 3.7 manual, "Light Sources"): a point light, or one of the emitter kinds of
+// lightKinds() (scene/light_kind.hpp), with the parallel, area, fading and shadowless modifiers; what else a
+// light may say is refused.
 #include "raytrace/parse/povray/light_reader.hpp"
 
 #include <algorithm>
@@ -64,9 +65,9 @@ void readLight(const Node& n, LightDesc& l, ReadingContext& context, const Looks
       if (w == "media_interaction") l.mediaInteraction = !v || v->v[0] != 0;
     } else if (w == "shadowless") {
       l.shadowless = true;
-    } else if (w == "spotlight" || w == "cylinder") {
+    } else if (const LightKind* kind = lightKindNamed(w)) {
       isSpot = true;
-      spot.cylinder = w == "cylinder";
+      spot.kind = kind;
     } else if (w == "parallel") {
       parallel = true;
     } else if (w == "area_light") {
@@ -93,10 +94,12 @@ void readLight(const Node& n, LightDesc& l, ReadingContext& context, const Looks
       context.refuse(it.loc, w);
     }
   }
-  // A cylinder light's radius and falloff are lengths, 0.75 and 1 unless given (manual, "Cylindrical Lights").
-  spot.radius = radius.value_or(spot.cylinder && !l.spot ? 0.75 : spot.radius);
-  spot.falloff = falloff.value_or(spot.cylinder && !l.spot ? 1.0 : spot.falloff);
-  if (spot.cylinder && spot.tightness != 0 && tightness) context.refuse(tightness->loc, "a cylinder light's tightness");
+  // A new emitter's radius and falloff are its kind's unless given; a light_source copied keeps its own.
+  spot.radius = radius.value_or(isSpot && !l.spot ? spot.kind->defaultRadius : spot.radius);
+  spot.falloff = falloff.value_or(isSpot && !l.spot ? spot.kind->defaultFalloff : spot.falloff);
+  if (!spot.kind->tightness && spot.tightness != 0 && tightness) {
+    context.refuse(tightness->loc, "a " + std::string(spot.kind->keyword) + " light's tightness");
+  }
   if (isSpot) l.spot = spot;
   if (parallel) l.parallelTo = std::make_shared<const glm::dvec3>(spot.pointAt);
   if (area && illumination) area->illumination = *illumination;
