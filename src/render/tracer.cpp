@@ -37,6 +37,27 @@ template <class T> uint64_t pointKey(const Vec3<T>& point, size_t index) {
   return childKey(childKey(childKey(mix64(bits(point.x)), bits(point.y)), bits(point.z)), uint64_t(index));
 }
 
+// An area light's grid as the point shaded sees it: its axes turned toward the point (`orient`), each grid point
+// jittered by the point's own key, so that its shadow rays and `area_illumination` use the same points.
+class GridSeenFrom {
+ public:
+  template <class T>
+  GridSeenFrom(const AreaLight& area, const glm::dvec3& center, const Vec3<T>& point, size_t index)
+      : area_(area), center_(center), key_(pointKey(point, index)) {
+    area.axesToward(center, glm::dvec3(point), a1_, a2_);
+  }
+  glm::dvec3 operator()(int i, int j) const {
+    const glm::vec2 jitter =
+        area_.jitter ? uniformPair(childKey(key_, uint64_t(j) * uint64_t(area_.size1) + uint64_t(i))) : glm::vec2(0);
+    return area_.point(i, j, center_, a1_, a2_, jitter);
+  }
+
+ private:
+  const AreaLight& area_;
+  glm::dvec3 center_, a1_, a2_;
+  uint64_t key_;
+};
+
 // crand's darkening of light `index` at `point`: crand·u·C·light (SurfaceExtras::crand). Kept out of line: the
 // light loop of every other surface then pays only the test.
 template <class T>
@@ -557,19 +578,13 @@ void Tracer<T>::illuminate(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v
                            const Light<T>& light, size_t index, const Color& lightColor, Color& diffuse,
                            Color& specular) const {
   const AreaLight& area = *light.area;
-  const glm::dvec3 center(light.position), point(hit.point);
-  glm::dvec3 a1, a2;
-  area.axesToward(center, point, a1, a2);
-  const uint64_t key = pointKey(hit.point, index);
+  const GridSeenFrom grid(area, glm::dvec3(light.position), hit.point, index);
   // Each point is a light of 1 / (size1 · size2) of the colour, so that the grid gives the light's colour.
   const Color each = lightColor / float(area.size1 * area.size2);
   Color d(0), s(0);
   for (int j = 0; j < area.size2; ++j) {
     for (int i = 0; i < area.size1; ++i) {
-      const glm::vec2 jitter =
-          area.jitter ? uniformPair(childKey(key, uint64_t(j) * uint64_t(area.size1) + uint64_t(i))) : glm::vec2(0);
-      const Vec3<T> l = light.parallel ? *light.parallel
-                                       : glm::normalize(Vec3<T>(area.point(i, j, center, a1, a2, jitter)) - hit.point);
+      const Vec3<T> l = light.parallel ? *light.parallel : glm::normalize(Vec3<T>(grid(i, j)) - hit.point);
       // A point below the surface's horizon lights none of it.
       const float nl = std::min(float(glm::dot(n, l)), 1.0f);
       if (!(nl > 0.0f)) continue;
@@ -741,16 +756,10 @@ bool Tracer<T>::sampledLight(const Hit<T>& hit, const Vec3<T>& n, const Light<T>
   if (!light.area) {
     if (!beyond) share = seen(out.ray, out.segment);
   } else if (!beyond) {
-    const AreaLight& area = *light.area;
-    const glm::dvec3 center(light.position), point(hit.point);
-    glm::dvec3 a1, a2;
-    area.axesToward(center, point, a1, a2);
-    const uint64_t key = pointKey(hit.point, index);
-    share = area.share(
+    const GridSeenFrom grid(*light.area, glm::dvec3(light.position), hit.point, index);
+    share = light.area->share(
         [&](int i, int j) {
-          const glm::vec2 jitter =
-              area.jitter ? uniformPair(childKey(key, uint64_t(j) * uint64_t(area.size1) + uint64_t(i))) : glm::vec2(0);
-          const Vec3<T> at = target(Vec3<T>(area.point(i, j, center, a1, a2, jitter)));
+          const Vec3<T> at = target(Vec3<T>(grid(i, j)));
           Ray<T> ray;
           Interval<T> segment;
           spawnRayTo(hit, at, glm::normalize(at - hit.point), n, offset, ray, segment);
