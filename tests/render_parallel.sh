@@ -23,6 +23,8 @@ for _ in $(seq 600); do
 done
 kill -TERM -- -"$pid"
 wait "$pid" && fail "the interrupted run succeeded"
+# setsid made the run a session of its own: nothing of it may outlive its return, or a tile could still land.
+! pgrep -s "$pid" >/dev/null || fail "still running after the interrupted run returned: $(pgrep -a -s "$pid")"
 done=$(ls resumed.png.tiles/tile-*.exr | wc -l)
 ((done >= 2 && done < 4)) || fail "$done tiles done when interrupted"
 [ ! -e resumed.png ] || fail "the interrupted run wrote its image"
