@@ -381,7 +381,8 @@ TEST_CASE("splits fall in the gaps between clusters, as a sweep over every bin b
         "    Leaf: {31.9980 -1.0020 -1.0020} - {34.0020 1.0020 1.0020} objects 7\n");
 }
 
-TEMPLATE_TEST_CASE("scene: an object with no_shadow is hit but casts no shadow, with or without a hierarchy", "",
+TEMPLATE_TEST_CASE("scene: an object with no_shadow is hit but casts no shadow, with or without a hierarchy, "
+                   "through transparent surfaces too", "",
                    float, double) {
   rt::SceneDesc desc;
   for (int i = 0; i < 12; ++i) desc.objects.push_back(sphereDesc({3.0 * i, 0, 0}, 1));
@@ -396,9 +397,12 @@ TEMPLATE_TEST_CASE("scene: an object with no_shadow is hit but casts no shadow, 
     const rt::Object<TestType>* last = nullptr;
     scene.occluded(&ray, &range, 1, &shadowed, &last);
     CHECK_FALSE(shadowed);
+    // Nor does a shadow ray followed through transparent surfaces see it.
+    CHECK_FALSE(scene.closestHit(ray, range, rt::Sight::Shadow));
     // The sphere at x = 3 still casts one.
     const rt::Ray<TestType> other{{3, 0, -5}, {0, 0, 1}};
     CHECK(scene.occluded(other, range));
+    CHECK(scene.closestHit(other, range, rt::Sight::Shadow));
   }
 }
 

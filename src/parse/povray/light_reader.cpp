@@ -42,7 +42,10 @@ void readLight(const Node& n, LightDesc& l, ReadingContext& context, const Looks
   bool isSpot = l.spot.has_value(), parallel = l.parallelTo != nullptr;
   SpotDesc spot = l.spot.value_or(SpotDesc{});
   if (l.parallelTo) spot.pointAt = *l.parallelTo;
-  std::optional<AreaDesc> area = l.area ? std::optional<AreaDesc>(*l.area) : std::nullopt;
+  // The grid's modifiers may come before `area_light`, and mean nothing to a light without one.
+  AreaDesc grid = l.area ? *l.area : AreaDesc{};
+  bool isArea = l.area != nullptr;
+  const Item* circular = nullptr;
   std::optional<double> radius, falloff;
   const Item* tightness = nullptr;
   const Node* looksLike = nullptr;
@@ -71,16 +74,18 @@ void readLight(const Node& n, LightDesc& l, ReadingContext& context, const Looks
     } else if (w == "parallel") {
       parallel = true;
     } else if (w == "area_light") {
-      area = areaLight(n, i, area.value_or(AreaDesc{}));
-    } else if ((w == "jitter" || w == "circular" || w == "orient") && area) {
-      (w == "jitter" ? area->jitter : w == "circular" ? area->circular : area->orient) = true;
+      grid = areaLight(n, i, grid);
+      isArea = true;
+    } else if (w == "jitter" || w == "circular" || w == "orient") {
+      (w == "jitter" ? grid.jitter : w == "circular" ? grid.circular : grid.orient) = true;
+      if (w == "circular") circular = &it;
     } else if (w == "area_illumination") {
       // On (the word alone, or a value other than 0): each grid point lights from its own direction; a light
       // without a grid is one point, which lights the same either way.
       const Value* v = valueAfter(n, i);
       illumination = !v || v->v[0] != 0;
     } else if (w == "point_at" || w == "radius" || w == "falloff" || w == "tightness" || w == "fade_distance" ||
-               w == "fade_power" || (w == "adaptive" && area)) {
+               w == "fade_power" || w == "adaptive") {
       const Value* v = valueAfter(n, i);
       if (!v || !v->numeric()) throw ParseError(it.loc, "'" + std::string(w) + "' needs a value");
       if (w == "point_at") spot.pointAt = vec3(*v);
@@ -88,7 +93,7 @@ void readLight(const Node& n, LightDesc& l, ReadingContext& context, const Looks
       else if (w == "falloff") falloff = v->v[0];
       else if (w == "tightness") spot.tightness = v->v[0], tightness = &it;
       else if (w == "fade_distance") l.fadeDistance = v->v[0];
-      else if (w == "adaptive") area->adaptive = std::max(0, int(v->v[0]));
+      else if (w == "adaptive") grid.adaptive = std::max(0, int(v->v[0]));
       else l.fadePower = v->v[0];
     } else {
       context.refuse(it.loc, w);
@@ -102,8 +107,12 @@ void readLight(const Node& n, LightDesc& l, ReadingContext& context, const Looks
   }
   if (isSpot) l.spot = spot;
   if (parallel) l.parallelTo = std::make_shared<const glm::dvec3>(spot.pointAt);
-  if (area && illumination) area->illumination = *illumination;
-  if (area) l.area = std::make_shared<const AreaDesc>(*area);
+  // As POV-Ray: a circular grid needs points to place on its circle.
+  if (circular && (!isArea || grid.size1 < 2 || grid.size2 < 2)) {
+    throw ParseError(circular->loc, "'circular' needs an area_light of more than one point along each axis");
+  }
+  if (isArea && illumination) grid.illumination = *illumination;
+  if (isArea) l.area = std::make_shared<const AreaDesc>(grid);
   if (looksLike) looksLikeAt(*looksLike, l.position, steps);
   moveLight(l, composeTransforms<double>(steps));
 }

@@ -64,6 +64,11 @@ class Builder {
     } else {
       ObjectDesc o;
       if (object(n, o)) add(std::move(o), n.loc);
+      for (ObjectDesc& look : looksInside_) {
+        const SourceLoc at = look.loc;
+        add(std::move(look), at);
+      }
+      looksInside_.clear();
     }
   }
 
@@ -414,14 +419,21 @@ class Builder {
 
   bool object(const Node& n, ObjectDesc& o, Surface& s) {
     const std::string_view k = n.keyword;
-    const size_t firstLight = scene_.lights.size();
+    const size_t firstLight = scene_.lights.size(), firstLook = looksInside_.size();
     size_t i = 0;
     // `mesh { Name … }` is the declared mesh under what follows, as `object { Name … }` is.
     const bool namedMesh = (k == "mesh" || k == "mesh2") && !n.items.empty() && n.items[0].kind == Item::Kind::Node &&
                            (n.items[0].node->keyword == "mesh" || n.items[0].node->keyword == "mesh2");
     if (k == "object" || namedMesh) {
       if (i >= n.items.size() || n.items[i].kind != Item::Kind::Node) throw ParseError(n.loc, "'object' needs an object identifier");
-      if (!object(*n.items[i++].node, o, s)) return false;
+      if (k == "object" && lightHere(n.items[i])) {
+        // `object { ALight … }`: the light, moved by what follows as a union of lights alone moves its own.
+        ++i;
+        o.shape = CsgDesc{};
+        o.loc = n.loc;
+      } else if (!object(*n.items[i++].node, o, s)) {
+        return false;
+      }
     } else {
       ItemReader reader(*this, n, i);
       // A union of light sources alone, which POV-Ray allows to move them together.
@@ -541,6 +553,12 @@ class Builder {
     if (scene_.lights.size() > firstLight) {
       const glm::dmat4 m = composeTransforms<double>(own);
       for (size_t l = firstLight; l < scene_.lights.size(); ++l) moveLight(scene_.lights[l], m);
+      // Their looks_like objects move with them, objects of their own as at the top level.
+      for (size_t l = firstLook; l < looksInside_.size(); ++l) {
+        ObjectDesc& look = looksInside_[l];
+        look.transforms.insert(look.transforms.end(), own.begin(), own.end());
+        moveTextures(look, glm::inverse(m));
+      }
     }
     return true;
   }
@@ -827,12 +845,8 @@ class Builder {
   }
 
   // A light's looks_like object: drawn about the light's position and moved with it, casting no shadow
-  // (POV-Ray 3.7 manual, "Looks_like"). A light inside an object would move it with that object: refused.
+  // (POV-Ray 3.7 manual, "Looks_like"). A light inside an object leaves it to that object to move (object()).
   void lookLike(const Node& n, const glm::dvec3& position, const std::vector<TransformStep>& steps) {
-    if (nestedLight_) {
-      refuse(n.loc, "looks_like in a light inside an object");
-      return;
-    }
     for (const Item& it : n.items) {
       if (!isObject(it)) {
         refuseItem(it, " in looks_like");
@@ -845,7 +859,8 @@ class Builder {
       o.transforms.insert(o.transforms.end(), moves.begin(), moves.end());
       moveTextures(o, glm::inverse(composeTransforms<double>(moves)));
       o.noShadow = true;
-      add(std::move(o), it.node->loc);
+      if (nestedLight_) looksInside_.push_back(std::move(o));
+      else add(std::move(o), it.node->loc);
     }
   }
 
@@ -955,6 +970,7 @@ class Builder {
  public:
   Color ambientLight_{1};
   bool nestedLight_ = false;  // reading a light inside an object
+  std::vector<ObjectDesc> looksInside_;  // the looks_like objects of such lights, moved with them
   std::optional<double> assumedGamma_;
 
  private:

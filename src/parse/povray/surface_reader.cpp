@@ -22,6 +22,15 @@ Rgbft colourOf(const Value& v) {
   return {Color(float(c[0]), float(c[1]), float(c[2])), float(c[3]), float(c[4])};
 }
 
+namespace {
+
+// A colour's component named after the colour, as in `Gold filter 0.92`.
+bool isComponentWord(std::string_view w) {
+  return w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit";
+}
+
+}  // namespace
+
 const Value* valueAfter(const Node& n, size_t& i) {
   if (i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Value) return &n.items[++i].value;
   return nullptr;
@@ -480,7 +489,7 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
     }
     if (isFunction(it)) {
       continue;  // refused by draft.start
-    } else if ((w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") && !p.pattern &&
+    } else if (isComponentWord(w) && !p.pattern &&
                !p.average && !p.image) {
       // A colour identifier's component changed after it: `pigment { Gold filter 0.92 }`.
       const Value* v = valueAfter(n, i);
@@ -500,7 +509,14 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
       p.average = true;
       draft = PatternDraft{};
     } else if (w == "quick_color" || w == "quick_colour") {
-      valueAfter(n, i);
+      // The colour of POV-Ray's quick preview, which draws no textures: read and dropped, also when spelled
+      // by components (`quick_colour red 0.7 green 0.7 blue 1`).
+      if (!valueAfter(n, i)) {
+        while (i + 2 < n.items.size() && n.items[i + 1].kind == Item::Kind::Keyword &&
+               isComponentWord(n.items[i + 1].word) && n.items[i + 2].kind == Item::Kind::Value) {
+          i += 2;
+        }
+      }
     } else if (!readWave(n, i, p) && !draft.modifier(n, i, context)) {
       context.refuse(it.loc, w);
     }
