@@ -130,13 +130,13 @@ Color beerAttenuation(const Color& pigment, float distance) {
   return kept;
 }
 
-Weights weights(const Material& m, float fresnel, bool reflectionReplacesLocal) {
+Weights weights(const Material& m, float fresnel, const Dialect& dialect) {
   const float f = m.filter;
   const float k = m.reflection;
   Weights w;
-  w.local = (1.0f - f) * (reflectionReplacesLocal ? 1.0f - k : 1.0f);
-  w.reflection = (1.0f - f) * k + f * fresnel;
-  w.transmission = f * (1.0f - fresnel);
+  w.local = (1.0f - f) * (dialect.reflectionReplacesLocal() ? 1.0f - k : 1.0f);
+  w.reflection = (dialect.transparencyDimsReflection() ? 1.0f - f : 1.0f) * k + f * fresnel;
+  w.transmission = f * (1.0f - fresnel) * (m.extras->conserveEnergy ? 1.0f - k : 1.0f);
   return w;
 }
 

@@ -108,7 +108,8 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
       }
       localMax = std::max(localMax, options.normals ? 1.0f : local);
       const float reflection = std::max(m.reflection, m.extras->reflectionMin);
-      gain = std::max(gain, ((1 - m.filter) * reflection + m.filter) * std::max(1.0f, brightest(m.pigment)));
+      const float reflected = (dialect_.transparencyDimsReflection() ? 1 - m.filter : 1) * reflection;
+      gain = std::max(gain, (reflected + m.filter) * std::max(1.0f, brightest(m.pigment)));
       filteredShadows_ = filteredShadows_ || (dialect_.filtersShadows() && m.filter > 0);
     });
   }
@@ -128,6 +129,11 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
   // Gathered light has no bound known beforehand: with -gi every secondary ray of any weight is traced, and
   // only the ray budget bounds a tree.
   cutoff_ = options.gi.enabled ? 0.0f : std::ldexp(0.5f / 255.0f, -(fullDepth + 1));
+  if (desc.adcBailout && !options.gi.enabled) {
+    // The scene's own rule: a ray's weight alone against adc_bailout, as POV-Ray decides which rays to trace.
+    std::fill(bound_.begin(), bound_.end(), 1.0f);
+    cutoff_ = *desc.adcBailout;
+  }
   treeRays_ = (1 << (fullDepth + 1)) - 1;
 }
 
@@ -392,11 +398,11 @@ template <class T>
 Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Material& m, const Vec3<T>& n,
                          RayRecord* record, std::optional<Vec3<T>>& refracted) const {
   const float fresnel = options_.fresnel ? schlick(float(glm::dot(n, -ray.dir)), m.ior) : 0.0f;
-  Weights w = weights(m, fresnel, dialect_.reflectionReplacesLocal());
+  Weights w = weights(m, fresnel, dialect_);
   if (m.extras->reflectionFalloff > 0) {
     Material varied = m;
     varied.reflection = variableReflection(m, float(glm::dot(n, -ray.dir)));
-    w = weights(varied, fresnel, dialect_.reflectionReplacesLocal());
+    w = weights(varied, fresnel, dialect_);
   }
   if (w.transmission > 0) {
     // The outward normal as the shading normal bends it: hit.normal itself where nothing bends it.

@@ -458,6 +458,27 @@ TEST_CASE("The depth bomb at --depth=64: an eye ray's tree stays within 8191 ray
   CHECK(rays(8) == 116);
 }
 
+TEST_CASE("A scene's adc_bailout: a ray is traced while its weight alone reaches it, as POV-Ray decides",
+          "[render]") {
+  SceneDesc desc = loadScene(sourceDir() + "/scenes/depth_bomb.pov");
+  const Camera<double> camera(desc.camera, 40, 30);
+  const auto rays = [&](float bailout) {
+    desc.adcBailout = bailout;
+    const Scene<double> scene(desc, chooseArithmetic(desc));
+    RenderOptions options;
+    options.depth = 12;
+    Tracer<double> tracer(scene, options);
+    std::vector<RayRecord> trees;
+    tracer.pixel(camera, 20, 15, &trees);
+    REQUIRE(trees.size() == 1);
+    return raysIn(trees[0]);
+  };
+  // 98 rays at POV-Ray's default, where the exact cutoff keeps 528 (the test above); the eye ray alone once no
+  // secondary ray weighs enough.
+  CHECK(rays(1.0f / 255) == 98);
+  CHECK(rays(2.0f) == 1);
+}
+
 // Issue 35: with -gi every gathered ray had a tree of its own and gathered again, so one eye sample of the
 // depth bomb cost billions of rays (minutes a pixel at --depth=64, or at -gi_bounces=7). Now one eye sample,
 // gathered trees included, stays within kSampleRays; counted, not timed.

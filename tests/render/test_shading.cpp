@@ -79,20 +79,43 @@ TEST_CASE("Weights split a hit between local shading, reflection and transmissio
   Material glass;
   glass.filter = 0.95f;
   // p4/test4: f = 0.95, F = 0.2966 → 0.0500 Local, 0.2818 Reflection, 0.6682 Transmission.
-  const Weights w = weights(glass, 0.2966f, true);
+  const Weights w = weights(glass, 0.2966f, Dialect::course());
   CHECK_THAT(w.local, WithinAbs(0.05, 1e-6));
   CHECK_THAT(w.reflection, WithinAbs(0.2818, 1e-4));
   CHECK_THAT(w.transmission, WithinAbs(0.6682, 1e-4));
   Material mirror;
   mirror.reflection = 0.8f;
-  const Weights course = weights(mirror, 0.0f, true);
+  const Weights course = weights(mirror, 0.0f, Dialect::course());
   CHECK_THAT(course.local, WithinAbs(0.2, 1e-6));
   CHECK_THAT(course.reflection, WithinAbs(0.8, 1e-6));
   CHECK(course.transmission == 0.0f);
   // The .cli rule adds the reflection on top of the whole local colour.
-  const Weights cs3451 = weights(mirror, 0.0f, false);
+  const Weights cs3451 = weights(mirror, 0.0f, Dialect::cs3451());
   CHECK(cs3451.local == 1.0f);
   CHECK_THAT(cs3451.reflection, WithinAbs(0.8, 1e-6));
+}
+
+TEST_CASE("Weights: POV-Ray reflects whole however transparent the surface; conserve_energy transmits what "
+          "reflection leaves", "[shading]") {
+  // POV-Ray 3.7's pixels, a plane of reflection 0.5 over and under two emitters of 0.25 (linear): f = 1 gives
+  // 0.376, 0.25 with conserve_energy; f = 0.6 gives 0.275, 0.202.
+  Material water;
+  water.filter = 0.6f;
+  water.reflection = 0.5f;
+  const Dialect pov = Dialect::povray(1.0);
+  const Weights w = weights(water, 0.0f, pov);
+  CHECK_THAT(w.local, WithinAbs(0.4, 1e-6));
+  CHECK_THAT(w.reflection, WithinAbs(0.5, 1e-6));
+  CHECK_THAT(w.transmission, WithinAbs(0.6, 1e-6));
+  SurfaceExtras conserving;
+  conserving.conserveEnergy = true;
+  water.extras = &conserving;
+  const Weights c = weights(water, 0.0f, pov);
+  CHECK_THAT(c.local, WithinAbs(0.4, 1e-6));
+  CHECK_THAT(c.reflection, WithinAbs(0.5, 1e-6));
+  CHECK_THAT(c.transmission, WithinAbs(0.3, 1e-6));
+  // The course's rule keeps its reflection to the opaque share.
+  CHECK_THAT(weights(water, 0.0f, Dialect::course()).reflection, WithinAbs(0.2, 1e-6));
 }
 
 TEST_CASE("Reflection mirrors the direction about the normal", "[shading]") {

@@ -4,6 +4,7 @@
 
 #include <optional>
 
+#include "raytrace/scene/dialect.hpp"
 #include "raytrace/surface/material.hpp"
 #include "raytrace/geometry/math.hpp"
 
@@ -75,10 +76,12 @@ Color metallicTint(const Color& pigment, float metallic, float cosTheta);
 // How a hit's colour is split between its local shading and its two secondary rays (§c.5): local
 // (1−f)(1−k), reflection (1−f)k + fF, transmission f(1−F) for filter f, reflection k and Fresnel
 // reflectance F. When reflection does not replace local light (Dialect::reflectionReplacesLocal: the .cli rule,
-// cs3451 §A.4.5, and POV-Ray's) local keeps (1−f) whole.
+// cs3451 §A.4.5, and POV-Ray's) local keeps (1−f) whole. POV-Ray reflects k + fF whatever the transparency
+// (Dialect::transparencyDimsReflection) and, with conserve_energy, transmits only what reflection leaves,
+// f(1−F)(1−k) (manual, "Conserve Energy for Reflection").
 struct Weights {
   float local = 1, reflection = 0, transmission = 0;
 };
-Weights weights(const Material& m, float fresnel, bool reflectionReplacesLocal);
+Weights weights(const Material& m, float fresnel, const Dialect& dialect);
 
 }  // namespace rt

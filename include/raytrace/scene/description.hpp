@@ -111,6 +111,9 @@ struct SceneDesc {
   Dialect dialect = Dialect::course();  // the language's shading rules, chosen by its parser
   Color background{0};
   std::optional<int> depthLimit;  // the scene's own (POV-Ray's max_trace_level), over its dialect's
+  // POV-Ray's adc_bailout: a secondary ray whose weight in its pixel is below it is not traced; unset, the
+  // tracer's own cutoff, which bounds what the skipped rays could add (render/tracer.cpp).
+  std::optional<float> adcBailout;
   std::shared_ptr<const SkySphere> sky;  // seen where a ray leaves the scene, over the background
   std::vector<Fog> fogs;                 // each ray crosses them in order
   std::optional<RadiosityDesc> radiosity;  // POV-Ray's radiosity block: the ambient term gathered (docs/gi.md)

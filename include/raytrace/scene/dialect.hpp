@@ -33,8 +33,8 @@ class Dialect {
     return d;
   }
 
-  // POV-Ray 3.7 (docs/povray-language.md): reflected light added to the surface's own, untinted (manual,
-  // "Specular Reflection"); light reaching a point through transparent surfaces, tinted by each; five levels
+  // POV-Ray 3.7 (docs/povray-language.md): reflected light added to the surface's own, untinted and whole
+  // however transparent the surface (manual, "Specular Reflection"; measured); light reaching a point through transparent surfaces, tinted by each; five levels
   // (manual, "Max_Trace_Level"). `gamma` is the scene's assumed_gamma: the sRGB of each pixel's colour raised to
   // it is written, or, at 0 (a scene before #version 3.7 without assumed_gamma), the colours as they are,
   // rounded (docs/povray-language.md, "Gamma").
@@ -42,6 +42,7 @@ class Dialect {
     Dialect d;
     d.reflectionReplacesLocal_ = false;
     d.reflectionTakesPigment_ = false;
+    d.transparencyDimsReflection_ = false;
     d.filtersShadows_ = true;
     if (gamma > 0) {
       d.toByte_ = ToByte::Srgb;
@@ -59,6 +60,9 @@ class Dialect {
   bool reflectionReplacesLocal() const { return reflectionReplacesLocal_; }
   // The tint on reflected light at a surface of this pigment.
   Color reflectionTint(const Color& pigment) const { return reflectionTakesPigment_ ? pigment : Color(1); }
+  // Whether a surface's reflection k counts for its opaque share alone, (1−f)·k, or whole (render/shading.hpp,
+  // Weights).
+  bool transparencyDimsReflection() const { return transparencyDimsReflection_; }
 
   // What a ray's colour becomes before the level above weighs it, and the largest it can be for a colour whose
   // largest channel is at most `brightest`.
@@ -79,6 +83,7 @@ class Dialect {
   float gamma_ = 1;
   bool reflectionReplacesLocal_ = true;
   bool reflectionTakesPigment_ = true;
+  bool transparencyDimsReflection_ = true;
   bool clampsEachBounce_ = false;
   int depthLimit_ = 5;
   bool shadesAtDepthLimit_ = true;

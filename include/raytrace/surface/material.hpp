@@ -39,13 +39,15 @@ struct SurfaceExtras {
   // (metallicTint(), shading.hpp); 0: not tinted.
   float reflectionMetallic = 0;
   bool reflectionFresnel = false;
+  // conserve_energy: light through the surface is what its reflection leaves (Weights, shading.hpp).
+  bool conserveEnergy = false;
   // The interior's medium, which a ray that enters the object crosses up to its next hit.
   std::optional<Media> media;
 
   // Whether any of them changes a picture.
   bool any() const {
     return fadeDistance > 0 || caustics != 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0 ||
-           media.has_value();
+           conserveEnergy || media.has_value();
   }
 };
 

@@ -954,7 +954,9 @@ class Builder {
         } else if (w == "noise_generator" && v && v->type == Value::Type::Float) {
           if (v->v[0] == 3) refuse(it.loc, "noise_generator 3");
           *context_.sceneNoise = v->v[0] < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
-        } else if (w == "adc_bailout" || w == "number_of_waves" ||
+        } else if (w == "adc_bailout" && v && v->type == Value::Type::Float) {
+          scene_.adcBailout = float(std::max(0.0, v->v[0]));
+        } else if (w == "number_of_waves" ||
                    w == "irid_wavelength" || w == "max_intersections" || w == "hf_gray_16") {
         } else {
           refuse(it.loc, w);
@@ -1060,6 +1062,7 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   // assumed_gamma is 1 by default from #version 3.7 on; an older scene without it has its colours written as
   // they are (docs/povray-language.md, "Gamma").
   scene.dialect = Dialect::povray(builder.assumedGamma_.value_or(interpreter.version() >= 3.7 ? 1.0 : 0.0));
+  if (!scene.adcBailout) scene.adcBailout = 1.0f / 255;  // POV-Ray's default (manual, "Adc_Bailout")
   // With radiosity a 3.7 scene's ambient term is 0 and its emission alone lights; an older scene's ambient (times
   // ambient_light) still does, as emission would (POV-Ray 3.7 manual, "How Radiosity Works"; measured, docs/gi.md).
   const bool noAmbient = scene.radiosity && interpreter.version() >= 3.7;

@@ -587,7 +587,11 @@ void readFinish(const Node& n, PovFinish& f, ReadingContext& context) {
       continue;
     }
     const std::string_view w = it.word;
-    if (w == "conserve_energy") continue;
+    if (w == "conserve_energy") {
+      const Value* on = valueAfter(n, i);
+      f.conserveEnergy = !on || on->v[0] != 0;
+      continue;
+    }
     const Value* v = valueAfter(n, i);
     if (w == "metallic") {
       f.metallic = v && v->numeric() ? v->v[0] : 1;  // the value is optional
@@ -788,6 +792,7 @@ FinishTerms finishTerms(const PovFinish& f, const Surface& s) {
   SurfaceExtras extras;
   extras.crand = float(f.crand);
   extras.reflectionMetallic = float(f.reflectionMetallic);
+  extras.conserveEnergy = f.conserveEnergy;
   // Fresnel with a single value varies from 0 (POV-Ray: `reflection { 1 fresnel }` is a dielectric's mirror).
   if (f.reflectionMin || f.reflectionFresnel) {
     extras.reflectionMin = float(f.reflectionMin.value_or(f.reflectionFresnel ? 0.0 : f.reflection));

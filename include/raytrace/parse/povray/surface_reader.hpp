@@ -78,6 +78,7 @@ struct PovFinish {
   double reflectionFalloff = 1;
   double reflectionMetallic = 0;
   bool reflectionFresnel = false;
+  bool conserveEnergy = false;
   double diffuse = 0.6, phong = 0, phongSize = 40, specular = 0, roughness = 0.05, reflection = 0, brilliance = 1, metallic = 0;
 };
 
