@@ -39,8 +39,8 @@ template <class T> class AdaptiveSampler {
 
  private:
   void nonRecursive(Tracer<T>& tracer, int x0, int y0, int x1, int y1, std::vector<Color>& out) const;
-  // +AM2's radiance of pixel (x, y).
-  Color recursive(Tracer<T>& tracer, int x, int y) const;
+  // +AM2's colours of the tile's pixels.
+  void recursive(Tracer<T>& tracer, int x0, int y0, int x1, int y1, std::vector<Color>& out) const;
   // The ray of +AM2's point (i, j) of pixel (x, y)'s grid of 2^(R−1) + 1 points a side, and its key.
   Ray<T> gridRay(int x, int y, int i, int j) const;
   uint64_t gridKey(int x, int y, int i, int j) const;
