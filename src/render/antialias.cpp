@@ -64,19 +64,13 @@ float aaDifference(const Color& a, const Color& b) {
   return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
 }
 
-std::vector<char> refinedPixels(const Color* compared, int w, int h, float threshold) {
-  std::vector<char> refined(size_t(w) * size_t(h), 0);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const size_t p = size_t(y) * size_t(w) + size_t(x);
-      // Each pair once, with the neighbour to the right and the one in the next row: both are refined.
-      if (x + 1 < w && aaDifference(compared[p], compared[p + 1]) > threshold) refined[p] = refined[p + 1] = 1;
-      if (y + 1 < h && aaDifference(compared[p], compared[p + size_t(w)]) > threshold) {
-        refined[p] = refined[p + size_t(w)] = 1;
-      }
-    }
-  }
-  return refined;
+bool refinedPixel(const Color* compared, int w, int h, int x, int y, float threshold) {
+  const size_t p = size_t(y) * size_t(w) + size_t(x);
+  const Color& c = compared[p];
+  return (x > 0 && aaDifference(c, compared[p - 1]) > threshold) ||
+         (x + 1 < w && aaDifference(c, compared[p + 1]) > threshold) ||
+         (y > 0 && aaDifference(c, compared[p - size_t(w)]) > threshold) ||
+         (y + 1 < h && aaDifference(c, compared[p + size_t(w)]) > threshold);
 }
 
 template <class T>
@@ -94,10 +88,10 @@ AdaptiveSampler<T>::AdaptiveSampler(const Tracer<T>& tracer, const Camera<T>& ca
     x1 = std::min(width, right + 1), y1 = std::min(height, top + 1);
   }
   stride_ = x1 - x0_;
-  const int rows = y1 - y0_;
-  raw_.resize(size_t(stride_) * size_t(rows));
+  rows_ = y1 - y0_;
+  raw_.resize(size_t(stride_) * size_t(rows_));
   compared_.resize(raw_.size());
-  const int blocksX = (stride_ + kBlock - 1) / kBlock, blocksY = (rows + kBlock - 1) / kBlock;
+  const int blocksX = (stride_ + kBlock - 1) / kBlock, blocksY = (rows_ + kBlock - 1) / kBlock;
   std::mutex countsMutex;
   parallelFor(blocksX * blocksY, options.threads, [&](int block) {
     const int bx0 = x0_ + block / blocksY * kBlock, by0 = y0_ + block % blocksY * kBlock;
@@ -125,7 +119,6 @@ AdaptiveSampler<T>::AdaptiveSampler(const Tracer<T>& tracer, const Camera<T>& ca
     const std::lock_guard<std::mutex> lock(countsMutex);
     counts += blockTracer.counts();
   });
-  if (aa_.method == 1) refined_ = refinedPixels(compared_.data(), stride_, rows, aa_.threshold);
 }
 
 template <class T>
@@ -147,9 +140,21 @@ void AdaptiveSampler<T>::nonRecursive(Tracer<T>& tracer, int x0, int y0, int x1,
   std::vector<Ray<T>> rays;
   std::vector<uint64_t> keys;
   const auto at = [&](int x, int y) { return size_t(y - y0_) * size_t(stride_) + size_t(x - x0_); };
+  // Each tile tests its own pixels against their neighbours, on the threads.
+  std::vector<char> refined(out.size());
+  size_t p = 0, count = 0;
   for (int y = y0; y < y1; ++y) {
-    for (int x = x0; x < x1; ++x) {
-      if (!refined_[at(x, y)]) continue;
+    for (int x = x0; x < x1; ++x, ++p) {
+      refined[p] = refinedPixel(compared_.data(), stride_, rows_, x - x0_, y - y0_, aa_.threshold);
+      count += size_t(refined[p]);
+    }
+  }
+  rays.reserve(count * size_t(r * r));
+  keys.reserve(rays.capacity());
+  p = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x, ++p) {
+      if (!refined[p]) continue;
       for (int i = 0; i < r; ++i) {
         for (int j = 0; j < r; ++j) {
           if (i * r + j == middle) continue;
@@ -167,7 +172,7 @@ void AdaptiveSampler<T>::nonRecursive(Tracer<T>& tracer, int x0, int y0, int x1,
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x, ++k) {
       Color sum = raw_[at(x, y)];
-      if (refined_[at(x, y)]) {
+      if (refined[k]) {
         for (int s = 0; s < r * r; ++s) sum += s == middle ? raw_[at(x, y)] : colors[next++];
         sum /= float(r * r + 1);
       }

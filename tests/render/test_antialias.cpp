@@ -49,6 +49,15 @@ uint64_t eyeRays(const SceneDesc& scene, int width, int height, const RenderOpti
   return counts.eye;
 }
 
+// refinedPixel() of every pixel of a w × h grid, row by row.
+std::vector<char> refinedPixels(const std::vector<Color>& compared, int w, int h, float threshold) {
+  std::vector<char> refined;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) refined.push_back(refinedPixel(compared.data(), w, h, x, y, threshold));
+  }
+  return refined;
+}
+
 bool same(const Image& a, const Image& b) {
   if (a.width() != b.width() || a.height() != b.height()) return false;
   for (int y = 0; y < a.height(); ++y) {
@@ -74,14 +83,14 @@ TEST_CASE("+AM1 refines a pixel that differs from a neighbour to either side, ab
   const std::vector<Color> picture{o, o, o, o, o,   //
                                    o, b, o, o, t,   //
                                    o, o, o, o, o};
-  const std::vector<char> refined = refinedPixels(picture.data(), 5, 3, 0.25f);
+  const std::vector<char> refined = refinedPixels(picture, 5, 3, 0.25f);
   CHECK(refined == std::vector<char>{0, 1, 0, 0, 0,  //
                                      1, 1, 1, 0, 0,  //
                                      0, 1, 0, 0, 0});
-  CHECK(refinedPixels(picture.data(), 5, 3, 0.2f) == std::vector<char>{0, 1, 0, 0, 1,  //
+  CHECK(refinedPixels(picture, 5, 3, 0.2f) == std::vector<char>{0, 1, 0, 0, 1,  //
                                                                       1, 1, 1, 1, 1,  //
                                                                       0, 1, 0, 0, 1});
-  CHECK(refinedPixels(picture.data(), 5, 3, 3.0f) == std::vector<char>(15, 0));
+  CHECK(refinedPixels(picture, 5, 3, 3.0f) == std::vector<char>(15, 0));
 }
 
 TEST_CASE("a flat picture traces each pixel's ray (+AM1) or each corner (+AM2) and nothing more", "[antialias]") {

@@ -20,9 +20,10 @@ namespace rt {
 Color aaCompared(const Color& c);
 // The manual's difference of two compared colours: |r1 − r2| + |g1 − g2| + |b1 − b2|.
 float aaDifference(const Color& a, const Color& b);
-// +AM1's choice on a w × h grid of compared colours (row by row): a pixel that differs from its neighbour to
-// the left, right, above or below by more than `threshold` is supersampled ("both pixels are super-sampled").
-std::vector<char> refinedPixels(const Color* compared, int w, int h, float threshold);
+// +AM1's choice for pixel (x, y) of a w × h grid of compared colours (row by row): a pixel that differs from
+// its neighbour to the left, right, above or below by more than `threshold` is supersampled ("both pixels are
+// super-sampled").
+bool refinedPixel(const Color* compared, int w, int h, int x, int y, float threshold);
 
 // The pixels [left, right) × [bottom, top) of a width × height picture (y counted upward), anti-aliased.
 template <class T> class AdaptiveSampler {
@@ -49,10 +50,9 @@ template <class T> class AdaptiveSampler {
   AntialiasOptions aa_;
   uint64_t seed_;
   bool gi_;  // whether the rays' keys are read
-  int x0_, y0_, stride_;             // +AM1: the traced pixels' area, with its border; +AM2: the corners'
+  int x0_, y0_, stride_, rows_;      // +AM1: the traced pixels' area, with its border; +AM2: the corners'
   int cells_;                        // +AM2: 2^(R−1), the finest squares along a pixel's side
   std::vector<Color> raw_, compared_;  // the first rays' radiance and its compared colour
-  std::vector<char> refined_;          // +AM1: whether each traced pixel is supersampled
 };
 
 }  // namespace rt
