@@ -60,19 +60,6 @@ const Power04 kPower04;
 
 Color aaCompared(const Color& c) { return {kPower04(c.r), kPower04(c.g), kPower04(c.b)}; }
 
-float aaDifference(const Color& a, const Color& b) {
-  return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
-}
-
-bool refinedPixel(const Color* compared, int w, int h, int x, int y, float threshold) {
-  const size_t p = size_t(y) * size_t(w) + size_t(x);
-  const Color& c = compared[p];
-  return (x > 0 && aaDifference(c, compared[p - 1]) > threshold) ||
-         (x + 1 < w && aaDifference(c, compared[p + 1]) > threshold) ||
-         (y > 0 && aaDifference(c, compared[p - size_t(w)]) > threshold) ||
-         (y + 1 < h && aaDifference(c, compared[p + size_t(w)]) > threshold);
-}
-
 template <class T>
 AdaptiveSampler<T>::AdaptiveSampler(const Tracer<T>& tracer, const Camera<T>& camera, const RenderOptions& options,
                                     int width, int height, int left, int bottom, int right, int top,
@@ -102,7 +89,11 @@ AdaptiveSampler<T>::AdaptiveSampler(const Tracer<T>& tracer, const Camera<T>& ca
     size_t n = 0;
     for (int y = by0; y < by1; ++y) {
       for (int x = bx0; x < bx1; ++x, ++n) {
-        rays[n] = aa_.method == 1 ? camera.sampleRay(x, y, 0, 0, 1) : gridRay(x, y, 0, 0);
+        // Stored member by member from registers, as Tracer::tile() stores its rays: assigned whole, the ray
+        // goes through the stack and each read of it back stalls.
+        const Ray<T> ray = aa_.method == 1 ? camera.sampleRay(x, y, 0, 0, 1) : gridRay(x, y, 0, 0);
+        rays[n].origin = ray.origin;
+        rays[n].dir = ray.dir;
         if (gi_) keys[n] = aa_.method == 1 ? pixelKey(seed_, x, y, 0) : gridKey(x, y, 0, 0);
       }
     }

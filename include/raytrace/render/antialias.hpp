@@ -5,6 +5,8 @@
 // same for any threads, tiles or region.
 #pragma once
 
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -19,11 +21,20 @@ namespace rt {
 // Antialias_Gamma ("POV-Ray compares gamma-adjusted values").
 Color aaCompared(const Color& c);
 // The manual's difference of two compared colours: |r1 − r2| + |g1 − g2| + |b1 − b2|.
-float aaDifference(const Color& a, const Color& b);
+inline float aaDifference(const Color& a, const Color& b) {
+  return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
+}
 // +AM1's choice for pixel (x, y) of a w × h grid of compared colours (row by row): a pixel that differs from
 // its neighbour to the left, right, above or below by more than `threshold` is supersampled ("both pixels are
-// super-sampled").
-bool refinedPixel(const Color* compared, int w, int h, int x, int y, float threshold);
+// super-sampled"). Inline: every pixel of the picture pays it.
+inline bool refinedPixel(const Color* compared, int w, int h, int x, int y, float threshold) {
+  const size_t p = size_t(y) * size_t(w) + size_t(x);
+  const Color& c = compared[p];
+  return (x > 0 && aaDifference(c, compared[p - 1]) > threshold) ||
+         (x + 1 < w && aaDifference(c, compared[p + 1]) > threshold) ||
+         (y > 0 && aaDifference(c, compared[p - size_t(w)]) > threshold) ||
+         (y + 1 < h && aaDifference(c, compared[p + size_t(w)]) > threshold);
+}
 
 // The pixels [left, right) × [bottom, top) of a width × height picture (y counted upward), anti-aliased.
 template <class T> class AdaptiveSampler {
