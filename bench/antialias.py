@@ -9,15 +9,18 @@ by each setting below; a setting's error is the RMS over every channel of every 
 [0, 1], of its PNG against its renderer's own reference: ours with 16 x 16 stratified samples (-ss=16), POV-Ray's
 with the most its non-recursive method takes (+A0.0 +AM1 +R9: the pixel's own ray and 81 more), so that the
 two renderers' small differences of shading do not count as aliasing. Wall time is the median of interleaved
-runs (process start to exit, loading and writing included); rays per pixel come from --stats=json and POV-Ray's
-statistics. Prints a Markdown table per scene and, for POV-Ray's +A0.3, the fastest of our settings whose error
-is no larger, with the ratio of the times. --svg also draws every scene's settings as error against time.
+runs (process start to exit, loading and writing included), and so is the CPU time (user and system, of all
+its threads), which a machine shared with other work changes less; rays per pixel come from --stats=json and
+POV-Ray's statistics. Prints a Markdown table per scene and, for POV-Ray's +A0.3, the fastest of our settings
+whose error is no larger, with the ratio of the wall times and of the CPU times. --svg also draws every scene's
+settings as error against wall time.
 """
 
 import json
 import math
 import os
 import re
+import resource
 import statistics
 import subprocess
 import sys
@@ -48,14 +51,21 @@ POVRAY = [
 ]
 
 
+def cpu_seconds():
+    """User and system time of the children waited for so far."""
+    used = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return used.ru_utime + used.ru_stime
+
+
 def run(cmd, cwd):
-    """Seconds from start to exit of `cmd` and its stderr; stops the script if it fails."""
+    """Wall seconds from start to exit of `cmd`, its CPU seconds and its stderr; stops the script if it fails."""
+    cpu = cpu_seconds()
     start = time.perf_counter()
     done = subprocess.run(cmd, cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     seconds = time.perf_counter() - start
     if done.returncode != 0:
         sys.exit("failed: %s\n%s" % (" ".join(cmd), done.stderr.decode(errors="replace")))
-    return seconds, done.stderr.decode(errors="replace")
+    return seconds, cpu_seconds() - cpu, done.stderr.decode(errors="replace")
 
 
 def pixels(path):
@@ -109,7 +119,7 @@ def svg(results, path):
                 v = math.log10(m) + e
                 if e0 <= v <= e1:
                     out.append('<text x="%d" y="%.1f" text-anchor="end">%g</text>' % (x0 + pad - 4, py(v) + 4, m * 10 ** e))
-        for who, name, seconds, error, _ in good:
+        for who, name, seconds, error, _, _ in good:
             colour = "#c0392b" if who == "POV-Ray" else "#2471a3"
             x, y = px(math.log10(seconds)), py(math.log10(error))
             out.append('<circle cx="%.1f" cy="%.1f" r="4" fill="%s"/>' % (x, y, colour))
@@ -150,35 +160,40 @@ def main():
         settings = [("raytrace", n, ours(f, "%s.ours.%d.png" % (scene, i))) for i, (n, f) in enumerate(OURS)]
         settings += [("POV-Ray", n, theirs(f, "%s.pov.%d.png" % (scene, i))) for i, (n, f) in enumerate(POVRAY)]
         times = {n: [] for _, n, _ in settings}
+        cpus = {n: [] for _, n, _ in settings}
         stderrs = {}
         for _ in range(args.runs):
             for who, name, cmd in settings:
-                seconds, stderrs[name] = run(cmd, work)
+                seconds, cpu, stderrs[name] = run(cmd, work)
                 times[name].append(seconds)
+                cpus[name].append(cpu)
         rows = []
         for who, name, cmd in settings:
             out = os.path.join(work, cmd[cmd.index("-o") + 1] if who == "raytrace" else cmd[2][2:])
             error = rms(out, ref_ours if who == "raytrace" else ref_pov)
             rays = (ours_rays if who == "raytrace" else povray_rays)(stderrs[name], w, h)
-            rows.append((who, name, statistics.median(times[name]), error, rays))
+            rows.append((who, name, statistics.median(times[name]), error, rays, statistics.median(cpus[name])))
         results.append((scene, rows))
         print("\n### %s, %s×%s, %d threads\n" % (scene, width, height, args.threads))
-        print("| renderer | setting | rays/pixel | wall s | RMS error |")
-        print("|---|---|---|---|---|")
-        for who, name, seconds, error, rays in rows:
-            print("| %s | %s | %.2f | %.3f | %.5f |" % (who, name, rays, seconds, error))
+        print("| renderer | setting | rays/pixel | wall s | CPU s | RMS error |")
+        print("|---|---|---|---|---|---|")
+        for who, name, seconds, error, rays, cpu in rows:
+            print("| %s | %s | %.2f | %.3f | %.3f | %.5f |" % (who, name, rays, seconds, cpu, error))
         pov03 = next(r for r in rows if r[1] == "+A0.3")
         match = [r for r in rows if r[0] == "raytrace" and r[3] <= pov03[3]]
         if match:
             best = min(match, key=lambda r: r[2])
             print("\nAt POV-Ray +A0.3's error (%.5f, %.3f s): raytrace %s, error %.5f, %.3f s: %.1f× faster."
                   % (pov03[3], pov03[2], best[1], best[3], best[2], pov03[2] / best[2]))
+            cheapest = min(match, key=lambda r: r[5])
+            print("In CPU time (%.3f s): raytrace %s, %.3f s: %.1f× less."
+                  % (pov03[5], cheapest[1], cheapest[5], pov03[5] / cheapest[5]))
         else:
             print("\nNo raytrace setting reaches POV-Ray +A0.3's error (%.5f)." % pov03[3])
     if args.svg:
         svg(results, args.svg)
     print("\nError: RMS of the 8-bit PNG against the renderer's own reference (ours -ss=16, POV-Ray +A0.0 +AM1 +R9);"
-          " time: median of %d interleaved runs, wall." % args.runs)
+          " time: median of %d interleaved runs, wall and CPU." % args.runs)
 
 
 if __name__ == "__main__":

@@ -60,25 +60,6 @@ const Power04 kPower04;
 
 Color aaCompared(const Color& c) { return {kPower04(c.r), kPower04(c.g), kPower04(c.b)}; }
 
-float aaDifference(const Color& a, const Color& b) {
-  return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
-}
-
-std::vector<char> refinedPixels(const Color* compared, int w, int h, float threshold) {
-  std::vector<char> refined(size_t(w) * size_t(h), 0);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const size_t p = size_t(y) * size_t(w) + size_t(x);
-      // Each pair once, with the neighbour to the right and the one in the next row: both are refined.
-      if (x + 1 < w && aaDifference(compared[p], compared[p + 1]) > threshold) refined[p] = refined[p + 1] = 1;
-      if (y + 1 < h && aaDifference(compared[p], compared[p + size_t(w)]) > threshold) {
-        refined[p] = refined[p + size_t(w)] = 1;
-      }
-    }
-  }
-  return refined;
-}
-
 template <class T>
 AdaptiveSampler<T>::AdaptiveSampler(const Tracer<T>& tracer, const Camera<T>& camera, const RenderOptions& options,
                                     int width, int height, int left, int bottom, int right, int top,
@@ -94,10 +75,10 @@ AdaptiveSampler<T>::AdaptiveSampler(const Tracer<T>& tracer, const Camera<T>& ca
     x1 = std::min(width, right + 1), y1 = std::min(height, top + 1);
   }
   stride_ = x1 - x0_;
-  const int rows = y1 - y0_;
-  raw_.resize(size_t(stride_) * size_t(rows));
+  rows_ = y1 - y0_;
+  raw_.resize(size_t(stride_) * size_t(rows_));
   compared_.resize(raw_.size());
-  const int blocksX = (stride_ + kBlock - 1) / kBlock, blocksY = (rows + kBlock - 1) / kBlock;
+  const int blocksX = (stride_ + kBlock - 1) / kBlock, blocksY = (rows_ + kBlock - 1) / kBlock;
   std::mutex countsMutex;
   parallelFor(blocksX * blocksY, options.threads, [&](int block) {
     const int bx0 = x0_ + block / blocksY * kBlock, by0 = y0_ + block % blocksY * kBlock;
@@ -108,7 +89,11 @@ AdaptiveSampler<T>::AdaptiveSampler(const Tracer<T>& tracer, const Camera<T>& ca
     size_t n = 0;
     for (int y = by0; y < by1; ++y) {
       for (int x = bx0; x < bx1; ++x, ++n) {
-        rays[n] = aa_.method == 1 ? camera.sampleRay(x, y, 0, 0, 1) : gridRay(x, y, 0, 0);
+        // Stored member by member from registers, as Tracer::tile() stores its rays: assigned whole, the ray
+        // goes through the stack and each read of it back stalls.
+        const Ray<T> ray = aa_.method == 1 ? camera.sampleRay(x, y, 0, 0, 1) : gridRay(x, y, 0, 0);
+        rays[n].origin = ray.origin;
+        rays[n].dir = ray.dir;
         if (gi_) keys[n] = aa_.method == 1 ? pixelKey(seed_, x, y, 0) : gridKey(x, y, 0, 0);
       }
     }
@@ -125,33 +110,45 @@ AdaptiveSampler<T>::AdaptiveSampler(const Tracer<T>& tracer, const Camera<T>& ca
     const std::lock_guard<std::mutex> lock(countsMutex);
     counts += blockTracer.counts();
   });
-  if (aa_.method == 1) refined_ = refinedPixels(compared_.data(), stride_, rows, aa_.threshold);
 }
 
 template <class T>
 void AdaptiveSampler<T>::tile(Tracer<T>& tracer, int x0, int y0, int x1, int y1, std::vector<Color>& out) const {
   out.resize(size_t(x1 - x0) * size_t(y1 - y0));
   if (aa_.method == 1) return nonRecursive(tracer, x0, y0, x1, y1, out);
-  size_t k = 0;
-  for (int y = y0; y < y1; ++y) {
-    for (int x = x0; x < x1; ++x) out[k++] = tracer.finished(recursive(tracer, x, y));
-  }
+  recursive(tracer, x0, y0, x1, y1, out);
 }
 
 // A supersampled pixel is the mean of its own ray and R x R more on a grid over it, each jittered within its
 // cell; POV-Ray's counts and colours show the pixel's own ray is kept (R² "additional samples" in the manual).
+// Unjittered and without gathering (whose rays hang on the sample's key), an odd grid's middle sample is the
+// pixel's own ray exactly, so its colour is reused rather than traced again.
 template <class T>
 void AdaptiveSampler<T>::nonRecursive(Tracer<T>& tracer, int x0, int y0, int x1, int y1,
                                       std::vector<Color>& out) const {
   const int r = aa_.depth;
+  const int middle = r % 2 == 1 && !(aa_.jitter > 0) && !gi_ ? r / 2 * r + r / 2 : -1;
   std::vector<Ray<T>> rays;
   std::vector<uint64_t> keys;
   const auto at = [&](int x, int y) { return size_t(y - y0_) * size_t(stride_) + size_t(x - x0_); };
+  // Each tile tests its own pixels against their neighbours, on the threads.
+  std::vector<char> refined(out.size());
+  size_t p = 0, count = 0;
   for (int y = y0; y < y1; ++y) {
-    for (int x = x0; x < x1; ++x) {
-      if (!refined_[at(x, y)]) continue;
+    for (int x = x0; x < x1; ++x, ++p) {
+      refined[p] = refinedPixel(compared_.data(), stride_, rows_, x - x0_, y - y0_, aa_.threshold);
+      count += size_t(refined[p]);
+    }
+  }
+  rays.reserve(count * size_t(r * r));
+  keys.reserve(rays.capacity());
+  p = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x, ++p) {
+      if (!refined[p]) continue;
       for (int i = 0; i < r; ++i) {
         for (int j = 0; j < r; ++j) {
+          if (i * r + j == middle) continue;
           const uint64_t key = gi_ || aa_.jitter > 0 ? pixelKey(seed_, x, y, 1 + i * r + j) : 0;
           const glm::vec2 jitter = aa_.jitter > 0 ? aa_.jitter * jitterOf(key) : glm::vec2(0);
           rays.push_back(camera_.offsetRay(x, y, (T(i) + T(0.5) + T(jitter.x)) / T(r) - T(0.5),
@@ -166,8 +163,8 @@ void AdaptiveSampler<T>::nonRecursive(Tracer<T>& tracer, int x0, int y0, int x1,
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x, ++k) {
       Color sum = raw_[at(x, y)];
-      if (refined_[at(x, y)]) {
-        for (int s = 0; s < r * r; ++s) sum += colors[next++];
+      if (refined[k]) {
+        for (int s = 0; s < r * r; ++s) sum += s == middle ? raw_[at(x, y)] : colors[next++];
         sum /= float(r * r + 1);
       }
       out[k] = tracer.finished(sum);
@@ -189,78 +186,100 @@ template <class T> Ray<T> AdaptiveSampler<T>::gridRay(int x, int y, int i, int j
   return camera_.offsetRay(x, y, T(i) / T(cells_) - T(0.5) + T(jitter.x), T(j) / T(cells_) - T(0.5) + T(jitter.y));
 }
 
-// The pixel's square, its corners traced: a square whose corners differ by more than the threshold (any two
+// Each pixel's square, its corners traced: a square whose corners differ by more than the threshold (any two
 // of them) is cut into four, down to R − 1 levels, and is the mean of its quarters; else of its corners.
-// Points inside a pixel are traced once for it, level by level in one batch each.
-template <class T> Color AdaptiveSampler<T>::recursive(Tracer<T>& tracer, int x, int y) const {
-  const int m = cells_, side = m + 1;
+// The tile's pixels are subdivided together, level by level, so that each level's rays go through the scene
+// in one batch, and a point on the side two pixels share is traced once for both (POV-Ray traces it for
+// each). A point's ray is made from its place on the picture's finest grid alone, so its colour is the same
+// whichever pixel or tile asks for it.
+template <class T>
+void AdaptiveSampler<T>::recursive(Tracer<T>& tracer, int x0, int y0, int x1, int y1, std::vector<Color>& out) const {
+  const int m = cells_, shift = aa_.depth - 1, mask = m - 1;  // m = 2^shift: divisions by m are shifts
+  const int side = (x1 - x0) * m + 1;  // points a row of the tile's finest grid
   const auto corner = [&](int cx, int cy) { return size_t(cy - y0_) * size_t(stride_) + size_t(cx - x0_); };
-  const std::array<size_t, 4> corners{corner(x, y), corner(x + 1, y), corner(x, y + 1), corner(x + 1, y + 1)};
-  const auto differ = [&](const std::array<const Color*, 4>& c) {
-    for (int a = 0; a < 4; ++a) {
-      for (int b = a + 1; b < 4; ++b) {
-        if (aaDifference(*c[size_t(a)], *c[size_t(b)]) > aa_.threshold) return true;
+  const auto differ = [&](const Color& a, const Color& b, const Color& c, const Color& d) {
+    const float t = aa_.threshold;
+    return aaDifference(a, b) > t || aaDifference(a, c) > t || aaDifference(a, d) > t || aaDifference(b, c) > t ||
+           aaDifference(b, d) > t || aaDifference(c, d) > t;
+  };
+  // The points traced here, by their place (gx, gy) on the tile's finest grid (raw[index], or −1 before);
+  // a pixel's corner is the first pass's.
+  std::vector<int> index;
+  std::vector<Color> raw, compared;
+  const auto at = [&](int gx, int gy, bool isCompared) -> const Color& {
+    if (((gx | gy) & mask) == 0) {
+      const size_t c = corner(x0 + (gx >> shift), y0 + (gy >> shift));
+      return isCompared ? compared_[c] : raw_[c];
+    }
+    const size_t n = size_t(index[size_t(gy) * size_t(side) + size_t(gx)]);
+    return isCompared ? compared[n] : raw[n];
+  };
+  // A square: its lower-left point on the tile's finest grid and its side, in that grid's steps.
+  struct Square {
+    int gx, gy, s;
+  };
+  const auto splits = [&](const Square& q) {
+    return q.s > 1 && differ(at(q.gx, q.gy, true), at(q.gx + q.s, q.gy, true), at(q.gx, q.gy + q.s, true),
+                             at(q.gx + q.s, q.gy + q.s, true));
+  };
+  const auto meanOfCorners = [&](const Square& q) {
+    return (at(q.gx, q.gy, false) + at(q.gx + q.s, q.gy, false) + at(q.gx, q.gy + q.s, false) +
+            at(q.gx + q.s, q.gy + q.s, false)) / 4.0f;
+  };
+  std::vector<std::pair<Square, size_t>> subdivided;  // each pixel's square cut, and its place in `out`
+  size_t k = 0;
+  for (int y = y0; y < y1; ++y) {
+    // The pixels' squares straight from the first pass: every pixel of the picture pays this test.
+    const size_t below = corner(x0, y), above = corner(x0, y + 1);
+    for (int x = x0; x < x1; ++x, ++k) {
+      const size_t a = below + size_t(x - x0), c = above + size_t(x - x0);
+      if (m > 1 && differ(compared_[a], compared_[a + 1], compared_[c], compared_[c + 1])) {
+        subdivided.emplace_back(Square{(x - x0) * m, (y - y0) * m, m}, k);
+      } else {
+        out[k] = tracer.finished((raw_[a] + raw_[a + 1] + raw_[c] + raw_[c + 1]) / 4.0f);
       }
     }
-    return false;
-  };
-  const auto mean = [](const Color& a, const Color& b, const Color& c, const Color& d) {
-    return (a + b + c + d) / 4.0f;
-  };
-  if (m == 1 || !differ({&compared_[corners[0]], &compared_[corners[1]], &compared_[corners[2]],
-                         &compared_[corners[3]]})) {
-    return mean(raw_[corners[0]], raw_[corners[1]], raw_[corners[2]], raw_[corners[3]]);
   }
-  std::vector<Color> raw(size_t(side) * size_t(side)), compared(raw.size());
-  std::vector<char> known(raw.size(), 0);
-  const auto point = [&](int i, int j) { return size_t(j) * size_t(side) + size_t(i); };
-  const std::array<size_t, 4> gridCorners{point(0, 0), point(m, 0), point(0, m), point(m, m)};
-  for (size_t c = 0; c < 4; ++c) {
-    raw[gridCorners[c]] = raw_[corners[c]];
-    compared[gridCorners[c]] = compared_[corners[c]];
-    known[gridCorners[c]] = 1;
-  }
-  // A square (i, j, s): its lower-left point and its side, in the finest grid's steps.
-  const auto splits = [&](int i, int j, int s) {
-    return s > 1 && differ({&compared[point(i, j)], &compared[point(i + s, j)], &compared[point(i, j + s)],
-                            &compared[point(i + s, j + s)]});
-  };
-  std::vector<std::array<int, 3>> level{{0, 0, m}}, next;
+  if (subdivided.empty()) return;
+  index.assign(size_t(side) * size_t((y1 - y0) * m + 1), -1);
+  std::vector<Square> level, next;
+  for (const auto& [q, place] : subdivided) level.push_back(q);
   std::vector<Ray<T>> rays;
   std::vector<uint64_t> keys;
-  std::vector<size_t> pending;
   while (!level.empty()) {
-    rays.clear(), keys.clear(), pending.clear(), next.clear();
-    for (const auto& [i, j, s] : level) {
-      if (!splits(i, j, s)) continue;
-      const int h = s / 2;
-      for (const auto& [pi, pj] : {std::array<int, 2>{i + h, j}, {i, j + h}, {i + h, j + h}, {i + s, j + h},
-                                   {i + h, j + s}}) {
-        if (known[point(pi, pj)]) continue;
-        known[point(pi, pj)] = 1;
-        pending.push_back(point(pi, pj));
-        rays.push_back(gridRay(x, y, pi, pj));
-        keys.push_back(gridKey(x, y, pi, pj));
+    // The new points are midpoints of this level's squares, never corners of one: each square's test reads
+    // points of earlier levels only.
+    rays.clear(), keys.clear(), next.clear();
+    for (const Square& q : level) {
+      if (!splits(q)) continue;
+      const int gx = q.gx, gy = q.gy, s = q.s, h = s / 2;
+      for (const auto& [px, py] : {std::array<int, 2>{gx + h, gy}, {gx, gy + h}, {gx + h, gy + h}, {gx + s, gy + h},
+                                   {gx + h, gy + s}}) {
+        int& n = index[size_t(py) * size_t(side) + size_t(px)];
+        if (n >= 0) continue;
+        n = int(raw.size() + rays.size());
+        const int fx = x0 * m + px, fy = y0 * m + py;  // on the picture's finest grid
+        rays.push_back(gridRay(fx >> shift, fy >> shift, fx & mask, fy & mask));
+        keys.push_back(gi_ ? gridKey(fx >> shift, fy >> shift, fx & mask, fy & mask) : 0);
       }
-      next.insert(next.end(), {{i, j, h}, {i + h, j, h}, {i, j + h, h}, {i + h, j + h, h}});
+      next.insert(next.end(), {{gx, gy, h}, {gx + h, gy, h}, {gx, gy + h, h}, {gx + h, gy + h, h}});
     }
     if (!rays.empty()) {
       const Color* colors = tracer.eyeRays(rays.data(), keys.data(), rays.size());
-      for (size_t k = 0; k < pending.size(); ++k) {
-        raw[pending[k]] = colors[k];
-        compared[pending[k]] = aaCompared(tracer.finished(colors[k]));
+      for (size_t n = 0; n < rays.size(); ++n) {
+        raw.push_back(colors[n]);
+        compared.push_back(aaCompared(tracer.finished(colors[n])));
       }
     }
     level.swap(next);
   }
-  const auto value = [&](const auto& self, int i, int j, int s) -> Color {
-    if (!splits(i, j, s)) {
-      return mean(raw[point(i, j)], raw[point(i + s, j)], raw[point(i, j + s)], raw[point(i + s, j + s)]);
-    }
-    const int h = s / 2;
-    return mean(self(self, i, j, h), self(self, i + h, j, h), self(self, i, j + h, h), self(self, i + h, j + h, h));
+  const auto value = [&](const auto& self, const Square& q) -> Color {
+    if (!splits(q)) return meanOfCorners(q);
+    const int h = q.s / 2;
+    return (self(self, Square{q.gx, q.gy, h}) + self(self, Square{q.gx + h, q.gy, h}) +
+            self(self, Square{q.gx, q.gy + h, h}) + self(self, Square{q.gx + h, q.gy + h, h})) / 4.0f;
   };
-  return value(value, 0, 0, m);
+  for (const auto& [q, place] : subdivided) out[place] = tracer.finished(value(value, q));
 }
 
 template class AdaptiveSampler<float>;

@@ -5,6 +5,8 @@
 // same for any threads, tiles or region.
 #pragma once
 
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -19,10 +21,20 @@ namespace rt {
 // Antialias_Gamma ("POV-Ray compares gamma-adjusted values").
 Color aaCompared(const Color& c);
 // The manual's difference of two compared colours: |r1 − r2| + |g1 − g2| + |b1 − b2|.
-float aaDifference(const Color& a, const Color& b);
-// +AM1's choice on a w × h grid of compared colours (row by row): a pixel that differs from its neighbour to
-// the left, right, above or below by more than `threshold` is supersampled ("both pixels are super-sampled").
-std::vector<char> refinedPixels(const Color* compared, int w, int h, float threshold);
+inline float aaDifference(const Color& a, const Color& b) {
+  return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
+}
+// +AM1's choice for pixel (x, y) of a w × h grid of compared colours (row by row): a pixel that differs from
+// its neighbour to the left, right, above or below by more than `threshold` is supersampled ("both pixels are
+// super-sampled"). Inline: every pixel of the picture pays it.
+inline bool refinedPixel(const Color* compared, int w, int h, int x, int y, float threshold) {
+  const size_t p = size_t(y) * size_t(w) + size_t(x);
+  const Color& c = compared[p];
+  return (x > 0 && aaDifference(c, compared[p - 1]) > threshold) ||
+         (x + 1 < w && aaDifference(c, compared[p + 1]) > threshold) ||
+         (y > 0 && aaDifference(c, compared[p - size_t(w)]) > threshold) ||
+         (y + 1 < h && aaDifference(c, compared[p + size_t(w)]) > threshold);
+}
 
 // The pixels [left, right) × [bottom, top) of a width × height picture (y counted upward), anti-aliased.
 template <class T> class AdaptiveSampler {
@@ -39,8 +51,8 @@ template <class T> class AdaptiveSampler {
 
  private:
   void nonRecursive(Tracer<T>& tracer, int x0, int y0, int x1, int y1, std::vector<Color>& out) const;
-  // +AM2's radiance of pixel (x, y).
-  Color recursive(Tracer<T>& tracer, int x, int y) const;
+  // +AM2's colours of the tile's pixels.
+  void recursive(Tracer<T>& tracer, int x0, int y0, int x1, int y1, std::vector<Color>& out) const;
   // The ray of +AM2's point (i, j) of pixel (x, y)'s grid of 2^(R−1) + 1 points a side, and its key.
   Ray<T> gridRay(int x, int y, int i, int j) const;
   uint64_t gridKey(int x, int y, int i, int j) const;
@@ -49,10 +61,9 @@ template <class T> class AdaptiveSampler {
   AntialiasOptions aa_;
   uint64_t seed_;
   bool gi_;  // whether the rays' keys are read
-  int x0_, y0_, stride_;             // +AM1: the traced pixels' area, with its border; +AM2: the corners'
+  int x0_, y0_, stride_, rows_;      // +AM1: the traced pixels' area, with its border; +AM2: the corners'
   int cells_;                        // +AM2: 2^(R−1), the finest squares along a pixel's side
   std::vector<Color> raw_, compared_;  // the first rays' radiance and its compared colour
-  std::vector<char> refined_;          // +AM1: whether each traced pixel is supersampled
 };
 
 }  // namespace rt
