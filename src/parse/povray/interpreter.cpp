@@ -9,6 +9,7 @@ namespace rt::povray {
 Interpreter::Interpreter(InterpreterOptions options) : options_(std::move(options)) {
   scopes_.emplace_back();
   spareArguments_.reserve(kSpareArguments);
+  spareNodes_.reserve(kSpareNodes);
 }
 
 Interpreter::~Interpreter() = default;
@@ -31,7 +32,9 @@ void Interpreter::run(const std::string& path, std::string_view text, const Node
       fail(at, "expected an object or a directive, found " + quote(word.text));
     }
     next();
-    statement(block(word.text, at, "}"));
+    std::shared_ptr<const Node> node = block(word.text, at, "}");
+    statement(node);
+    recycle(std::move(node));
   }
   if (!conds_.empty()) fail(here(), "a directive is still open at the end of the file: #end is missing");
 }
