@@ -136,11 +136,9 @@ void Interpreter::fail(const SourceLoc& loc, const std::string& message) const {
   throw ParseError(loc, message + chain());
 }
 
-Interpreter::Nested::Nested(Interpreter& interpreter, const SourceLoc& at) : in(interpreter) {
-  if (++in.nesting_ > kMaxNesting) {
-    --in.nesting_;
-    in.fail(at, "expressions or blocks nested more than " + std::to_string(kMaxNesting) + " deep");
-  }
+void Interpreter::nestedTooDeep(const SourceLoc& at) {
+  --nesting_;
+  fail(at, "expressions or blocks nested more than " + std::to_string(kMaxNesting) + " deep");
 }
 
 Interpreter::Slot* Interpreter::find(std::string_view name) {

@@ -154,9 +154,12 @@ class Interpreter {
   static constexpr size_t kMaxNesting = 256;
   struct Nested {
     Interpreter& in;
-    Nested(Interpreter& interpreter, const SourceLoc& at);
+    Nested(Interpreter& interpreter, const SourceLoc& at) : in(interpreter) {
+      if (++in.nesting_ > kMaxNesting) in.nestedTooDeep(at);
+    }
     ~Nested() { --in.nesting_; }
   };
+  [[noreturn]] void nestedTooDeep(const SourceLoc& at);
   std::string chain() const;
 
   // Directives (directives.cpp).
