@@ -219,7 +219,8 @@ class Builder {
       }
       return;
     }
-    const std::string shortage = objectMemoryShortage(scene_.objects.size(), scene_.objects.size() + 1, "the scene");
+    static const std::string kWhat = "the scene";  // made once, not for every object
+    const std::string shortage = objectMemoryShortage(scene_.objects.size(), scene_.objects.size() + 1, kWhat);
     if (!shortage.empty()) throw ParseError(at, shortage);
     if (o.material.extras->media) mediaObjects_.emplace_back(scene_.objects.size(), at);
     // A long list grows four times over rather than twice: each growth moves every object into fresh pages,
