@@ -211,10 +211,17 @@ Value Interpreter::functionValue(const SourceLoc& at) {
 // The items of a block up to `close`: values, keywords, and nested blocks (`keyword { … }` or `[ … ]`).
 std::shared_ptr<const Node> Interpreter::block(std::string_view keyword, const SourceLoc& at, std::string_view close) {
   const Nested nested(*this, at);
-  auto node = std::make_shared<Node>();
+  std::shared_ptr<Node> node;
+  if (!spareNodes_.empty()) {
+    node = std::move(spareNodes_.back());
+    spareNodes_.pop_back();
+    node->depth = 1;
+  } else {
+    node = std::make_shared<Node>();
+    node->items.reserve(4);  // most blocks hold a few items: one allocation rather than growing 1, 2, 4
+  }
   node->keyword = keyword;
   node->loc = at;
-  node->items.reserve(4);  // most blocks hold a few items: one allocation rather than growing 1, 2, 4
   for (;;) {
     const Token& t = peek();
     if (t.is(close)) {
@@ -284,6 +291,19 @@ std::shared_ptr<const Node> Interpreter::block(std::string_view keyword, const S
       }
     }
   }
+}
+
+void Interpreter::recycle(std::shared_ptr<const Node> tree) {
+  // Held elsewhere too (a declared identifier's value, the builder's list of meshes): left as it is.
+  if (tree.use_count() != 1) return;
+  // Every node is made as a Node by block() or declarable(): no const object is changed here.
+  std::shared_ptr<Node> node = std::const_pointer_cast<Node>(std::move(tree));
+  for (Item& item : node->items) {
+    if (item.node) recycle(std::move(item.node));
+  }
+  if (spareNodes_.size() == kSpareNodes || node->items.capacity() > kSpareItems) return;
+  node->items.clear();
+  spareNodes_.push_back(std::move(node));
 }
 
 }  // namespace rt::povray

@@ -248,11 +248,11 @@ Value Interpreter::primary() {
       break;
   }
   const std::string_view w = t.text;
-  if (t.startsValue && !isColourWord(w)) {
+  if (t.startsValue && !t.colourWord) {
     next();
     return builtin(w, t.builtin, at);
   }
-  if (isColourWord(w) || w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") {
+  if (t.colourWord || w == "red" || w == "green" || w == "blue" || w == "filter" || w == "transmit") {
     return colour(at);
   }
   if (frames_.back().kind == Frame::Kind::Tokens) fail(at, "'" + std::string(w) + "' in a function is not supported yet");

@@ -9,6 +9,7 @@ namespace rt::povray {
 Interpreter::Interpreter(InterpreterOptions options) : options_(std::move(options)) {
   scopes_.emplace_back();
   spareArguments_.reserve(kSpareArguments);
+  spareNodes_.reserve(kSpareNodes);
 }
 
 Interpreter::~Interpreter() = default;
@@ -31,7 +32,9 @@ void Interpreter::run(const std::string& path, std::string_view text, const Node
       fail(at, "expected an object or a directive, found " + quote(word.text));
     }
     next();
-    statement(block(word.text, at, "}"));
+    std::shared_ptr<const Node> node = block(word.text, at, "}");
+    statement(node);
+    recycle(std::move(node));
   }
   if (!conds_.empty()) fail(here(), "a directive is still open at the end of the file: #end is missing");
 }
@@ -133,11 +136,9 @@ void Interpreter::fail(const SourceLoc& loc, const std::string& message) const {
   throw ParseError(loc, message + chain());
 }
 
-Interpreter::Nested::Nested(Interpreter& interpreter, const SourceLoc& at) : in(interpreter) {
-  if (++in.nesting_ > kMaxNesting) {
-    --in.nesting_;
-    in.fail(at, "expressions or blocks nested more than " + std::to_string(kMaxNesting) + " deep");
-  }
+void Interpreter::nestedTooDeep(const SourceLoc& at) {
+  --nesting_;
+  fail(at, "expressions or blocks nested more than " + std::to_string(kMaxNesting) + " deep");
 }
 
 Interpreter::Slot* Interpreter::find(std::string_view name) {

@@ -35,7 +35,8 @@ class Lexer {
         t.text = word();
         t.keyword = isKeyword(t.text);
         t.builtin = t.keyword ? builtinIndex(t.text) : 0;
-        t.startsValue = !t.keyword || t.builtin != 0 || isColourWord(t.text);
+        t.colourWord = isColourWord(t.text);
+        t.startsValue = !t.keyword || t.builtin != 0 || t.colourWord;
       } else if (digit(c) || (c == '.' && i_ + 1 < s_.size() && digit(s_[i_ + 1]))) {
         t.kind = Token::Kind::Number;
         t.number = number();

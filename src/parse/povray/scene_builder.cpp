@@ -41,6 +41,7 @@ class Builder {
   void statement(const std::shared_ptr<const Node>& n) {
     statementNode_ = n;
     statement(*n);
+    statementNode_.reset();  // the interpreter reuses the tree's nodes that no one else holds
   }
 
   void statement(const Node& n) {
@@ -71,6 +72,26 @@ class Builder {
       looksInside_.clear();
     }
   }
+
+  // An object's surface: the #default one until an item changes it, copied then. A lone colour, `pigment {
+  // rgb … }`, over a #default surface whose pigment has no pattern is kept aside (`solid`) without a copy: a
+  // loop's million spheres copy no surface.
+  struct ObjectSurface {
+    const Surface& base;
+    std::optional<Surface> own;
+    std::optional<Rgbft> solid;  // what readSurfaceItem makes of such a pigment, written into `own` when made
+    Surface& get() {
+      if (!own) {
+        own = base;
+        if (solid) {
+          Pigment& p = own->layers.back().pigment;
+          p = Pigment{};
+          p.solid = *solid;
+        }
+      }
+      return *own;
+    }
+  };
 
   // The world bounding box of an object, as min_extent and max_extent give it.
   std::optional<std::array<double, 6>> extent(const std::shared_ptr<const Node>& n) {
@@ -166,6 +187,7 @@ class Builder {
   }
 
   void defaults(const Node& n) {
+    defaultTerms_.reset();
     for (const Item& i : n.items) {
       if (i.kind != Item::Kind::Node) continue;
       readSurfaceItem(*i.node, default_, default_, context_);
@@ -190,7 +212,7 @@ class Builder {
  private:
   // A union's children go into the scene one by one, under the union's transforms: the same surfaces, and the
   // hierarchy bounds each of them (POV-Ray's split_union). An inverted or clipped union stays whole.
-  void add(ObjectDesc o, const SourceLoc& at) {
+  void add(ObjectDesc&& o, const SourceLoc& at) {
     if (auto* csg = std::get_if<CsgDesc>(&o.shape); csg && csg->op == CsgOp::Union && !o.inverse && o.clip.empty()) {
       for (ObjectDesc& child : csg->children) {
         child.transforms.insert(child.transforms.end(), o.transforms.begin(), o.transforms.end());
@@ -202,7 +224,8 @@ class Builder {
       }
       return;
     }
-    const std::string shortage = objectMemoryShortage(scene_.objects.size(), scene_.objects.size() + 1, "the scene");
+    static const std::string kWhat = "the scene";  // made once, not for every object
+    const std::string shortage = objectMemoryShortage(scene_.objects.size(), scene_.objects.size() + 1, kWhat);
     if (!shortage.empty()) throw ParseError(at, shortage);
     if (o.material.extras->media) mediaObjects_.emplace_back(scene_.objects.size(), at);
     // A long list grows four times over rather than twice: each growth moves every object into fresh pages,
@@ -413,11 +436,20 @@ class Builder {
 
   // One object into `o`, and its surface into `s`; false when it cannot be drawn (and is refused).
   bool object(const Node& n, ObjectDesc& o) {
-    Surface s = default_;
+    ObjectSurface s{default_, std::nullopt, std::nullopt};
     return object(n, o, s);
   }
 
-  bool object(const Node& n, ObjectDesc& o, Surface& s) {
+  // Whether `block` is a lone colour that `s` can keep aside (ObjectSurface), which it then does.
+  static bool lonePigmentColour(const Node& block, ObjectSurface& s) {
+    if (s.own || block.keyword != "pigment" || block.items.size() != 1 || s.base.layers.back().pigment.pattern) return false;
+    const Item& it = block.items[0];
+    if (it.kind != Item::Kind::Value || !it.value.numeric()) return false;
+    s.solid = colourOf(it.value);
+    return true;
+  }
+
+  bool object(const Node& n, ObjectDesc& o, ObjectSurface& s) {
     const std::string_view k = n.keyword;
     const size_t firstLight = scene_.lights.size(), firstLook = looksInside_.size();
     size_t i = 0;
@@ -494,9 +526,9 @@ class Builder {
         if (m == "pigment" || m == "finish" || m == "normal" || m == "texture" || m == "material" ||
             m == "interior" || m == "layered texture") {
           // A second texture block is a layer on top of the first, starting as the #default texture.
-          if (m == "texture" && textureBlock) s.layers.push_back(default_.layers.back());
+          if (m == "texture" && textureBlock) s.get().layers.push_back(default_.layers.back());
           textureBlock = textureBlock || m == "texture";
-          readSurfaceItem(*it.node, s, default_, context_);
+          if (!lonePigmentColour(*it.node, s)) readSurfaceItem(*it.node, s.get(), default_, context_);
           if (!textureFrom) textureFrom = o.transforms.size();
         } else if (m == "interior_texture") {
           // Read as a texture block of its own, starting as the #default texture.
@@ -504,7 +536,7 @@ class Builder {
           body.keyword = "texture";
           Surface inside = default_;
           readSurfaceItem(body, inside, default_, context_);
-          s.inside = std::make_shared<const Surface>(std::move(inside));
+          s.get().inside = std::make_shared<const Surface>(std::move(inside));
           if (!textureFrom) textureFrom = o.transforms.size();
         } else {
           refuse(it.loc, m);
@@ -517,7 +549,7 @@ class Builder {
         } else if (it.word == "no_shadow") {
           o.noShadow = true;
         } else if (it.word == "uv_mapping") {
-          s.uvMapped = true;
+          s.get().uvMapped = true;
         } else if (it.word == "no_image") {
           o.noImage = true;
         } else if (it.word == "no_reflection") {
@@ -601,10 +633,19 @@ class Builder {
   }
 
   // The object's material, and its texture when its colour varies over it, moved by the transforms `after`.
-  void surface(ObjectDesc& o, const Surface& s, const std::vector<TransformStep>& after) {
-    o.material = constantMaterial(s);
-    o.finish = writtenFinish(s);
-    o.texture = s.patterned() ? std::make_shared<const Texture>(bounded(makeTexture(s, after))) : nullptr;
+  void surface(ObjectDesc& o, ObjectSurface& s, const std::vector<TransformStep>& after) {
+    if (!defaultTerms_) defaultTerms_ = DefaultTerms{topTerms(default_), writtenFinish(default_), default_.patterned()};
+    if (!s.own && !defaultTerms_->patterned) {
+      // The #default surface, or it with a lone colour: its finish terms are the same for every object.
+      o.material = layerMaterial(defaultTerms_->terms, s.solid.value_or(default_.layers.back().pigment.solid));
+      o.finish = defaultTerms_->finish;
+      o.texture = nullptr;
+    } else {
+      const Surface& full = s.get();
+      o.material = constantMaterial(full);
+      o.finish = writtenFinish(full);
+      o.texture = full.patterned() ? std::make_shared<const Texture>(bounded(makeTexture(full, after))) : nullptr;
+    }
     // The inverse only for a medium with densities to move: a million spheres need none.
     const auto& media = o.material.extras->media;
     if (media && !media->densities.empty()) moveMedia(o.material, glm::inverse(composeTransforms<double>(after)));
@@ -980,6 +1021,14 @@ class Builder {
   Interpreter& interpreter_;  // its findFile notes the files the scene reads
   bool asciiStrings_ = true;  // global_settings' charset
   Surface default_;
+  // The #default surface's finish terms, its finish as written, and whether it is patterned: worked out once
+  // for all the objects until a #default changes it.
+  struct DefaultTerms {
+    FinishTerms terms;
+    Finish finish;
+    bool patterned;
+  };
+  std::optional<DefaultTerms> defaultTerms_;
   ReadingContext context_;
   std::vector<std::pair<size_t, SourceLoc>> mediaObjects_;  // the objects with a medium, and where each is written
   struct Asked {

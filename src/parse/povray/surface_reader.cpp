@@ -1020,10 +1020,9 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Reading
   }
 }
 
-Material constantMaterial(const Surface& s) {
-  const SurfaceLayer& top = s.layers.back();
-  return layerMaterial(finishTerms(top.finish, s), top.pigment.solid);
-}
+FinishTerms topTerms(const Surface& s) { return finishTerms(s.layers.back().finish, s); }
+
+Material constantMaterial(const Surface& s) { return layerMaterial(topTerms(s), s.layers.back().pigment.solid); }
 
 Finish writtenFinish(const Surface& s) {
   const PovFinish& f = s.layers.back().finish;

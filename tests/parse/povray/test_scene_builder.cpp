@@ -405,6 +405,32 @@ plane { y, 0 texture { gradient x texture_map { [0 texture { pigment { Black } }
   CHECK(mid.pigment.r == Approx(0.25f));
 }
 
+TEST_CASE("povray scene: a lone pigment colour takes the #default surface in force where the object is", "[povray]") {
+  const SceneDesc s = scene(R"(
+sphere { 0, 1 pigment { rgb <1, 0.5, 0> } }
+#default { finish { ambient 0.2 diffuse 0.8 } }
+sphere { 0, 1 pigment { rgb <1, 0.5, 0> } }
+sphere { 0, 1 pigment { rgbf <1, 0.5, 0, 0.5> } finish { phong 1 } }
+#default { pigment { checker } }
+sphere { 0, 1 pigment { rgb <1, 0.5, 0> } }
+sphere { 0, 1 }
+)");
+  REQUIRE(s.objects.size() == 5);
+  // POV-Ray's default finish: ambient 0.1, diffuse 0.6.
+  CHECK(s.objects[0].material.ambient == Color(0.1f, 0.05f, 0));
+  CHECK(s.objects[0].material.diffuse == Color(0.6f, 0.3f, 0));
+  CHECK(s.objects[1].material.ambient == Color(0.2f, 0.1f, 0));
+  CHECK(s.objects[1].material.diffuse == Color(0.8f, 0.4f, 0));
+  // A finish after the colour: both, over the #default.
+  CHECK(s.objects[2].material.filter == 0.5f);
+  CHECK(s.objects[2].material.diffuse == Color(0.8f, 0.4f, 0));
+  CHECK(s.objects[2].material.specular == Color(1));
+  // Over a #default checker the colour replaces the pattern; without a pigment the object has the checker.
+  CHECK(!s.objects[3].texture);
+  CHECK(s.objects[3].material.diffuse == Color(0.8f, 0.4f, 0));
+  CHECK(s.objects[4].texture);
+}
+
 // n·l of a normal's bent normal on the plane y = 0 at a point, as POV-Ray lit it: a white matte plane under a
 // distant light, each value read once from POV-Ray's 16-bit render.
 double lit(const SceneDesc& s, size_t object, const glm::dvec3& point, const glm::dvec3& toLight) {

@@ -154,9 +154,12 @@ class Interpreter {
   static constexpr size_t kMaxNesting = 256;
   struct Nested {
     Interpreter& in;
-    Nested(Interpreter& interpreter, const SourceLoc& at);
+    Nested(Interpreter& interpreter, const SourceLoc& at) : in(interpreter) {
+      if (++in.nesting_ > kMaxNesting) in.nestedTooDeep(at);
+    }
     ~Nested() { --in.nesting_; }
   };
+  [[noreturn]] void nestedTooDeep(const SourceLoc& at);
   std::string chain() const;
 
   // Directives (directives.cpp).
@@ -235,6 +238,9 @@ class Interpreter {
   void arrayInitialiser(ArrayValue& a, size_t dim, size_t& index);
   Value functionValue(const SourceLoc& at);
   std::shared_ptr<const Node> block(std::string_view keyword, const SourceLoc& at, std::string_view close);
+  // A statement's tree once the builder has read it: its nodes no one else holds are emptied and kept for the
+  // next blocks (spareNodes_), so that a loop's statements allocate no node and no item list each.
+  void recycle(std::shared_ptr<const Node> node);
   bool startsExpression(const Token& t);
 
   InterpreterOptions options_;
@@ -249,6 +255,10 @@ class Interpreter {
   // room for which is made at the start so that giving one back never allocates.
   static constexpr size_t kSpareArguments = 16;
   std::vector<std::vector<Value>> spareArguments_;
+  // Nodes given back (recycle), empty, with room for items: at most kSpareNodes, each with room for at most
+  // kSpareItems (a long list is freed rather than kept).
+  static constexpr size_t kSpareNodes = 64, kSpareItems = 64;
+  std::vector<std::shared_ptr<Node>> spareNodes_;
   std::vector<DataFileDesc> dataFiles_;  // what #write wrote, kept until the scene has parsed
   std::vector<std::string> filesFound_;
   size_t bytesWritten_ = 0;

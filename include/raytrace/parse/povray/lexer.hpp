@@ -15,10 +15,11 @@ struct Token {
   std::string_view text;  // a word, symbol or directive name; a string's contents with escapes resolved
   double number = 0;
   std::int32_t line = 0, col = 0;
-  // Found once here rather than at every use: a word reserved by POV-Ray 3.7, one that begins a value, and
-  // which built-in constant or function a word is (builtinIndex).
+  // Found once here rather than at every use: a word reserved by POV-Ray 3.7, one that begins a value, one
+  // that begins a colour (isColourWord), and which built-in constant or function a word is (builtinIndex).
   bool keyword = false;
   bool startsValue = false;
+  bool colourWord = false;
   std::uint8_t builtin = 0;
 
   // Symbols have one or two characters: compared directly, this is most of the parser's time otherwise.

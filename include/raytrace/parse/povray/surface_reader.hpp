@@ -126,6 +126,8 @@ std::shared_ptr<const Pigment> patternPigment(const Node& n, ReadingContext& con
 // texture pattern starts as `defaults` (#default).
 void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, ReadingContext& context);
 
+// The finish terms of the surface's top layer (its finish and the interior's settings).
+FinishTerms topTerms(const Surface& s);
 // The constant material of the surface's top layer; its ambient is not yet scaled by ambient_light.
 Material constantMaterial(const Surface& s);
 // The finish as written, for sceneinfo.
