@@ -939,8 +939,9 @@ class Builder {
         } else if (w == "noise_generator" && v && v->type == Value::Type::Float) {
           if (v->v[0] == 3) refuse(it.loc, "noise_generator 3");
           *context_.sceneNoise = v->v[0] < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
-        } else if (w == "adc_bailout" || w == "number_of_waves" ||
-                   w == "irid_wavelength" || w == "max_intersections" || w == "hf_gray_16") {
+        } else if (w == "irid_wavelength" && v && v->numeric()) {
+          *context_.iridWavelength = glm::dvec3(colourOf(*v).rgb);
+        } else if (w == "adc_bailout" || w == "number_of_waves" || w == "max_intersections" || w == "hf_gray_16") {
         } else {
           refuse(it.loc, w);
         }
