@@ -512,7 +512,7 @@ template <class T>
 typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m, const Vec3<T>& side,
                                             const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
                                             const std::optional<ShadowRay>* shadows) {
-  const bool plain = !sampledLights_ && n == side && !(m.extras->crand > 0);
+  const bool plain = !sampledLights_ && n == side && !(m.extras->crand > 0) && !m.extras->irid;
   return plain ? lightLoop<true>(hit, m, side, n, v, record, shadows)
                : lightLoop<false>(hit, m, side, n, v, record, shadows);
 }
@@ -562,6 +562,9 @@ typename Tracer<T>::Local Tracer<T>::lightLoop(const Hit<T>& hit, const Material
     // A bent normal turned away from the light takes none of it (the shadow ray leaves the true surface).
     const float nl = std::min(bent ? float(glm::dot(n, s->l)) : s->nl, 1.0f);
     if (bent && nl <= 0.0f) continue;
+    if (!kPlain && m.extras->irid) {
+      lightColor *= m.extras->irid->factor(glm::dvec3(hit.point), double(glm::dot(n, s->l)), double(glm::dot(n, v)));
+    }
     diffuse += lightColor * m.diffuse * (m.brilliance == 1.0f ? nl : std::pow(nl, m.brilliance));
     if (!kPlain && crand > 0) diffuse -= grain(lightColor, m, hit.point, i);
     // A matte surface has no power to take; a shadowless light gives no highlight (the manual's "Shadowless
@@ -594,8 +597,11 @@ void Tracer<T>::illuminate(const Hit<T>& hit, const Vec3<T>& n, const Vec3<T>& v
       // A point below the surface's horizon lights none of it.
       const float nl = std::min(float(glm::dot(n, l)), 1.0f);
       if (!(nl > 0.0f)) continue;
-      d += each * m.diffuse * (m.brilliance == 1.0f ? nl : std::pow(nl, m.brilliance));
-      if (m.specular != Color(0) && !light.shadowless) s += each * m.specular * specularFactor(n, v, l, m);
+      const Color c = m.extras->irid ? each * m.extras->irid->factor(glm::dvec3(hit.point), double(glm::dot(n, l)),
+                                                                     double(glm::dot(n, v)))
+                                     : each;
+      d += c * m.diffuse * (m.brilliance == 1.0f ? nl : std::pow(nl, m.brilliance));
+      if (m.specular != Color(0) && !light.shadowless) s += c * m.specular * specularFactor(n, v, l, m);
     }
   }
   diffuse += d;

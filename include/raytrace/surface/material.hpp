@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "raytrace/geometry/math.hpp"
+#include "raytrace/surface/iridescence.hpp"
 #include "raytrace/surface/media.hpp"
 
 namespace rt {
@@ -41,13 +42,15 @@ struct SurfaceExtras {
   bool reflectionFresnel = false;
   // conserve_energy: light through the surface is what its reflection leaves (Weights, shading.hpp).
   bool conserveEnergy = false;
+  // A finish's `irid`: each light's colour multiplied by Iridescence::factor(); none: no film.
+  std::shared_ptr<const Iridescence> irid;
   // The interior's medium, which a ray that enters the object crosses up to its next hit.
   std::optional<Media> media;
 
   // Whether any of them changes a picture.
   bool any() const {
     return fadeDistance > 0 || caustics != 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0 ||
-           conserveEnergy || media.has_value();
+           conserveEnergy || irid || media.has_value();
   }
 };
 

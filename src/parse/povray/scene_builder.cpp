@@ -997,8 +997,9 @@ class Builder {
           *context_.sceneNoise = v->v[0] < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
         } else if (w == "adc_bailout" && v && v->type == Value::Type::Float) {
           scene_.adcBailout = float(std::max(0.0, v->v[0]));
-        } else if (w == "number_of_waves" ||
-                   w == "irid_wavelength" || w == "max_intersections" || w == "hf_gray_16") {
+        } else if (w == "irid_wavelength" && v && v->numeric()) {
+          *context_.iridWavelength = glm::dvec3(colourOf(*v).rgb);
+        } else if (w == "number_of_waves" || w == "max_intersections" || w == "hf_gray_16") {
         } else {
           refuse(it.loc, w);
         }

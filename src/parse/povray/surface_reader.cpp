@@ -571,6 +571,29 @@ void readReflection(const Node& n, PovFinish& f, ReadingContext& context) {
   f.reflectionMin = values.size() > 1 ? std::optional<double>(values.front()) : std::nullopt;
 }
 
+// `irid { amount [thickness T] [turbulence U] }` (POV-Ray 3.7 manual, "Iridescence"); amount 0 is no film.
+void readIrid(const Node& n, PovFinish& f, ReadingContext& context) {
+  Iridescence irid;
+  irid.wavelengths = context.iridWavelength;
+  irid.noise = context.sceneNoise;
+  for (size_t i = 0; i < n.items.size(); ++i) {
+    const Item& r = n.items[i];
+    if (r.kind == Item::Kind::Value && r.value.type == Value::Type::Float) {
+      irid.amount = r.value.v[0];
+      continue;
+    }
+    const Value* v = r.kind == Item::Kind::Keyword ? valueAfter(n, i) : nullptr;
+    if (v && v->type == Value::Type::Float && r.word == "thickness") {
+      irid.thickness = v->v[0];
+    } else if (v && v->type == Value::Type::Float && r.word == "turbulence") {
+      irid.turbulence = v->v[0];
+    } else {
+      context.refuse(r, "irid");
+    }
+  }
+  f.irid = irid.amount != 0 ? std::make_shared<const Iridescence>(irid) : nullptr;
+}
+
 void readFinish(const Node& n, PovFinish& f, ReadingContext& context) {
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
@@ -580,6 +603,10 @@ void readFinish(const Node& n, PovFinish& f, ReadingContext& context) {
     }
     if (it.kind == Item::Kind::Node && it.node->keyword == "reflection") {
       readReflection(*it.node, f, context);
+      continue;
+    }
+    if (it.kind == Item::Kind::Node && it.node->keyword == "irid") {
+      readIrid(*it.node, f, context);
       continue;
     }
     if (it.kind != Item::Kind::Keyword) {
@@ -793,6 +820,7 @@ FinishTerms finishTerms(const PovFinish& f, const Surface& s) {
   extras.crand = float(f.crand);
   extras.reflectionMetallic = float(f.reflectionMetallic);
   extras.conserveEnergy = f.conserveEnergy;
+  extras.irid = f.irid;
   // Fresnel with a single value varies from 0 (POV-Ray: `reflection { 1 fresnel }` is a dielectric's mirror).
   if (f.reflectionMin || f.reflectionFresnel) {
     extras.reflectionMin = float(f.reflectionMin.value_or(f.reflectionFresnel ? 0.0 : f.reflection));

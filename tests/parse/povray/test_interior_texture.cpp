@@ -47,8 +47,8 @@ sphere { 0, 1 pigment { rgb 1 } interior_texture { pigment { gradient z color_ma
 }
 
 TEST_CASE("interior_texture: a refused item in it is refused", "[povray][interior_texture]") {
-  CHECK(test::povFailure("sphere { 0, 1 interior_texture { pigment { rgb 1 } finish { irid { 0.3 } } } }") ==
-        "scene.pov:2:61: error: 'irid' is not supported yet");
+  CHECK(test::povFailure("sphere { 0, 1 interior_texture { pigment { rgb 1 } finish { reflection { 0.3 exponent 2 } } } }") ==
+        "scene.pov:2:78: error: 'exponent' is not supported yet");
 }
 
 }  // namespace

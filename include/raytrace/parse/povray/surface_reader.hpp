@@ -36,6 +36,8 @@ struct ReadingContext {
 
   // The scene's noise generator, which patterns read when drawn since global_settings may set it after them.
   std::shared_ptr<NoiseGenerator> sceneNoise = std::make_shared<NoiseGenerator>(NoiseGenerator::RangeCorrected);
+  // global_settings' irid_wavelength (POV-Ray 3.7 manual, "Irid_Wavelength"), read by iridescent finishes the same way.
+  std::shared_ptr<glm::dvec3> iridWavelength = std::make_shared<glm::dvec3>(0.70, 0.52, 0.48);
   // The scene's working gamma for an image map's colours when it is read: assumed_gamma, or nothing before
   // #version 3.7, which takes them as they are.
   std::function<std::optional<double>()> imageGamma;
@@ -79,6 +81,7 @@ struct PovFinish {
   double reflectionMetallic = 0;
   bool reflectionFresnel = false;
   bool conserveEnergy = false;
+  std::shared_ptr<const Iridescence> irid;  // `irid { … }` with an amount other than 0
   double diffuse = 0.6, phong = 0, phongSize = 40, specular = 0, roughness = 0.05, reflection = 0, brilliance = 1, metallic = 0;
 };
 
