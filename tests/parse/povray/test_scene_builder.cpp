@@ -501,6 +501,28 @@ plane { y, 0 pigment { bozo warp { turbulence 0.5 } scale 2 color_map { [0 Black
   CHECK(s.objects[1].texture->at(b).pigment.r == Approx(0.3909708381241105).margin(1e-6));
 }
 
+TEST_CASE("povray scene: a normal's warps move the point its bumps are sampled round", "[povray][warp]") {
+  // POV-Ray samples the pattern round the warped point and bends the normal by the transforms alone: through a
+  // spherical warp, gradient x bends every point alike.
+  const SceneDesc s = scene(R"(
+plane { y, 0 pigment { White } normal { gradient x 1 warp { spherical } } }
+plane { y, 0 pigment { White } normal { bumps 1 scale 0.3 warp { turbulence 0.5 } scale 2 } }
+plane { y, 0 texture { pigment { White } normal { quilted 0.6 scale 0.25 warp { turbulence 0.1 octaves 2 } } } }
+)");
+  REQUIRE(s.objects.size() == 3);
+  const glm::dvec3 up(0, 1, 0), right(1, 1, 0), back(0, 1, 1), p(0.5, 0, 0.45), q(-0.3, 0, 0.6);
+  CHECK(lit(s, 0, p, up) == Approx(0.9912).margin(1e-4));
+  CHECK(lit(s, 0, p, right) == Approx(0.6074).margin(1e-4));
+  CHECK(lit(s, 0, q, right) == Approx(0.6074).margin(1e-4));
+  CHECK(lit(s, 0, q, back) == Approx(0.7009).margin(1e-4));
+  CHECK(lit(s, 1, p, up) == Approx(0.9927).margin(1e-4));
+  CHECK(lit(s, 1, p, right) == Approx(0.6918).margin(1e-4));
+  CHECK(lit(s, 1, p, back) == Approx(0.6171).margin(1e-4));
+  CHECK(lit(s, 2, p, up) == Approx(0.9532).margin(1e-4));
+  CHECK(lit(s, 2, p, right) == Approx(0.7983).margin(1e-4));
+  CHECK(lit(s, 2, p, back) == Approx(0.8480).margin(1e-4));
+}
+
 TEST_CASE("povray scene: agate, bozo, marble, radial and wood without a map take their own colour maps", "[povray]") {
   // The colours POV-Ray's pigment functions gave at the same points; spotted keeps the grey ramp.
   const SceneDesc s = scene("plane { y, 0 pigment { radial } }\nplane { y, 0 pigment { bozo } }\n"
