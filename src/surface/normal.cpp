@@ -31,7 +31,7 @@ glm::dvec3 Normal::bent(const glm::dvec3& n, const glm::dvec3& p, const glm::dma
                                          {-0.471404520791032, -1.0 / 3, -0.816496580927726},
                                          {0, 1, 0}};
   const glm::dmat3 m = glm::dmat3(fromTexture) * toTexture;
-  const glm::dvec3 q = glm::dvec3(fromTexture * glm::dvec4(p, 1));
+  const glm::dvec3 q = warps.empty() ? glm::dvec3(fromTexture * glm::dvec4(p, 1)) : throughWarps(warps, afterWarps, p);
   if (!map.empty()) return mapped(n, q, m);
   glm::dvec3 slope = pattern->hasBump() ? pattern->bump(q) : glm::dvec3(0);
   if (!pattern->hasBump()) {

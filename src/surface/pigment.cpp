@@ -45,14 +45,18 @@ bool readsNormal(const Pigment& p) {
   return std::any_of(p.list.begin(), p.list.end(), [](const auto& q) { return readsNormal(*q); });
 }
 
-glm::dvec3 Pigment::patternPoint(const glm::dvec3& p) const {
-  if (warps.empty()) return glm::dvec3(fromTexture * glm::dvec4(p, 1));
+glm::dvec3 throughWarps(const std::vector<WarpStage>& warps, const glm::dmat4& afterWarps, const glm::dvec3& p) {
   glm::dvec3 q = p;
   for (const WarpStage& w : warps) {
     q = glm::dvec3(w.before * glm::dvec4(q, 1));
     q = w.warp->apply(q);
   }
   return glm::dvec3(afterWarps * glm::dvec4(q, 1));
+}
+
+glm::dvec3 Pigment::patternPoint(const glm::dvec3& p) const {
+  if (warps.empty()) return glm::dvec3(fromTexture * glm::dvec4(p, 1));
+  return throughWarps(warps, afterWarps, p);
 }
 
 double Pigment::value(const glm::dvec3& p) const {

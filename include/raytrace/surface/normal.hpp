@@ -31,6 +31,10 @@ struct Normal {
   bool bumpScale = true;    // no_bump_scale clears it
   std::vector<SlopeEntry> slopes;  // none: the height is the pattern's value
   glm::dmat4 fromTexture{1};       // texture space to the pattern's own
+  // Warps as a pigment's (Pigment::warps); with any, the bumps are sampled round the warped point, and bend the
+  // normal as the transforms alone would.
+  std::vector<WarpStage> warps;
+  glm::dmat4 afterWarps{1};
   double frequency = 1, phase = 0, exponent = 1;
   Wave wave = Wave::Ramp;
 

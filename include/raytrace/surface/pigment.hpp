@@ -39,6 +39,9 @@ struct WarpStage {
   std::shared_ptr<const Warp> warp;
 };
 
+// p (in texture space) through the warps, each after the transforms it undoes, and then afterWarps.
+glm::dvec3 throughWarps(const std::vector<WarpStage>& warps, const glm::dmat4& afterWarps, const glm::dvec3& p);
+
 struct Pigment {
   Rgbft solid;                              // the colour when there is no pattern
   std::shared_ptr<const Pattern> pattern;

@@ -41,4 +41,26 @@ std::unique_ptr<Warp> makeBlackHoleWarp(const BlackHoleArgs& args);
 // `warp { planar [N, D] }`: the pattern of a plane extruded along z; N is normalised.
 std::unique_ptr<Warp> makePlanarWarp(const glm::dvec3& normal, double distance);
 
+// What the planar, cylindrical, spherical and toroidal warps make of their point v = (a, b, c) for the
+// normalised orientation n: ((n_y + n_z)·a + n_x·c, (n_x + n_z)·b − n_y·c, −n_x·a + n_y·b + n_z·c), v itself
+// for the default n = z (docs/povray-noise.md, "Warps").
+glm::dvec3 warpOriented(const glm::dvec3& n, const glm::dvec3& v);
+// The turn from +x toward +z round the y axis of the point (x, z), in [0, 1): 0 on the axis itself.
+double warpTurn(double x, double z);
+
+// `warp { cylindrical | spherical | toroidal [orientation O] [dist_exp E] [major_radius R] }`: the point's
+// angles round the y axis (and round the torus's tube) as x and y, its distance as z.
+struct MappingWarpArgs {
+  glm::dvec3 orientation{0, 0, 1};  // normalised
+  double distExp = 0;
+  double majorRadius = 1;  // toroidal only
+};
+std::unique_ptr<Warp> makeCylindricalWarp(const MappingWarpArgs& args);
+std::unique_ptr<Warp> makeSphericalWarp(const MappingWarpArgs& args);
+std::unique_ptr<Warp> makeToroidalWarp(const MappingWarpArgs& args);
+
+// `warp { cubic }`: the six faces of the cube round the origin unfolded onto the unit square as a box's
+// uv_mapping lays them; z is the distance max(|x|, |y|, |z|).
+std::unique_ptr<Warp> makeCubicWarp();
+
 }  // namespace rt

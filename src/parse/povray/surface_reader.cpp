@@ -674,14 +674,15 @@ void readSlopeMap(const Node& n, std::vector<SlopeEntry>& slopes) {
   std::stable_sort(slopes.begin(), slopes.end(), [](const SlopeEntry& a, const SlopeEntry& b) { return a.value < b.value; });
 }
 
-void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, ReadingContext& context);
+std::vector<WarpMark> readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps,
+                                 ReadingContext& context);
 
 // A map's or a list's normal, which starts as the #default texture's, as every normal block does.
 std::shared_ptr<const Normal> nestedNormal(const Node& n, const Normal& base, ReadingContext& context) {
   auto normal = std::make_shared<Normal>(base);
   std::vector<TransformStep> steps;
-  readNormal(n, *normal, steps, context);
-  normal->fromTexture = glm::inverse(composeTransforms<double>(steps));
+  const std::vector<WarpMark> warps = readNormal(n, *normal, steps, context);
+  placeTransforms(*normal, steps, warps);
   return normal;
 }
 
@@ -749,6 +750,8 @@ void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::ve
       } else if (k == "bump_map") {
         readBumpMapNormal(*it.node, normal, context);
         draft = PatternDraft{};
+      } else if (k == "warp") {
+        if (std::shared_ptr<const Warp> warp = readWarp(*it.node, context)) draft.warps.push_back({steps.size(), warp});
       } else {
         context.refuse(it, "normal");
       }
@@ -792,7 +795,8 @@ void readNormalItems(const Node& n, Normal& normal, PatternDraft& draft, std::ve
   }
 }
 
-void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps, ReadingContext& context) {
+std::vector<WarpMark> readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps,
+                                 ReadingContext& context) {
   PatternDraft draft;
   Normal base = normal;
   base.pattern.reset();
@@ -810,6 +814,7 @@ void readNormal(const Node& n, Normal& normal, std::vector<TransformStep>& steps
   if (!normal.average && !normal.map.empty() && !normal.pattern && !context.firstRefusal) {
     throw ParseError(n.loc, "a normal_map needs a pattern");
   }
+  return std::move(draft.warps);
 }
 
 FinishTerms finishTerms(const PovFinish& f, const Surface& s) {
@@ -848,7 +853,9 @@ FinishTerms finishTerms(const PovFinish& f, const Surface& s) {
 
 }  // namespace
 
-void placeTransforms(Pigment& p, const std::vector<TransformStep>& steps, const std::vector<WarpMark>& warps) {
+namespace {
+
+template <class T> void placeWarps(T& p, const std::vector<TransformStep>& steps, const std::vector<WarpMark>& warps) {
   p.fromTexture = glm::inverse(composeTransforms<double>(steps));
   p.warps.clear();
   // Undone from the last written: the transforms after the last warp, that warp, and so on back to the first.
@@ -859,6 +866,16 @@ void placeTransforms(Pigment& p, const std::vector<TransformStep>& steps, const 
     end = w->after;
   }
   p.afterWarps = glm::inverse(composeTransforms<double>({steps.begin(), steps.begin() + long(end)}));
+}
+
+}  // namespace
+
+void placeTransforms(Pigment& p, const std::vector<TransformStep>& steps, const std::vector<WarpMark>& warps) {
+  placeWarps(p, steps, warps);
+}
+
+void placeTransforms(Normal& n, const std::vector<TransformStep>& steps, const std::vector<WarpMark>& warps) {
+  placeWarps(n, steps, warps);
 }
 
 std::shared_ptr<const Pigment> nestedPigment(const Node& n, ReadingContext& context) {
@@ -994,7 +1011,8 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Reading
     readFinish(n, top.finish, context);
   } else if (k == "normal") {
     if (!top.normal) top.normal.emplace();
-    readNormal(n, *top.normal, top.normalSteps, context);
+    const std::vector<WarpMark> warps = readNormal(n, *top.normal, top.normalSteps, context);
+    top.normalWarps.insert(top.normalWarps.end(), warps.begin(), warps.end());
   } else if (k == "texture" && texturePatternIn(n)) {
     top.pattern = readTexturePattern(n, defaults, context);
   } else if (k == "texture" || k == "material") {
@@ -1072,7 +1090,7 @@ Texture makeTexture(const Surface& s, const std::vector<TransformStep>& after) {
     std::shared_ptr<Normal> normal;
     if (layer.normal && (layer.normal->pattern || layer.normal->average)) {
       normal = std::make_shared<Normal>(*layer.normal);
-      normal->fromTexture = glm::inverse(composeTransforms<double>(layer.normalSteps));
+      placeTransforms(*normal, layer.normalSteps, layer.normalWarps);
     }
     t.layers.push_back({p, finishTerms(layer.finish, s), layer.pattern, std::move(normal)});
   }

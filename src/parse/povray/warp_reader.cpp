@@ -121,6 +121,35 @@ std::shared_ptr<const Warp> planar(WarpItems& r) {
   return makePlanarWarp(glm::normalize(normal), distance);
 }
 
+// `cylindrical`, `spherical`, `toroidal`: `orientation O`, `dist_exp E`, and the toroidal's `major_radius R`.
+MappingWarpArgs mappingArgs(WarpItems& r, bool toroidal) {
+  MappingWarpArgs a;
+  r.rest(0, [&](std::string_view word, size_t& k) {
+    if (word == "orientation") {
+      const SourceLoc& loc = r.node().items[k].loc;
+      a.orientation = r.vector(k);
+      if (!(glm::length(a.orientation) > 0)) throw ParseError(loc, "a warp's orientation is zero");
+      a.orientation = glm::normalize(a.orientation);
+    }
+    if (word == "dist_exp") a.distExp = r.number(k);
+    if (word == "major_radius") {
+      if (!toroidal) throw ParseError(r.node().items[k].loc, "only a toroidal warp takes 'major_radius'");
+      a.majorRadius = r.number(k);
+    }
+    return word == "orientation" || word == "dist_exp" || word == "major_radius";
+  });
+  return a;
+}
+
+std::shared_ptr<const Warp> cylindrical(WarpItems& r) { return makeCylindricalWarp(mappingArgs(r, false)); }
+std::shared_ptr<const Warp> spherical(WarpItems& r) { return makeSphericalWarp(mappingArgs(r, false)); }
+std::shared_ptr<const Warp> toroidal(WarpItems& r) { return makeToroidalWarp(mappingArgs(r, true)); }
+
+std::shared_ptr<const Warp> cubic(WarpItems& r) {
+  r.rest(0, [](std::string_view, size_t&) { return false; });
+  return makeCubicWarp();
+}
+
 struct WarpKind {
   std::string_view name;
   std::shared_ptr<const Warp> (*read)(WarpItems&);
@@ -128,7 +157,8 @@ struct WarpKind {
 
 constexpr WarpKind kWarps[] = {
     {"turbulence", turbulence}, {"octaves", turbulence}, {"omega", turbulence}, {"lambda", turbulence},
-    {"repeat", repeat},         {"black_hole", blackHole}, {"planar", planar},
+    {"repeat", repeat},         {"black_hole", blackHole}, {"planar", planar},         {"cylindrical", cylindrical},
+    {"spherical", spherical},   {"toroidal", toroidal},    {"cubic", cubic},
 };
 
 }  // namespace

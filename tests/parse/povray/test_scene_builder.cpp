@@ -233,8 +233,8 @@ sphere { x * 10, 1 }
   CHECK(dm.densities[1]->at(glm::dvec3(0.3)).rgb == Color(0.5f));
   CHECK(dm.densities[2]->at(glm::dvec3(0.25, 0, 0)).rgb == Color(0.25f));
   CHECK(dm.densities[3]->at(glm::dvec3(0, 0.5, 0)).rgb == Color(0.6f));
-  CHECK(failure("box { -1, 1 interior { media { emission 1 density { spherical warp { toroidal } } } } }\n") ==
-        "scene.pov:3:70: error: 'toroidal' is not supported yet");
+  CHECK(failure("box { -1, 1 interior { media { emission 1 density { spherical warp { cubic dist_exp 1 } } } } }\n") ==
+        "scene.pov:3:76: error: 'dist_exp' is not supported yet");
   // Scattering, its defaults, and method 3's adaptive sampling.
   const SceneDesc sc = scene("sphere { 0, 1 interior { media { scattering { 5, rgb <0.1, 0.2, 0.3> eccentricity 0.4 }\n"
                              "  aa_level 5 aa_threshold 0.2 } } }\n"
@@ -570,8 +570,28 @@ plane { y, 0 pigment { bozo warp { turbulence 0.5 } scale 2 color_map { [0 Black
   CHECK(s.objects[0].texture->at(b).pigment.r == Approx(0.3254249134030404).margin(1e-6));
   CHECK(s.objects[1].texture->at(a).pigment.r == Approx(0.1557192993952387).margin(1e-6));
   CHECK(s.objects[1].texture->at(b).pigment.r == Approx(0.3909708381241105).margin(1e-6));
-  CHECK(failure("plane { y, 0 pigment { bozo warp { spherical } } }\n") ==
-        "scene.pov:3:36: error: 'spherical' is not supported yet");
+}
+
+TEST_CASE("povray scene: a normal's warps move the point its bumps are sampled round", "[povray][warp]") {
+  // POV-Ray samples the pattern round the warped point and bends the normal by the transforms alone: through a
+  // spherical warp, gradient x bends every point alike.
+  const SceneDesc s = scene(R"(
+plane { y, 0 pigment { White } normal { gradient x 1 warp { spherical } } }
+plane { y, 0 pigment { White } normal { bumps 1 scale 0.3 warp { turbulence 0.5 } scale 2 } }
+plane { y, 0 texture { pigment { White } normal { quilted 0.6 scale 0.25 warp { turbulence 0.1 octaves 2 } } } }
+)");
+  REQUIRE(s.objects.size() == 3);
+  const glm::dvec3 up(0, 1, 0), right(1, 1, 0), back(0, 1, 1), p(0.5, 0, 0.45), q(-0.3, 0, 0.6);
+  CHECK(lit(s, 0, p, up) == Approx(0.9912).margin(1e-4));
+  CHECK(lit(s, 0, p, right) == Approx(0.6074).margin(1e-4));
+  CHECK(lit(s, 0, q, right) == Approx(0.6074).margin(1e-4));
+  CHECK(lit(s, 0, q, back) == Approx(0.7009).margin(1e-4));
+  CHECK(lit(s, 1, p, up) == Approx(0.9927).margin(1e-4));
+  CHECK(lit(s, 1, p, right) == Approx(0.6918).margin(1e-4));
+  CHECK(lit(s, 1, p, back) == Approx(0.6171).margin(1e-4));
+  CHECK(lit(s, 2, p, up) == Approx(0.9532).margin(1e-4));
+  CHECK(lit(s, 2, p, right) == Approx(0.7983).margin(1e-4));
+  CHECK(lit(s, 2, p, back) == Approx(0.8480).margin(1e-4));
 }
 
 TEST_CASE("povray scene: agate, bozo, marble, radial and wood without a map take their own colour maps", "[povray]") {
@@ -602,7 +622,7 @@ TEST_CASE("povray scene: agate, bozo, marble, radial and wood without a map take
   CHECK((grey.r == grey.g && grey.g == grey.b));
 }
 
-TEST_CASE("povray scene: repeat, black_hole and planar warps, their items and their refusals", "[povray][warp]") {
+TEST_CASE("povray scene: the warps, their items and their refusals", "[povray][warp]") {
   // gradient x over [-50, 50) reads the warped point's x; values POV-Ray printed for the same pigments.
   const SceneDesc s = scene(R"(
 #macro G(W) pigment { gradient x color_map { [0 Black] [1 White] } scale 100 translate -50*x W } #end
@@ -610,14 +630,22 @@ plane { y, 0 G(warp { repeat 2*x offset <0.1,0.2,0.05> flip <1,1,0> }) }
 plane { y, 0 G(warp { black_hole <0.5,0.5,0>, 0.5 falloff 1 strength 0.7 inverse }) }
 plane { y, 0 G(warp { black_hole <0.5,0.5,0.5>, 0.4 repeat <1,1,1> }) }
 plane { y, 0 G(warp { planar <1,1,0>, 0.5 }) }
+plane { y, 0 G(warp { spherical orientation y dist_exp 1 }) }
+plane { y, 0 G(warp { toroidal major_radius 2 }) }
+plane { y, 0 G(warp { cubic }) }
+plane { y, 0 G(warp { cylindrical orientation 2*x dist_exp 2 }) }
 )");
-  REQUIRE(s.objects.size() == 4);
+  REQUIRE(s.objects.size() == 8);
   const auto x = [&](size_t i, glm::dvec3 p) { return 100 * double(s.objects[i].texture->at(p).pigment.r) - 50; };
   CHECK(x(0, {2.3, 0.2, 0.1}) == Approx(1.800001).margin(2e-5));
   CHECK(x(0, {-0.7, 0.4, 0.6}) == Approx(0.599998).margin(2e-5));
   CHECK(x(1, {0.3, 0.2, 0.1}) == Approx(0.335234).margin(2e-5));
   CHECK(x(2, {-2.6, 1.5, -0.4}) == Approx(-2.641788).margin(2e-5));
   CHECK(x(3, {4.9, -0.3, 0.2}) == Approx(3.818375).margin(2e-5));
+  CHECK(x(4, {0.3, 0.2, 0.1}) == Approx(0.019160).margin(2e-5));
+  CHECK(x(5, {0.5, -0.7, -0.3}) == Approx(0.913990).margin(2e-5));
+  CHECK(x(6, {0.7, 0.1, -1.2}) == Approx(0.802080).margin(2e-5));
+  CHECK(x(7, {-2.6, 1.5, -0.4}) == Approx(2.630590).margin(2e-5));
   CHECK(failure("plane { y, 0 pigment { bozo warp { repeat <1,1,0> } } }\n") ==
         "scene.pov:3:36: error: a repeat warp's vector must lie along one axis");
   CHECK(failure("plane { y, 0 pigment { bozo warp { black_hole 0, 0 } } }\n") ==
@@ -628,6 +656,10 @@ plane { y, 0 G(warp { planar <1,1,0>, 0.5 }) }
         "scene.pov:3:36: error: 'a black_hole larger than its repeat block' is not supported yet");
   CHECK(failure("plane { y, 0 pigment { bozo warp { planar 0, 1 } } }\n") ==
         "scene.pov:3:36: error: a planar warp's normal is zero");
+  CHECK(failure("plane { y, 0 pigment { bozo warp { spherical orientation 0 } } }\n") ==
+        "scene.pov:3:46: error: a warp's orientation is zero");
+  CHECK(failure("plane { y, 0 pigment { bozo warp { cylindrical major_radius 2 } } }\n") ==
+        "scene.pov:3:48: error: only a toroidal warp takes 'major_radius'");
   CHECK(failure("plane { y, 0 pigment { bozo warp { repeat x strength 1 } } }\n") ==
         "scene.pov:3:45: error: 'strength' is not supported yet");
 }

@@ -96,6 +96,8 @@ std::shared_ptr<const Warp> readWarp(const Node& n, ReadingContext& context);
 
 // The pigment's fromTexture, and its warps between its transforms.
 void placeTransforms(Pigment& p, const std::vector<TransformStep>& steps, const std::vector<WarpMark>& warps);
+// The same for a normal.
+void placeTransforms(Normal& n, const std::vector<TransformStep>& steps, const std::vector<WarpMark>& warps);
 
 struct SurfaceLayer {
   Pigment pigment;                       // POV-Ray's default pigment is black
@@ -105,6 +107,7 @@ struct SurfaceLayer {
   std::shared_ptr<const TexturePattern> pattern;  // a pattern of whole textures instead
   std::optional<Normal> normal;
   std::vector<TransformStep> normalSteps;  // the normal's own transforms, then the texture's written after it
+  std::vector<WarpMark> normalWarps;       // the normal's warps among them
 };
 
 struct Surface {
