@@ -45,6 +45,7 @@ std::unique_ptr<Pattern> makeRipples(const PatternArgs&);
 std::unique_ptr<Pattern> makeSlope(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpherical(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpiral1(const PatternArgs&);
+std::unique_ptr<Pattern> makeSpiral2(const PatternArgs&);
 std::unique_ptr<Pattern> makeWaves(const PatternArgs&);
 std::unique_ptr<Pattern> makeWood(const PatternArgs&);
 std::unique_ptr<Pattern> makeWrinkles(const PatternArgs&);
