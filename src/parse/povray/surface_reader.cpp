@@ -845,7 +845,8 @@ namespace {
 bool texturePatternIn(const Node& n) {
   return std::any_of(n.items.begin(), n.items.end(), [](const Item& it) {
     return (it.kind == Item::Kind::Keyword && patternKind(it.word)) || isFunction(it) || patternBlock(it) ||
-           (it.kind == Item::Kind::Node && (it.node->keyword == "texture_map" || it.node->keyword == "tiles"));
+           (it.kind == Item::Kind::Node && (it.node->keyword == "texture_map" || it.node->keyword == "tiles" ||
+                                             it.node->keyword == "material_map"));
   });
 }
 
@@ -872,7 +873,27 @@ bool readTiles(const Node& n, TexturePattern& tp, const Surface& defaults, Readi
   return true;
 }
 
-// `texture { checker texture { … } texture { … } }` or `texture { gradient x texture_map { [v texture { … }] … } }`.
+// `material_map { "file" … TEXTURE… TRANSFORMATIONS }`: its textures, and the image's indices as the selector's
+// colours; its transforms move the textures with the image, as a pattern's do.
+void readMaterialMap(const Node& n, TexturePattern& tp, std::vector<TransformStep>& steps, const Surface& defaults,
+                     ReadingContext& context) {
+  Node image;
+  image.keyword = n.keyword;
+  image.loc = n.loc;
+  for (size_t i = 0; i < n.items.size(); ++i) {
+    const Item& it = n.items[i];
+    if (it.kind == Item::Kind::Node && it.node->keyword == "texture") {
+      tp.textures.push_back(subTexture(*it.node, defaults, context));
+    } else if (!readTransform(n, i, steps, context)) {
+      image.items.push_back(it);
+    }
+  }
+  if (tp.textures.empty()) throw ParseError(n.loc, "material_map needs a texture");
+  tp.selector.image = readMaterialMapImage(image, tp.textures.size(), context);
+}
+
+// `texture { checker texture { … } texture { … } }` or `texture { gradient x texture_map { [v texture { … }] … } }`,
+// or `texture { material_map { … } }`.
 std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Surface& defaults, ReadingContext& context) {
   auto tp = std::make_shared<TexturePattern>();
   Pigment& selector = tp->selector;
@@ -902,6 +923,8 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
     } else if (it.kind == Item::Kind::Node && it.node->keyword == "tiles") {
       if (readTiles(*it.node, *tp, defaults, context)) selector.pattern = makePattern(*patternKind("checker"), {});
       draft = PatternDraft{};
+    } else if (it.kind == Item::Kind::Node && it.node->keyword == "material_map") {
+      readMaterialMap(*it.node, *tp, steps, defaults, context);
     } else if (std::unique_ptr<Pattern> pattern = draft.start(n, i, context)) {
       selector.pattern = std::move(pattern);
       selector.wave = draft.kind->wave;
@@ -912,10 +935,10 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
   draft.finish(selector.pattern, n.loc, context);
   const int blocks = selector.pattern ? selector.pattern->blocks() : 0;
   for (int b = 0; b < blocks; ++b) selector.list.push_back(solidPigment({Color(float(b)), 0, 0}));
-  if (!selector.pattern) {
-    context.refuse(n.loc, "texture");  // its pattern was refused above
+  if (!selector.pattern && !selector.image) {
+    context.refuse(n.loc, "texture");  // its pattern or material_map was refused above
     tp->textures.assign(1, std::make_shared<const Texture>());
-  } else if (tp->textures.size() < size_t(std::max(blocks, 1)) || (blocks == 0 && selector.map.empty())) {
+  } else if (selector.pattern && (tp->textures.size() < size_t(std::max(blocks, 1)) || (blocks == 0 && selector.map.empty()))) {
     throw ParseError(n.loc, "this texture pattern needs " + std::to_string(std::max(blocks, 1)) +
                                 (blocks ? " textures" : " texture_map"));
   }

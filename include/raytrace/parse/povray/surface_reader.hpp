@@ -53,6 +53,9 @@ struct BumpMapSettings {
 // `bump_map { [type] "file" … }` (image_map_reader.cpp): its image, its values left linear; nothing when
 // something in it is refused.
 std::shared_ptr<const ImageMap> readBumpMap(const Node& n, ReadingContext& context, BumpMapSettings& settings);
+// The image of a `material_map { [type] "file" [map_type T] … }` without its textures and transforms
+// (image_map_reader.cpp): each pixel's red the index of its texture among `textures`; nothing when refused.
+std::shared_ptr<const ImageMap> readMaterialMapImage(const Node& n, size_t textures, ReadingContext& context);
 
 // `media { … }` in an interior (media_reader.cpp); nothing when something in it is refused.
 std::optional<Media> readMedia(const Node& n, ReadingContext& context);
