@@ -39,13 +39,16 @@ struct SurfaceExtras {
   // (metallicTint(), shading.hpp); 0: not tinted.
   float reflectionMetallic = 0;
   bool reflectionFresnel = false;
+  // The object's double_illuminate: a light behind the surface, as the viewer sees it, lights it as if it
+  // were in front (POV-Ray 3.7 manual, "Double Illuminate Object Modifier").
+  bool doubleIlluminate = false;
   // The interior's medium, which a ray that enters the object crosses up to its next hit.
   std::optional<Media> media;
 
   // Whether any of them changes a picture.
   bool any() const {
     return fadeDistance > 0 || caustics != 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0 ||
-           media.has_value();
+           media.has_value() || doubleIlluminate;
   }
 };
 

@@ -783,6 +783,7 @@ FinishTerms finishTerms(const PovFinish& f, const Surface& s) {
   extras.fadeColor = s.fadeColor;
   extras.caustics = float(s.caustics);
   extras.media = s.media;
+  extras.doubleIlluminate = s.doubleIlluminate;
   if (extras.any()) t.extras = keptExtras(extras);
   t.diffuse = float(f.diffuse);
   // POV-Ray's highlights are white; `specular` has exponent 1/roughness, `phong` its phong_size.
