@@ -23,6 +23,7 @@ const PatternKind* patternKind(std::string_view name) {
       {"checker", false, makeChecker},
       {"crackle", false, makeCrackle},
       {"cylindrical", false, makeCylindrical},
+      {"density_file", false, makeDensityFile},  // its file read by surface_reader.cpp
       {"dents", false, makeDents},
       {"function", false, makeFunctionPattern},
       {"gradient", true, makeGradient},

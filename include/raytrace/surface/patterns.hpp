@@ -18,6 +18,7 @@ std::unique_ptr<Pattern> makeCells(const PatternArgs&);
 std::unique_ptr<Pattern> makeChecker(const PatternArgs&);
 std::unique_ptr<Pattern> makeCrackle(const PatternArgs&);
 std::unique_ptr<Pattern> makeCylindrical(const PatternArgs&);
+std::unique_ptr<Pattern> makeDensityFile(const PatternArgs&);
 std::unique_ptr<Pattern> makeDents(const PatternArgs&);
 std::unique_ptr<Pattern> makeFractal(const PatternArgs&);
 std::unique_ptr<Pattern> makeFunctionPattern(const PatternArgs&);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "raytrace/surface/density_file.hpp"
 #include "raytrace/surface/patterns.hpp"
 
 namespace rt::povray {
@@ -192,6 +193,19 @@ void readFractalHead(const Node& n, size_t& i, FractalArgs& f) {
                         : (julia ? Set::Magnet2Julia : Set::Magnet2Mandel);
 }
 
+// What follows density_file: `df3 "file"`, the file found as an image map's is and read at once.
+void readDensityFileHead(const Node& n, size_t& i, PatternArgs& args, ReadingContext& context) {
+  const Item& it = n.items[i];
+  const bool df3 = i + 2 < n.items.size() && n.items[i + 1].kind == Item::Kind::Keyword && n.items[i + 1].word == "df3" &&
+                   n.items[i + 2].kind == Item::Kind::Value && n.items[i + 2].value.type == Value::Type::String;
+  if (!df3) throw ParseError(it.loc, "'density_file' needs 'df3' and a file name");
+  i += 2;
+  const Item& name = n.items[i];
+  const std::string path = context.findFile ? context.findFile(name.value.str()) : name.value.str();
+  if (path.empty()) throw ParseError(name.loc, "cannot find the density file \"" + name.value.str() + "\"");
+  args.densityFile = std::make_shared<const DensityGrid>(readDensityFile(path, name.loc));
+}
+
 // A pattern written as a block of its own: `pigment_pattern { … }` or `slope { … }`.
 bool patternBlock(const Item& it) {
   return it.kind == Item::Kind::Node && (it.node->keyword == "pigment_pattern" || it.node->keyword == "slope");
@@ -272,6 +286,7 @@ struct PatternDraft {
       args.hasVector = true;
     }
     if (k->make == makeFractal) readFractalHead(n, i, args.fractal);
+    if (k->make == makeDensityFile) readDensityFileHead(n, i, args, context);
     return makePattern(*k, args);
   }
 
@@ -292,6 +307,15 @@ struct PatternDraft {
       return true;
     }
     if (readTurbulence(n, i, args.turbulence)) {
+      modified = true;
+      return true;
+    }
+    if (w == "interpolate" && kind && kind->make == makeDensityFile) {
+      const Value* v = valueAfter(n, i);
+      if (!v || v->type != Value::Type::Float || (v->v[0] != 0 && v->v[0] != 1 && v->v[0] != 2)) {
+        throw ParseError(it.loc, "the density_file's interpolate must be 0, 1 or 2");
+      }
+      args.densityInterpolation = int(v->v[0]);
       modified = true;
       return true;
     }
