@@ -376,6 +376,12 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
   Local local;
   if (w.local > 0) {
     local = direct(hit, m, side, n, v, record, shadows);
+    if (m.extras->doubleIlluminate) {
+      // The lights behind the surface, as if seen from that side: the normal and the side to leave by turned.
+      const Local behind = direct(hit, m, -side, -n, v, record, nullptr);
+      local.diffuse += behind.diffuse;
+      local.specular += behind.specular;
+    }
     ambientLight = w.local * ambient(hit, m, side, path);
   }
   local.diffuse *= w.local;

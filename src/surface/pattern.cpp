@@ -23,6 +23,7 @@ const PatternKind* patternKind(std::string_view name) {
       {"checker", false, makeChecker},
       {"crackle", false, makeCrackle},
       {"cylindrical", false, makeCylindrical},
+      {"density_file", false, makeDensityFile},  // its file read by surface_reader.cpp
       {"dents", false, makeDents},
       {"function", false, makeFunctionPattern},
       {"gradient", true, makeGradient},
@@ -42,6 +43,7 @@ const PatternKind* patternKind(std::string_view name) {
       {"slope", false, makeSlope},  // its block read by surface_reader.cpp
       {"spherical", false, makeSpherical},
       {"spiral1", true, makeSpiral1, kTriangle, true, false},  // `spiral1 N`: N arms
+      {"spiral2", true, makeSpiral2, kTriangle, true, false},  // `spiral2 N`: N arms
       {"spotted", false, makeBozo},
       {"waves", false, makeWaves},
       {"wood", false, makeWood, kTriangle, true, true, &kWoodMap},

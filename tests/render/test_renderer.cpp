@@ -395,6 +395,26 @@ TEST_CASE("A shadowless light gives diffuse light but no highlight, from a point
   checkColor(wall("shadowless area_light 2*x, 2*y, 2, 2 area_illumination"), Color(0.3f));
 }
 
+TEST_CASE("double_illuminate: a light behind the surface lights it as if it were in front, without a highlight",
+          "[render]") {
+  // A wall facing the camera, lit only from behind: kd·C·|n·l| = 0.6·0.5·|n·l| with double_illuminate, as
+  // POV-Ray's pictures show (0.3 head on, 0.287 at n·l = 1/√1.09); the mirrored view points away from the light,
+  // so phong adds nothing. Without it, or with `double_illuminate off`, the wall is dark.
+  const auto wall = [](const std::string& light, const std::string& modifier) {
+    const std::string text = "#version 3.7;\n"
+        "camera { orthographic location <0, 0, -10> look_at 0 right 4*x up 4*y }\n"
+        "light_source { " + light + " rgb 1 }\n"
+        "plane { -z, 0 pigment { rgb 0.5 } finish { ambient 0 diffuse 0.6 phong 0.5 phong_size 1 } " + modifier + " }\n";
+    return centre(rt::povray::parsePovRay(text, "wall.pov", rt::povray::PovRayOptions{{}, 1, 1, false}));
+  };
+  checkColor(wall("<0, 0, 1e6>", "double_illuminate"), Color(0.3f));
+  checkColor(wall("<0, 3e5, 1e6>", "double_illuminate"), Color(float(0.3 / std::sqrt(1.09))));
+  checkColor(wall("<0, 0, 1e6>", ""), Color(0));
+  checkColor(wall("<0, 0, 1e6>", "double_illuminate off"), Color(0));
+  // A light in front lights it once, as without the modifier.
+  checkColor(wall("<0, 0, -1e6>", "double_illuminate"), wall("<0, 0, -1e6>", ""));
+}
+
 TEST_CASE("A jittered area light gives the same picture on any threads, and pixel() agrees", "[render]") {
   const std::string text = "#version 3.7;\n"
       "camera { location <0, 3, -4> look_at 0 }\n"

@@ -206,3 +206,49 @@ TEST_CASE("image_map: a missing or unreadable file is one located error; what is
   CHECK(after("transmit 0.5") == dir.file("scene.pov") + ":2:53: error: 'transmit' is not supported yet");
   CHECK(failure("tiff \"empty.png\"") == dir.file("scene.pov") + ":2:36: error: 'image_map tiff' is not supported yet");
 }
+
+TEST_CASE("material_map: a palette image's index, or else its red's 8-bit value, picks a texture modulo their count",
+          "[image_map]") {
+  const test::TempDir dir;
+  writeGrid(dir);
+  // The 2×1 GIF above: indices 1 and 0, whose reds (10 and 200) would pick otherwise.
+  dir.write("pal.gif", std::string("\x47\x49\x46\x38\x37\x61\x02\x00\x01\x00\x81\x00\x00\xc8\x64\x32\x0a\x14\xfa\x00"
+                                   "\x00\x00\x00\x00\x00\x2c\x00\x00\x00\x00\x02\x00\x01\x00\x00\x08\x05\x00\x03\x00"
+                                   "\x08\x08\x00\x3b",
+                                   44));
+  const auto picked = [&](const std::string& file, const glm::dvec3& p) {
+    const SceneDesc s = povIn(dir, "#version 3.7;\nplane { z, 0 texture { material_map { " + file +
+                                       " texture { pigment { rgb <1, 0, 0> } } texture { pigment { rgb <0, 1, 0> } }"
+                                       " texture { pigment { rgb <0, 0, 1> } } } } }\n");
+    REQUIRE(s.objects.size() == 1);
+    const Color c = s.objects[0].texture->at(p).pigment;
+    return c == Color(1, 0, 0) ? 0 : c == Color(0, 1, 0) ? 1 : c == Color(0, 0, 1) ? 2 : -1;
+  };
+  // The grid's reds 0, 10, 20 (top row) and 130 (bottom right) modulo 3.
+  CHECK(picked("png \"grid.png\"", {0.1, 0.75, 0}) == 0);
+  CHECK(picked("png \"grid.png\"", {0.3, 0.75, 0}) == 1);
+  CHECK(picked("png \"grid.png\"", {0.6, 0.75, 0}) == 2);
+  CHECK(picked("png \"grid.png\"", {0.9, 0.25, 0}) == 1);
+  CHECK(picked("png \"grid.png\"", {1.1, 0.75, 0}) == 0);  // repeated, as an image_map is
+  CHECK(picked("gif \"pal.gif\"", {0.25, 0.5, 0}) == 1);
+  CHECK(picked("gif \"pal.gif\"", {0.75, 0.5, 0}) == 0);
+}
+
+TEST_CASE("material_map: one without a texture is an error; once and interpolate in it are refused", "[image_map]") {
+  const test::TempDir dir;
+  writeGrid(dir);
+  const auto failure = [&](const std::string& map) {
+    try {
+      povIn(dir, "#version 3.7;\nplane { z, 0 texture { material_map { " + map + " } } }\n");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK(failure("png \"grid.png\"") == dir.file("scene.pov") + ":2:24: error: material_map needs a texture");
+  CHECK(failure("png \"grid.png\" once texture { pigment { rgb 1 } }") ==
+        dir.file("scene.pov") + ":2:54: error: 'material_map once' is not supported yet");
+  CHECK(failure("png \"grid.png\" interpolate 2 texture { pigment { rgb 1 } }") ==
+        dir.file("scene.pov") + ":2:54: error: 'material_map interpolate' is not supported yet");
+  CHECK(failure("png \"grid.png\" texture { pigment { rgb 1 } } scale 2") == "no error");
+}

@@ -161,6 +161,11 @@ constexpr double kSpiral1[] = {
     0.0076177864104419, 0.1614243618419411, 0.0540114328831507, 0.6675879024643501,
     0.5746586083773999, 0.1765928891180959, 0.3255235789834914, 0.0746907127474903};
 
+constexpr double kSpiral2[] = {
+    0.8165559276221532, 0.4426421181073474, 0.9384493720244746, 0.6880745916455355,
+    0.2804626452896724, 0.0207511038086614, 0.3018286715438094, 0.2636078720136363,
+    0.6169513218234317, 0.0464290646760754, 0.4981916307003504, 0.9384988745670038};
+
 constexpr double kExact = 1e-11;  // POV-Ray printed 16 decimals; the sums agree to the last few bits
 
 TEST_CASE("noise: both generators and the vector noise give POV-Ray's values", "[noise]") {
@@ -254,6 +259,17 @@ TEST_CASE("patterns: spiral1's arms, and its turbulence refused", "[noise]") {
   a.hasVector = true;
   checkPattern("spiral1", a, kSpiral1, 1.1e-5);  // the wrap's 1e-5 where a value lands on a whole number
   CHECK_FALSE(patternKind("spiral1")->turbulenceDrawn);
+}
+
+TEST_CASE("patterns: spiral2's arms and rings, and its turbulence refused", "[noise]") {
+  PatternArgs a;
+  a.vector = glm::dvec3(3);  // spiral2 3
+  a.hasVector = true;
+  checkPattern("spiral2", a, kSpiral2);
+  // On the z axis the angle counts as 0: the value is twice z's triangle wave (0.6 at z = 0.3, as POV-Ray gives).
+  const auto axis = makePattern(*patternKind("spiral2"), a);
+  CHECK(axis->value({0, 0, 0.3}) == Approx(0.6).margin(kExact));
+  CHECK_FALSE(patternKind("spiral2")->turbulenceDrawn);
 }
 
 TEST_CASE("noise: the scene's generator is read when the pattern is drawn", "[noise]") {

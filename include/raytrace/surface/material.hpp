@@ -44,13 +44,16 @@ struct SurfaceExtras {
   bool conserveEnergy = false;
   // A finish's `irid`: each light's colour multiplied by Iridescence::factor(); none: no film.
   std::shared_ptr<const Iridescence> irid;
+  // The object's double_illuminate: a light behind the surface, as the viewer sees it, lights it as if it
+  // were in front (POV-Ray 3.7 manual, "Double Illuminate Object Modifier").
+  bool doubleIlluminate = false;
   // The interior's medium, which a ray that enters the object crosses up to its next hit.
   std::optional<Media> media;
 
   // Whether any of them changes a picture.
   bool any() const {
     return fadeDistance > 0 || caustics != 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0 ||
-           conserveEnergy || irid || media.has_value();
+           conserveEnergy || irid || doubleIlluminate || media.has_value();
   }
 };
 

@@ -12,6 +12,7 @@
 namespace rt {
 
 class Function;
+struct DensityGrid;
 struct Pigment;
 
 class Pattern {
@@ -94,6 +95,8 @@ struct PatternArgs {
   double mortar = 0.5;
   FractalArgs fractal;
   SlopeArgs slope;
+  std::shared_ptr<const DensityGrid> densityFile;  // density_file's voxels and its interpolate 0, 1 or 2
+  int densityInterpolation = 0;
   double frequency = 1, phase = 0;  // a normal's, which ripples and waves read themselves
 };
 

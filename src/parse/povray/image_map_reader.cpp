@@ -1,6 +1,7 @@
 // `image_map { [type] "file" [map_type 0|1|2|5] [interpolate 2|4] [once] [filter all F] [transmit all T]
 // [filter I, F] [transmit I, F] [gamma G] }` (POV-Ray 3.7 manual, "Image Maps"), and a normal's
-// `bump_map { … [bump_size S] [use_index | use_color] }` ("Bump Map").
+// `bump_map { … [bump_size S] [use_index | use_color] }` ("Bump Map"), and the image of a
+// `material_map { [type] "file" [map_type 0|1|2|5] TEXTURE… }` ("Material Maps").
 #include "raytrace/parse/povray/surface_reader.hpp"
 
 #include <algorithm>
@@ -23,8 +24,27 @@ void useIndices(const std::string& path, ImageMap& image) {
   for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i].rgb = Color(float(palette->indices[i]));
 }
 
-// An image_map, or a bump_map when `bump` is given: then bump_size, use_index and use_color are read into it.
-std::shared_ptr<const ImageMap> readImage(const Node& n, ReadingContext& context, BumpMapSettings* bump) {
+// What an image is read for: its colours, a bump_map's heights, or a material_map's texture indices.
+enum class Use { Colours, Bump, Material };
+
+// material_map: each pixel the index of its texture, modulo the `textures` written (the manual's "Material Maps"):
+// a palette image's index, else the 8-bit value of its red channel as the file holds it.
+void materialIndices(const std::string& path, size_t textures, ImageMap& image) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::optional<PaletteImage> palette = paletteIndices(bytes);
+  const bool indexed = palette && palette->indices.size() == image.pixels.size();
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    const long index = indexed ? long(palette->indices[i]) : std::lround(image.pixels[i].rgb.r * 255.0f);
+    image.pixels[i] = {Color(float(size_t(index) % textures)), 0, 0};
+  }
+}
+
+// An image_map, a bump_map (then bump_size, use_index and use_color are read into `bump`) or a material_map's
+// image of `textures` textures, whose texture and transform items the caller has taken out.
+std::shared_ptr<const ImageMap> readImage(const Node& n, ReadingContext& context, Use use, BumpMapSettings* bump,
+                                          size_t textures = 0) {
+  const bool colours = use == Use::Colours;
   static constexpr std::string_view kTypes[] = {"gif", "hdr", "jpeg", "pgm", "png", "ppm", "sys", "tga"};
   static constexpr std::string_view kRefusedTypes[] = {"exr", "iff", "tiff"};
   std::string name;
@@ -57,7 +77,7 @@ std::shared_ptr<const ImageMap> readImage(const Node& n, ReadingContext& context
     if (std::find(std::begin(kRefusedTypes), std::end(kRefusedTypes), w) != std::end(kRefusedTypes)) {
       context.refuse(it.loc, "image_map " + std::string(w));
       refused = true;
-    } else if (w == "once") {
+    } else if (w == "once" && use != Use::Material) {
       settings.once = true;
     } else if (w == "map_type") {
       const double type = number(i, it, "0, 1, 2 or 5");
@@ -70,7 +90,7 @@ std::shared_ptr<const ImageMap> readImage(const Node& n, ReadingContext& context
         context.refuse(it.loc, "image_map map_type " + std::to_string(int(type)));
         refused = true;
       }
-    } else if (w == "interpolate") {
+    } else if (w == "interpolate" && use != Use::Material) {
       const double kind = number(i, it, "2 or 4");
       if (kind == 2 || kind == 4) {
         settings.interpolation = kind == 2 ? ImageMap::Interpolation::Bilinear : ImageMap::Interpolation::NormalizedDistance;
@@ -78,7 +98,7 @@ std::shared_ptr<const ImageMap> readImage(const Node& n, ReadingContext& context
         context.refuse(it.loc, "image_map interpolate " + std::to_string(int(kind)));
         refused = true;
       }
-    } else if (w == "gamma") {
+    } else if (w == "gamma" && colours) {
       if (i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Keyword && n.items[i + 1].word == "srgb") {
         ++i;
         fileGamma = 0;
@@ -86,11 +106,11 @@ std::shared_ptr<const ImageMap> readImage(const Node& n, ReadingContext& context
         fileGamma = number(i, it, "a float or srgb");
         if (!(fileGamma > 0)) throw ParseError(it.loc, "the image map's gamma must be greater than 0");
       }
-    } else if ((w == "filter" || w == "transmit") && i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Keyword &&
+    } else if (colours && (w == "filter" || w == "transmit") && i + 1 < n.items.size() && n.items[i + 1].kind == Item::Kind::Keyword &&
                n.items[i + 1].word == "all") {
       ++i;
       (w == "filter" ? filterAll : transmitAll) = float(number(i, it, "a float"));
-    } else if (w == "filter" || w == "transmit") {
+    } else if (colours && (w == "filter" || w == "transmit")) {
       const int index = int(number(i, it, "a palette index and an amount"));
       channels.push_back({index, w == "transmit", float(number(i, it, "a palette index and an amount"))});
     } else if (bump && w == "bump_size") {
@@ -98,7 +118,7 @@ std::shared_ptr<const ImageMap> readImage(const Node& n, ReadingContext& context
     } else if (bump && (w == "use_index" || w == "use_color" || w == "use_colour")) {
       bump->useIndex = w == "use_index";
     } else {
-      // use_color, use_index, premultiplied …
+      // use_color, use_index, premultiplied; a material_map's once and interpolate …
       context.refuse(it.loc, std::string(n.keyword) + " " + std::string(w));
       refused = true;
     }
@@ -111,9 +131,10 @@ std::shared_ptr<const ImageMap> readImage(const Node& n, ReadingContext& context
   // Before #version 3.7 a file's values are the scene's colours as they are; from 3.7 on they are decoded
   // (sRGB unless `gamma` says otherwise) and put in the scene's working gamma (measured against POV-Ray 3.7).
   // A bump map's file holds linear heights: its values are taken as they are (the manual, "Bump Map").
-  auto image = bump ? std::make_shared<ImageMap>(readImageFile(path, -1, 1, nameAt))
-                    : std::make_shared<ImageMap>(readImageFile(path, working ? fileGamma : -1, working.value_or(1), nameAt, channels));
+  auto image = !colours ? std::make_shared<ImageMap>(readImageFile(path, -1, 1, nameAt))
+                        : std::make_shared<ImageMap>(readImageFile(path, working ? fileGamma : -1, working.value_or(1), nameAt, channels));
   if (bump && bump->useIndex) useIndices(path, *image);
+  if (use == Use::Material) materialIndices(path, textures, *image);
   image->mapping = settings.mapping;
   image->interpolation = settings.interpolation;
   image->once = settings.once;
@@ -127,10 +148,16 @@ std::shared_ptr<const ImageMap> readImage(const Node& n, ReadingContext& context
 
 }  // namespace
 
-std::shared_ptr<const ImageMap> readImageMap(const Node& n, ReadingContext& context) { return readImage(n, context, nullptr); }
+std::shared_ptr<const ImageMap> readImageMap(const Node& n, ReadingContext& context) {
+  return readImage(n, context, Use::Colours, nullptr);
+}
 
 std::shared_ptr<const ImageMap> readBumpMap(const Node& n, ReadingContext& context, BumpMapSettings& settings) {
-  return readImage(n, context, &settings);
+  return readImage(n, context, Use::Bump, &settings);
+}
+
+std::shared_ptr<const ImageMap> readMaterialMapImage(const Node& n, size_t textures, ReadingContext& context) {
+  return readImage(n, context, Use::Material, nullptr, textures);
 }
 
 }  // namespace rt::povray

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "raytrace/surface/density_file.hpp"
 #include "raytrace/surface/patterns.hpp"
 
 namespace rt::povray {
@@ -201,6 +202,19 @@ void readFractalHead(const Node& n, size_t& i, FractalArgs& f) {
                         : (julia ? Set::Magnet2Julia : Set::Magnet2Mandel);
 }
 
+// What follows density_file: `df3 "file"`, the file found as an image map's is and read at once.
+void readDensityFileHead(const Node& n, size_t& i, PatternArgs& args, ReadingContext& context) {
+  const Item& it = n.items[i];
+  const bool df3 = i + 2 < n.items.size() && n.items[i + 1].kind == Item::Kind::Keyword && n.items[i + 1].word == "df3" &&
+                   n.items[i + 2].kind == Item::Kind::Value && n.items[i + 2].value.type == Value::Type::String;
+  if (!df3) throw ParseError(it.loc, "'density_file' needs 'df3' and a file name");
+  i += 2;
+  const Item& name = n.items[i];
+  const std::string path = context.findFile ? context.findFile(name.value.str()) : name.value.str();
+  if (path.empty()) throw ParseError(name.loc, "cannot find the density file \"" + name.value.str() + "\"");
+  args.densityFile = std::make_shared<const DensityGrid>(readDensityFile(path, name.loc));
+}
+
 // A pattern written as a block of its own: `pigment_pattern { … }` or `slope { … }`.
 bool patternBlock(const Item& it) {
   return it.kind == Item::Kind::Node && (it.node->keyword == "pigment_pattern" || it.node->keyword == "slope");
@@ -281,6 +295,7 @@ struct PatternDraft {
       args.hasVector = true;
     }
     if (k->make == makeFractal) readFractalHead(n, i, args.fractal);
+    if (k->make == makeDensityFile) readDensityFileHead(n, i, args, context);
     return makePattern(*k, args);
   }
 
@@ -301,6 +316,15 @@ struct PatternDraft {
       return true;
     }
     if (readTurbulence(n, i, args.turbulence)) {
+      modified = true;
+      return true;
+    }
+    if (w == "interpolate" && kind && kind->make == makeDensityFile) {
+      const Value* v = valueAfter(n, i);
+      if (!v || v->type != Value::Type::Float || (v->v[0] != 0 && v->v[0] != 1 && v->v[0] != 2)) {
+        throw ParseError(it.loc, "the density_file's interpolate must be 0, 1 or 2");
+      }
+      args.densityInterpolation = int(v->v[0]);
       modified = true;
       return true;
     }
@@ -837,6 +861,7 @@ FinishTerms finishTerms(const PovFinish& f, const Surface& s) {
   extras.fadeColor = s.fadeColor;
   extras.caustics = float(s.caustics);
   extras.media = s.media;
+  extras.doubleIlluminate = s.doubleIlluminate;
   if (extras.any()) t.extras = keptExtras(extras);
   t.diffuse = float(f.diffuse);
   // POV-Ray's highlights are white; `specular` has exponent 1/roughness, `phong` its phong_size.
@@ -911,7 +936,8 @@ namespace {
 bool texturePatternIn(const Node& n) {
   return std::any_of(n.items.begin(), n.items.end(), [](const Item& it) {
     return (it.kind == Item::Kind::Keyword && patternKind(it.word)) || isFunction(it) || patternBlock(it) ||
-           (it.kind == Item::Kind::Node && (it.node->keyword == "texture_map" || it.node->keyword == "tiles"));
+           (it.kind == Item::Kind::Node && (it.node->keyword == "texture_map" || it.node->keyword == "tiles" ||
+                                             it.node->keyword == "material_map"));
   });
 }
 
@@ -938,7 +964,27 @@ bool readTiles(const Node& n, TexturePattern& tp, const Surface& defaults, Readi
   return true;
 }
 
-// `texture { checker texture { … } texture { … } }` or `texture { gradient x texture_map { [v texture { … }] … } }`.
+// `material_map { "file" … TEXTURE… TRANSFORMATIONS }`: its textures, and the image's indices as the selector's
+// colours; its transforms move the textures with the image, as a pattern's do.
+void readMaterialMap(const Node& n, TexturePattern& tp, std::vector<TransformStep>& steps, const Surface& defaults,
+                     ReadingContext& context) {
+  Node image;
+  image.keyword = n.keyword;
+  image.loc = n.loc;
+  for (size_t i = 0; i < n.items.size(); ++i) {
+    const Item& it = n.items[i];
+    if (it.kind == Item::Kind::Node && it.node->keyword == "texture") {
+      tp.textures.push_back(subTexture(*it.node, defaults, context));
+    } else if (!readTransform(n, i, steps, context)) {
+      image.items.push_back(it);
+    }
+  }
+  if (tp.textures.empty()) throw ParseError(n.loc, "material_map needs a texture");
+  tp.selector.image = readMaterialMapImage(image, tp.textures.size(), context);
+}
+
+// `texture { checker texture { … } texture { … } }` or `texture { gradient x texture_map { [v texture { … }] … } }`,
+// or `texture { material_map { … } }`.
 std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Surface& defaults, ReadingContext& context) {
   auto tp = std::make_shared<TexturePattern>();
   Pigment& selector = tp->selector;
@@ -968,6 +1014,8 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
     } else if (it.kind == Item::Kind::Node && it.node->keyword == "tiles") {
       if (readTiles(*it.node, *tp, defaults, context)) selector.pattern = makePattern(*patternKind("checker"), {});
       draft = PatternDraft{};
+    } else if (it.kind == Item::Kind::Node && it.node->keyword == "material_map") {
+      readMaterialMap(*it.node, *tp, steps, defaults, context);
     } else if (std::unique_ptr<Pattern> pattern = draft.start(n, i, context)) {
       selector.pattern = std::move(pattern);
       selector.wave = draft.kind->wave;
@@ -978,10 +1026,10 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
   draft.finish(selector.pattern, n.loc, context);
   const int blocks = selector.pattern ? selector.pattern->blocks() : 0;
   for (int b = 0; b < blocks; ++b) selector.list.push_back(solidPigment({Color(float(b)), 0, 0}));
-  if (!selector.pattern) {
-    context.refuse(n.loc, "texture");  // its pattern was refused above
+  if (!selector.pattern && !selector.image) {
+    context.refuse(n.loc, "texture");  // its pattern or material_map was refused above
     tp->textures.assign(1, std::make_shared<const Texture>());
-  } else if (tp->textures.size() < size_t(std::max(blocks, 1)) || (blocks == 0 && selector.map.empty())) {
+  } else if (selector.pattern && (tp->textures.size() < size_t(std::max(blocks, 1)) || (blocks == 0 && selector.map.empty()))) {
     throw ParseError(n.loc, "this texture pattern needs " + std::to_string(std::max(blocks, 1)) +
                                 (blocks ? " textures" : " texture_map"));
   }

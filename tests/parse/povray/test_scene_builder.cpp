@@ -725,8 +725,8 @@ TEST_CASE("povray scene: a camera whose up lies along its direction has right fl
 
 TEST_CASE("povray scene: a shape or group that cannot be drawn yet is refused where it is written", "[povray]") {
   CHECK(failure("union { sphere { 0, 1 }\n ovus { 1, 0.5 } }\n") == "scene.pov:4:2: error: 'ovus' is not supported yet");
-  CHECK(failure("intersection { sphere { 0, 1 } plane { y, 0 } double_illuminate }\n") ==
-        "scene.pov:3:47: error: 'double_illuminate' is not supported yet");
+  CHECK(failure("intersection { sphere { 0, 1 } plane { y, 0 } cutaway_textures }\n") ==
+        "scene.pov:3:47: error: 'cutaway_textures' is not supported yet");
   CHECK(failure("sphere { 0 }\n") == "scene.pov:3:1: error: 'sphere' needs the sphere radius");
   CHECK(failure("sphere { 0, -1 }\n") == "scene.pov:3:13: error: the sphere radius must be greater than 0, found -1");
   CHECK(failure("difference { pigment { Red } }\n") == "scene.pov:3:14: error: expected an object inside 'difference'");

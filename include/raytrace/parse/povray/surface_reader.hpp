@@ -55,6 +55,9 @@ struct BumpMapSettings {
 // `bump_map { [type] "file" … }` (image_map_reader.cpp): its image, its values left linear; nothing when
 // something in it is refused.
 std::shared_ptr<const ImageMap> readBumpMap(const Node& n, ReadingContext& context, BumpMapSettings& settings);
+// The image of a `material_map { [type] "file" [map_type T] … }` without its textures and transforms
+// (image_map_reader.cpp): each pixel's red the index of its texture among `textures`; nothing when refused.
+std::shared_ptr<const ImageMap> readMaterialMapImage(const Node& n, size_t textures, ReadingContext& context);
 
 // `media { … }` in an interior (media_reader.cpp); nothing when something in it is refused.
 std::optional<Media> readMedia(const Node& n, ReadingContext& context);
@@ -118,6 +121,7 @@ struct Surface {
   double caustics = 0;         // the interior's faked caustics (Material)
   std::optional<Media> media;  // the interior's (Material)
   bool uvMapped = false;       // uv_mapping in the object, or in one of its pigments, normals or textures
+  bool doubleIlluminate = false;  // the object's double_illuminate (Material)
   std::shared_ptr<const Surface> inside;  // the interior_texture's, seen from inside (Texture::interior)
   bool patterned() const;  // whether some layer's colour varies, or there are layers: a Texture is needed
 };
