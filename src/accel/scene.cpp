@@ -24,7 +24,12 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
     if (l.parallelTo && glm::length(l.position - *l.parallelTo) > 0) {
       light.parallel = Vec3<T>(glm::normalize(l.position - *l.parallelTo));
     }
-    light.sampled = light.area || light.parallel;
+    const size_t index = lights_.size() - 1;
+    if (index < desc.projectedThrough.size() && desc.projectedThrough[index]) {
+      through_.resize(desc.projectedThrough.size());
+      through_[index] = makeObject<T>(*desc.projectedThrough[index], arithmetic.sphere, 0, false);
+    }
+    light.sampled = light.area || light.parallel || projected(index);
   }
   const bool course = arithmetic.tier == Tier::Course;
   const size_t n = desc.objects.size();

@@ -19,10 +19,11 @@ Camera<T>::Camera(const CameraDesc& desc, int width, int height)
       right_(desc.rightFollowsImage ? desc.right * (double(width) / height) : desc.right),
       up_(desc.up),
       forward_(glm::normalize(Vec3<T>(desc.lookAt - desc.location))),
-      perspective_(desc.projection == &perspectiveProjection()),
+      perspective_(desc.projection == &perspectiveProjection() && !desc.normal),
       hasBlanks_(desc.projection->blanks),
       projection_(desc.projection->ray),
       mesh_(desc.mesh),
+      normal_(desc.normal),
       frame_{desc.location, desc.rightFollowsImage ? desc.right * (double(width) / height) : desc.right, desc.up,
              glm::normalize(desc.lookAt - desc.location), desc.directionLength, desc.angle, desc.verticalAngle,
              mesh_.get(), width, height},
@@ -69,7 +70,9 @@ template <class T> Ray<T> Camera<T>::throughLens(const Ray<T>& pinhole, glm::vec
 template <class T> Ray<T> Camera<T>::projected(T us, T vs) const {
   const std::optional<EyeRay> eye = projection_(frame_, double(us), double(vs));
   if (!eye) return Ray<T>{origin_, Vec3<T>(0)};
-  return Ray<T>{Vec3<T>(eye->origin), Vec3<T>(glm::normalize(eye->dir))};
+  glm::dvec3 dir = glm::normalize(eye->dir);
+  if (normal_) dir = normal_->bent(dir, glm::dvec3(us, vs, 0), glm::dmat3(1));
+  return Ray<T>{Vec3<T>(eye->origin), Vec3<T>(dir)};
 }
 
 template <class T> Ray<T> Camera<T>::meshRay(int x, int y, int k) const {

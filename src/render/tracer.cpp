@@ -664,14 +664,15 @@ template <class T> struct Tracer<T>::MediaLighting final : MediaLights {
         const double length = glm::length(fromLight);
         color *= light.shape->at(fromLight / length, length);
       }
-      if (!light.shadowless && distance > T(0)) {
+      if ((!light.shadowless || tracer.scene_.projected(i)) && distance > T(0)) {
         const Ray<T> ray{p, l};
-        const Interval<T> segment{T(0), distance};
-        if (tracer.filteredShadows_) {
-          color *= tracer.transmittance(ray, segment);
-        } else {
+        const std::optional<Interval<T>> segment = tracer.scene_.reaching(i, ray, Interval<T>{T(0), distance});
+        if (!segment) continue;
+        if (!light.shadowless && tracer.filteredShadows_) {
+          color *= tracer.transmittance(ray, *segment);
+        } else if (!light.shadowless) {
           ++tracer.counts_.shadow;
-          if (tracer.scene_.occluded(ray, segment, &tracer.lastOccluder_[i])) color = Color(0);
+          if (tracer.scene_.occluded(ray, *segment, &tracer.lastOccluder_[i])) color = Color(0);
         }
       }
       if (color != Color(0)) out.push_back({glm::dvec3(l), color});
@@ -762,13 +763,16 @@ bool Tracer<T>::sampledLight(const Hit<T>& hit, const Vec3<T>& n, const Light<T>
   out.occluded = false;
   // With area_illumination a grid point above the surface's horizon may light it while the centre is below.
   const bool lit = out.nl > 0.0f || (light.area && light.area->illumination);
-  if (!lit || light.shadowless) return lit;
+  if (!lit || (light.shadowless && !scene_.projected(index))) return lit;
   const bool beyond = light.parallel && !(glm::dot(light.position - hit.point, *light.parallel) > T(0));
   // What reaches the point from `at` along a shadow ray: all, none, or through transparent surfaces.
-  const auto seen = [&](const Ray<T>& ray, const Interval<T>& segment) {
-    if (filteredShadows_) return transmittance(ray, segment);
+  const auto seen = [&](const Ray<T>& ray, const Interval<T>& whole) {
+    const std::optional<Interval<T>> segment = scene_.reaching(index, ray, whole);
+    if (!segment) return Color(0);
+    if (light.shadowless) return Color(1);
+    if (filteredShadows_) return transmittance(ray, *segment);
     ++counts_.shadow;
-    return scene_.occluded(ray, segment, &lastOccluder_[index]) ? Color(0) : Color(1);
+    return scene_.occluded(ray, *segment, &lastOccluder_[index]) ? Color(0) : Color(1);
   };
   Color share(1);
   if (!light.area) {

@@ -5,6 +5,7 @@
 
 #include "raytrace/render/camera.hpp"
 #include "raytrace/util/format.hpp"
+#include "../support/pov_scene.hpp"
 
 namespace {
 
@@ -257,4 +258,21 @@ TEMPLATE_TEST_CASE("camera: a fisheye draws nothing outside its circle, an omnim
   CHECK_FALSE(omnimax.blank(omnimax.pixelRay(5, 0)));
   c.projection = rt::projectionNamed("panoramic");
   CHECK_FALSE(rt::Camera<TestType>(c, 16, 12).hasBlanks());
+}
+
+TEMPLATE_TEST_CASE("camera: a normal bends each eye ray as a surface's, read at the picture's point", "", float,
+                   double) {
+  // gradient x's slope, sampled on POV-Ray's four points about the picture's point, is (2/15, 0, 0) for a
+  // normal of amount 1: the unit direction less it, made unit again. POV-Ray's picture of a plane at z = 10
+  // coloured by x (16-bit, gamma 1): the 80×60 picture's pixel (40, 30) meets it at x = −1.2088, 0.1248 plain.
+  const rt::SceneDesc scene = rt::test::pov(R"(
+camera { location 0 direction z right x*4/3 up y look_at z angle 90 normal { gradient x 1 translate 0.25*x } })");
+  const rt::Camera<TestType> cam(scene.camera, 80, 60);
+  const rt::Ray<TestType> ray = cam.pixelRay(40, 29);  // row 30 from the top
+  rt::CameraDesc plain = scene.camera;
+  plain.normal = nullptr;
+  const glm::dvec3 d = glm::normalize(glm::dvec3(rt::Camera<double>(plain, 80, 60).pixelRay(40, 29).dir));
+  checkDir(ray, glm::normalize(d - glm::dvec3(2.0 / 15, 0, 0)));
+  CHECK(10 * double(ray.dir.x) / double(ray.dir.z) == Approx(-1.2088).margin(0.001));
+  CHECK(10 * d.x / d.z == Approx(0.1248).margin(0.001));
 }

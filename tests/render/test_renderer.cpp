@@ -357,6 +357,35 @@ sphere { <-1.5, 1, -0.5>, 1 pigment { rgb <0.2, 0.5, 1> } finish { diffuse 0.7 p
   }
 }
 
+TEST_CASE("projected_through: a light reaches the floor only through its window, shadowed only below it",
+          "[render]") {
+  // The pixels' bytes from `povray +W40 +H30 -A` of this scene, kept as data: the floor is lit in the disc the
+  // window sphere projects (250), dimly elsewhere by the shadowless light (104); the box above the window casts
+  // no shadow, the small sphere below it does (111).
+  const std::string text = R"(#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 8, -6> look_at <0, 0, 0> angle 50 }
+#declare Window = sphere { <0, 3, 0>, 1 };
+light_source { <0, 6, 0> rgb 1 projected_through { Window } }
+light_source { <0, 6, 0> rgb 0.2 shadowless }
+plane { y, 0 pigment { rgb 0.8 } finish { diffuse 1 ambient 0 } }
+box { <-0.3, 4.5, -0.3>, <0.3, 4.7, 0.3> pigment { rgb <1, 0.3, 0.2> } finish { ambient 0 } }
+sphere { <0.8, 0.8, 0>, 0.3 pigment { rgb <0.2, 0.5, 1> } finish { ambient 0 } }
+)";
+  const SceneDesc scene = povray::parsePovRay(text, "window.pov", povray::PovRayOptions{{}, 40, 30, false});
+  Rgb8Image image = renderRgb8(scene, 40, 30, {});
+  struct Pixel {
+    int x, y;  // y counted from the top, as in the PNG
+    int grey;
+  };
+  const Pixel povray[] = {{20, 15, 250}, {4, 15, 104}, {24, 15, 111}, {24, 14, 111}, {22, 13, 0}, {20, 4, 103}};
+  for (const Pixel& p : povray) {
+    const unsigned char* rgb = image.at(p.x, 29 - p.y);
+    INFO("pixel " << p.x << ", " << p.y);
+    for (int c = 0; c < 3; ++c) CHECK(std::abs(int(rgb[c]) - p.grey) <= 2);
+  }
+}
+
 TEST_CASE("crand lowers each point's diffuse light by crand·u·C·light, 0 ≤ u < 1, whatever n·l", "[render]") {
   // A wall of pigment 0.8 lit at n·l = 1 by a light of 0.5: ambient 0.08 + diffuse 0.5·0.5·0.8 = 0.28, less up
   // to 0.4·0.5·0.8 = 0.16 (POV-Ray's picture: 0.1195 to 0.2789).

@@ -2,7 +2,7 @@
 # A one-node Slurm cluster on this machine, started in a private folder, that runs the tile array job and the
 # merge job of submit.sh end to end on a scene, checks the image against the one-machine render byte for byte,
 # then the frames array job (render-frames.sbatch) on a 4-frame animation of its own against the one-machine
-# animation, and stops the cluster again. Needs Debian's slurm-wlm and munge; runs as root (Slurm's daemons then run as
+# animation, then the same animation as frames × tiles (submit.sh --frames 0-3 -n 2), and stops the cluster. Needs Debian's slurm-wlm and munge; runs as root (Slurm's daemons then run as
 # root too) or as any user who may run munged and slurmd.
 #
 #   tools/slurm/local-cluster.sh [--tiles N] [--keep DIR] RAYTRACE SCENE WIDTH HEIGHT [render options]
@@ -164,3 +164,31 @@ echo '#declare Orange = rgb <1, 0.5, 0.2>;' >spin.inc
 frames
 said "is stale: 'spin.inc' has changed: rendering it" 4
 echo "local-cluster: frames resubmitted after a deleted frame and an edited include; the one-machine bytes ($((SECONDS - start)) s in all)"
+
+# Frames × tiles: the same animation, 2 tiles a frame (8 tasks), then a merge task per frame; resubmitted after
+# a frame's image is deleted (that frame alone is merged again, its tiles kept) and after the include is edited.
+# A fresh start: the stamps of the frames above are of other switches.
+rm -rf frames.stamps
+mkdir -p tiled
+tiled() {
+  rm -f frame-*.log
+  RAYTRACE=$raytrace "$here/submit.sh" --frames 0-3 -n 2 --wait -- "${switches[@]}" +Otiled/spin >/dev/null
+  "$raytrace" "${switches[@]}" +Oone/spin
+  for f in 0 1 2 3; do cmp "one/spin$f.png" "tiled/spin$f.png"; done
+  cat frame-*.log
+}
+tiled
+said "is not rendered yet: rendering its tile" 8
+said "is not rendered yet: merging its tiles" 4
+echo "local-cluster: 4 frames of 2 tile tasks each and a merge task per frame give the one-machine animation's bytes"
+rm tiled/spin1.png
+tiled
+grep -qx "frame 1 is stale: 'tiled/spin1.png' is missing: merging its tiles" frame-1.log ||
+  { echo "local-cluster: frame 1 not merged again" >&2; exit 1; }
+said "is already this tile: kept" 2
+said "is already this render: kept" 9
+echo '#declare Orange = rgb <1, 0.3, 0.2>;' >spin.inc
+tiled
+said "is stale: 'spin.inc' has changed: rendering its tile" 8
+said "is stale: 'spin.inc' has changed: merging its tiles" 4
+echo "local-cluster: frames × tiles resubmitted after a deleted frame and an edited include; the one-machine bytes ($((SECONDS - start)) s in all)"

@@ -61,6 +61,17 @@ template <class T> class Scene {
   const SceneDesc& desc() const { return desc_; }
   const Arithmetic& arithmetic() const { return arithmetic_; }
   const std::vector<Light<T>>& lights() const { return lights_; }
+  // projected_through (POV-Ray 3.7 manual, "Projected_Through"): whether light l has an object, and the part of
+  // a shadow ray's `segment` toward it that may shadow the point, or nothing where the light cannot reach it: a
+  // ray that misses the object brings no light, and only what lies before the object casts a shadow. Such a
+  // light is sampled.
+  bool projected(size_t l) const { return l < through_.size() && through_[l]; }
+  std::optional<Interval<T>> reaching(size_t l, const Ray<T>& ray, Interval<T> segment) const {
+    if (!projected(l)) return segment;
+    const std::optional<Hit<T>> met = through_[l]->intersect(ray, segment);
+    if (!met) return std::nullopt;
+    return Interval<T>{segment.min, met->t};
+  }
   const std::vector<std::unique_ptr<Object<T>>>& objects() const { return objects_; }
   // The hierarchy over the bounded objects, or nothing when every object is tested in turn.
   const std::optional<Bvh<T>>& hierarchy() const { return hierarchy_; }
@@ -75,6 +86,7 @@ template <class T> class Scene {
   std::vector<Light<T>> lights_;
   std::vector<LightShape> shapes_;  // lights_[i].shape points into it
   std::vector<AreaLight> areas_;    // and lights_[i].area into this
+  std::vector<std::unique_ptr<Object<T>>> through_;  // by light, as SceneDesc::projectedThrough
   std::vector<std::unique_ptr<Object<T>>> objects_;
   std::vector<const Object<T>*> scanned_;  // tested one by one in file order: planes, or all without hierarchy
   std::optional<Bvh<T>> hierarchy_;

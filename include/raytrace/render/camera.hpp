@@ -58,14 +58,16 @@ template <class T> class Camera {
   int height() const { return height_; }
 
  private:
-  // The eye ray of the projections other than the perspective one (scene/projection.hpp), in double; out of
-  // the way of the perspective one, which every course scene takes.
+  // The eye ray of the projections other than the perspective one (scene/projection.hpp), in double, bent by
+  // the camera's normal if it has one; out of the way of the plain perspective one, which every course scene
+  // takes.
   [[gnu::cold]] Ray<T> projected(T us, T vs) const;
 
   Vec3<T> origin_, right_, up_, forward_;
   bool perspective_, hasBlanks_;
   ProjectionRay projection_;
   std::shared_ptr<const MeshCamera> mesh_;  // held here: frame_ points into it
+  std::shared_ptr<const Normal> normal_;
   ProjectionFrame frame_;
   CameraDesc::FocalBlur blur_;
   T lensRadius_, focalDistance_;

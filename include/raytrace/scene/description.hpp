@@ -17,6 +17,7 @@
 #include "raytrace/shapes/shape_desc.hpp"
 #include "raytrace/surface/environment.hpp"
 #include "raytrace/surface/material.hpp"
+#include "raytrace/surface/normal.hpp"
 
 namespace rt {
 
@@ -36,6 +37,9 @@ struct CameraDesc {
   // Radians, for the projections that take them; the direction's length as written (panoramic reads it).
   double angle = 0, verticalAngle = 0, directionLength = 1;
   std::shared_ptr<const MeshCamera> mesh;  // the mesh_camera's faces, with the mesh_camera projection
+  // POV-Ray's camera `normal { … }` (manual, "Camera Ray Perturbation"): bends every eye ray's unit direction
+  // as a surface's normal, read at (Us, Vs, 0), the picture's point as Camera::ray() names it (measured).
+  std::shared_ptr<const Normal> normal;
   // POV-Ray's focal blur (manual, "Focal Blur"): on when aperture and maxSamples are both positive.
   struct FocalBlur {
     double aperture = 0;
@@ -106,6 +110,9 @@ struct SceneDesc {
   std::string file;
   SceneLanguage language = SceneLanguage::Pov;  // only reports that quote the file's own terms look at it
   CameraDesc camera;
+  // Each light's projected_through object by the light's index (POV-Ray 3.7 manual, "Projected_Through"): the
+  // light reaches a point only through it. Empty when no light has one: plain lights pay nothing for it.
+  std::vector<std::shared_ptr<const ObjectDesc>> projectedThrough;
   std::vector<LightDesc> lights;
   std::vector<ObjectDesc> objects;
   Dialect dialect = Dialect::course();  // the language's shading rules, chosen by its parser

@@ -1,6 +1,6 @@
 // `light_source { … }` (POV-Ray 3.7 manual, "Light Sources"): a point light, or one of the emitter kinds of
-// lightKinds() (scene/light_kind.hpp), with the parallel, area, fading and shadowless modifiers; what else a
-// light may say is refused.
+// lightKinds() (scene/light_kind.hpp), with the parallel, area, fading, shadowless and projected_through
+// modifiers; what else a light may say is refused.
 #include "raytrace/parse/povray/light_reader.hpp"
 
 #include <algorithm>
@@ -30,10 +30,11 @@ AreaDesc areaLight(const Node& n, size_t& i, AreaDesc area) {
 
 }  // namespace
 
-void readLight(const Node& n, LightDesc& l, ReadingContext& context, const LooksLike& looksLikeAt) {
+void readLight(const Node& n, LightDesc& l, ReadingContext& context, const LooksLike& looksLikeAt,
+               const ProjectedThrough& projectedThrough) {
   size_t i = 0;
   if (i < n.items.size() && n.items[i].kind == Item::Kind::Node && n.items[i].node->keyword == "light_source") {
-    readLight(*n.items[i++].node, l, context, looksLikeAt);
+    readLight(*n.items[i++].node, l, context, looksLikeAt, projectedThrough);
   }
   if (i < n.items.size() && n.items[i].kind == Item::Kind::Value) l.position = vec3(n.items[i++].value);
   if (i < n.items.size() && n.items[i].kind == Item::Kind::Value) l.color = colourOf(n.items[i++].value).rgb;
@@ -49,12 +50,17 @@ void readLight(const Node& n, LightDesc& l, ReadingContext& context, const Looks
   std::optional<double> radius, falloff;
   const Item* tightness = nullptr;
   const Node* looksLike = nullptr;
+  const Node* through = nullptr;
   std::optional<bool> illumination;
   for (; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     if (readTransform(n, i, steps, context)) continue;
     if (it.kind == Item::Kind::Node && it.node->keyword == "looks_like") {
       looksLike = it.node.get();
+      continue;
+    }
+    if (it.kind == Item::Kind::Node && it.node->keyword == "projected_through") {
+      through = it.node.get();
       continue;
     }
     if (it.kind != Item::Kind::Keyword) {
@@ -114,6 +120,8 @@ void readLight(const Node& n, LightDesc& l, ReadingContext& context, const Looks
   if (isArea && illumination) grid.illumination = *illumination;
   if (isArea) l.area = std::make_shared<const AreaDesc>(grid);
   if (looksLike) looksLikeAt(*looksLike, l.position, steps);
+  if (through && !steps.empty()) context.refuse(n.loc, "projected_through in a light with transforms");
+  if (through) projectedThrough(*through);
   moveLight(l, composeTransforms<double>(steps));
 }
 

@@ -695,6 +695,7 @@ class Builder {
     std::vector<TransformStep> steps;
     CameraDesc::FocalBlur blur;
     std::shared_ptr<MeshCamera> mesh;
+    std::shared_ptr<const Normal> normal;
   };
 
   // POV-Ray's camera: defaults, then angle sets the direction's length, look_at turns direction, right and up
@@ -742,9 +743,11 @@ class Builder {
     c.angle = glm::radians(k.angle.value_or(k.projection->defaultAngle));
     c.verticalAngle = spherical ? glm::radians(k.verticalAngle.value_or(glm::degrees(c.angle) / 2))
                                 : c.angle * glm::length(up) / glm::length(right);
+    c.normal = k.normal;
     c.focalBlur = k.blur;
     c.focalBlur.focalPoint = glm::dvec3(m * glm::dvec4(k.blur.focalPoint, 1));
     c.loc = n.loc;
+    if (k.mesh && k.normal) refuse(n.loc, "a mesh_camera's normal");
     if (k.mesh) {
       // A mesh camera reads only the z of the location and of the direction (manual, "Mesh projection").
       k.mesh->offset = k.location.z;
@@ -822,6 +825,10 @@ class Builder {
         meshCamera(*it.node, k);
         continue;
       }
+      if (it.kind == Item::Kind::Node && it.node->keyword == "normal") {
+        k.normal = aloneNormal(*it.node, context_);
+        continue;
+      }
       if (it.kind == Item::Kind::Keyword && it.word == "smooth" && k.mesh) {
         k.mesh->smooth = true;
         continue;
@@ -884,8 +891,34 @@ class Builder {
     readLight(n, l, context_,
               [this](const Node& looksLike, const glm::dvec3& position, const std::vector<TransformStep>& steps) {
                 lookLike(looksLike, position, steps);
+              },
+              [this](const Node& block) {
+                const size_t index = scene_.lights.size();
+                if (scene_.projectedThrough.size() <= index) scene_.projectedThrough.resize(index + 1);
+                scene_.projectedThrough[index] = projectedThrough(block);
               });
     scene_.lights.push_back(l);
+  }
+
+  // A light's projected_through object, which is not drawn: its shape alone, with no texture or interior
+  // (POV-Ray 3.7 manual, "Projected_Through"). A light inside an object would move it with that object: refused.
+  std::shared_ptr<const ObjectDesc> projectedThrough(const Node& n) {
+    if (nestedLight_) {
+      refuse(n.loc, "projected_through in a light inside an object");
+      return nullptr;
+    }
+    std::shared_ptr<const ObjectDesc> through;
+    for (const Item& it : n.items) {
+      if (!isObject(it) || through) {
+        if (through) throw ParseError(it.loc, "projected_through takes one object");
+        refuseItem(it, " in projected_through");
+        continue;
+      }
+      ObjectDesc o;
+      if (object(*it.node, o)) through = std::make_shared<const ObjectDesc>(std::move(o));
+    }
+    if (!through && !context_.firstRefusal) throw ParseError(n.loc, "projected_through needs an object");
+    return through;
   }
 
   // A light's looks_like object: drawn about the light's position and moved with it, casting no shadow

@@ -911,6 +911,10 @@ std::shared_ptr<const Pigment> nestedPigment(const Node& n, ReadingContext& cont
   return p;
 }
 
+std::shared_ptr<const Normal> aloneNormal(const Node& n, ReadingContext& context) {
+  return nestedNormal(n, Normal{}, context);
+}
+
 std::shared_ptr<const Pigment> patternPigment(const Node& n, ReadingContext& context) {
   auto p = std::make_shared<Pigment>();
   std::vector<TransformStep> steps;

@@ -307,6 +307,34 @@ TEST_CASE("povray scene: light modifiers that are not drawn yet are refused wher
         "scene.pov:3:34: error: 'a cylinder light's tightness' is not supported yet");
   CHECK(failure("light_source { 0, White area_light x, z, 2 }\n") ==
         "scene.pov:3:25: error: 'area_light' needs two axes and two sizes");
+  CHECK(failure("union { sphere { 0, 1 } light_source { 0, White projected_through { sphere { 0, 1 } } } }\n") ==
+        "scene.pov:3:49: error: 'projected_through in a light inside an object' is not supported yet");
+  CHECK(failure("light_source { 0, White projected_through { sphere { 0, 1 } } translate x }\n") ==
+        "scene.pov:3:1: error: 'projected_through in a light with transforms' is not supported yet");
+  CHECK(failure("light_source { 0, White projected_through { } }\n") ==
+        "scene.pov:3:25: error: projected_through needs an object");
+  CHECK(failure("light_source { 0, White projected_through { sphere { 0, 1 } box { 0, 1 } } }\n") ==
+        "scene.pov:3:61: error: projected_through takes one object");
+}
+
+TEST_CASE("povray scene: a camera's normal is kept with the camera; a mesh_camera's is refused", "[povray]") {
+  const SceneDesc s = scene("camera { location -5*z look_at 0 normal { bumps 0.4 scale 0.1 } }\n");
+  REQUIRE(s.camera.normal);
+  CHECK(s.camera.normal->amount == 0.4);
+  CHECK(failure("camera { mesh_camera { 1 0 mesh { triangle { 0, x, y } } } normal { bumps 0.4 } }\n") ==
+        "scene.pov:3:1: error: 'a mesh_camera's normal' is not supported yet");
+}
+
+TEST_CASE("povray scene: a light's projected_through object is kept with the light and not drawn", "[povray]") {
+  const SceneDesc s = scene(R"(
+#declare Window = sphere { <0, 3, 0>, 1 pigment { rgb 1 } };
+light_source { <0, 6, 0> White projected_through { Window } }
+)");
+  REQUIRE(s.lights.size() == 1);
+  REQUIRE(s.projectedThrough.size() == 1);
+  REQUIRE(s.projectedThrough[0]);
+  CHECK(std::holds_alternative<SphereDesc>(s.projectedThrough[0]->shape));
+  CHECK(s.objects.empty());
 }
 
 TEST_CASE("povray scene: a finish's emission is added to its ambient, which alone ambient_light scales; an "

@@ -14,8 +14,12 @@ namespace rt::povray {
 using LooksLike =
     std::function<void(const Node& looksLike, const glm::dvec3& position, const std::vector<TransformStep>& steps)>;
 
+// What the scene builder does with a light's projected_through block: keeps its object for the light.
+using ProjectedThrough = std::function<void(const Node& block)>;
+
 // A light's items into `l`, moved by its transforms: an identifier's first, then the ones that follow it.
-void readLight(const Node& n, LightDesc& l, ReadingContext& context, const LooksLike& looksLikeAt);
+void readLight(const Node& n, LightDesc& l, ReadingContext& context, const LooksLike& looksLikeAt,
+               const ProjectedThrough& projectedThrough);
 
 // The light moved by `m`: its position, its spotlight's point_at, its parallel light's point and its area's axes.
 void moveLight(LightDesc& l, const glm::dmat4& m);

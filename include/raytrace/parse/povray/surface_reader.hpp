@@ -129,6 +129,9 @@ struct Surface {
 // A pigment block on its own, its transforms folded into its fromTexture: a map's or a list's entry, a sky's layer.
 std::shared_ptr<const Pigment> nestedPigment(const Node& n, ReadingContext& context);
 
+// A normal block on its own, its transforms folded into its fromTexture: a camera's.
+std::shared_ptr<const Normal> aloneNormal(const Node& n, ReadingContext& context);
+
 // The `pattern { … }` of a pattern function as a pigment without colours, whose value() the function returns.
 std::shared_ptr<const Pigment> patternPigment(const Node& n, ReadingContext& context);
 
