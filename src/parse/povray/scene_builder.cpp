@@ -558,7 +558,7 @@ class Builder {
           o.noRadiosity = true;
         } else if (it.word == "double_illuminate") {
           const Value* v = valueAfter(n, i);
-          s.doubleIlluminate = !v || v->v[0] != 0;
+          s.get().doubleIlluminate = !v || v->v[0] != 0;
         } else if (it.word == "open" && open(o.shape)) {  // set on the kinds that have ends to leave off
         } else if (it.word == "sturm") {
           const Value* v = valueAfter(n, i);
