@@ -603,7 +603,7 @@ template <class T> Color Tracer<T>::transmittance(const Ray<T>& ray, Interval<T>
   Color through(1);
   for (int k = 0; k < kMaxShadowCrossings; ++k) {
     ++counts_.shadow;
-    const std::optional<Hit<T>> hit = scene_.closestHit(ray, segment);
+    const std::optional<Hit<T>> hit = scene_.closestHit(ray, segment, Sight::Shadow);
     if (!hit) return through;
     Material textured;
     Vec3<T> n = hit->normal;

@@ -30,9 +30,9 @@ template <class T> struct Light {
 
 // Which objects a ray sees (POV-Ray's no_image, no_reflection and no_radiosity, §3.4.5.5 "No_Image,
 // No_Reflection"): an image ray (the eye's, or one refracted from it) does not see no_image objects, a ray
-// reflected on its way does not see no_reflection ones, a gathered ray (-gi) no no_radiosity ones; shadows
-// through transparent surfaces see all.
-enum class Sight { All, Image, Reflected, Gathered };
+// reflected on its way does not see no_reflection ones, a gathered ray (-gi) no no_radiosity ones; a shadow
+// ray through transparent surfaces no no_shadow ones (POV-Ray's pictures).
+enum class Sight { All, Image, Reflected, Gathered, Shadow };
 
 template <class T> class Scene {
  public:
@@ -89,8 +89,10 @@ template <class T> class Scene {
   std::optional<Subset> imaged_, reflected_, gathered_;
   // The subset a ray of that sight asks, or null for all the objects.
   const Subset* seen(Sight sight) const {
-    const std::optional<Subset>& part =
-        sight == Sight::Image ? imaged_ : sight == Sight::Reflected ? reflected_ : gathered_;
+    const std::optional<Subset>& part = sight == Sight::Image       ? imaged_
+                                        : sight == Sight::Reflected ? reflected_
+                                        : sight == Sight::Shadow    ? casters_
+                                                                    : gathered_;
     return sight != Sight::All && part ? &*part : nullptr;
   }
 };
