@@ -41,11 +41,13 @@ struct SurfaceExtras {
   bool reflectionFresnel = false;
   // The interior's medium, which a ray that enters the object crosses up to its next hit.
   std::optional<Media> media;
+  // POV-Ray's `hollow`: media are seen only inside hollow objects (the manual, "Empty and Solid Objects").
+  bool hollow = false;
 
   // Whether any of them changes a picture.
   bool any() const {
     return fadeDistance > 0 || caustics != 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0 ||
-           media.has_value();
+           media.has_value() || hollow;
   }
 };
 
