@@ -110,7 +110,7 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
       const float reflection = std::max(m.reflection, m.extras->reflectionMin);
       gain = std::max(gain, ((1 - m.filter) * reflection + m.filter) * std::max(1.0f, brightest(m.pigment)));
       filteredShadows_ = filteredShadows_ || (dialect_.filtersShadows() && m.filter > 0);
-      media_ = media_ || m.extras->media.has_value();
+      interiors_ = interiors_ || fogs_ || m.extras->media.has_value();
     });
   }
   // What a ray that leaves the scene brings back; fogs add their colours (throughFogs).
@@ -333,7 +333,7 @@ typename Tracer<T>::Traced Tracer<T>::follow(const Ray<T>& ray, const std::optio
     if (record) record->color = sky;
     return {sky, std::numeric_limits<T>::infinity()};
   }
-  if (media_) return followInMedia(ray, *hit, kind, path, record, shadows);
+  if (interiors_) return followInMedia(ray, *hit, kind, path, record, shadows);
   Color color = shade(ray, *hit, path, record, shadows);
   if (fogs_) color = fogged(color, ray, hit->t);
   color = dialect_.bounced(color);
@@ -341,8 +341,9 @@ typename Tracer<T>::Traced Tracer<T>::follow(const Ray<T>& ray, const std::optio
   return {color, hit->t};
 }
 
-// follow() in a scene with media: an eye ray starts in the interiors around its origin, and the colour from the
-// hit is seen through the media of those the ray is in.
+// follow() in a scene with media or fog: an eye ray starts in the interiors around its origin, and the colour
+// from the hit is seen through the media of those the ray is in. Fog, as media, fills hollow objects alone (the
+// manual, "Empty and Solid Objects"): a ray in a solid one is not fogged.
 template <class T>
 [[gnu::noinline]] typename Tracer<T>::Traced Tracer<T>::followInMedia(const Ray<T>& ray, const Hit<T>& hit,
                                                                     RayRecord::Kind kind, const Path& path,
@@ -351,7 +352,7 @@ template <class T>
   Path within = path;
   if (kind == RayRecord::Kind::Primary && path.depth == 0 && path.bounce == 0) within.interiors = eyeInteriors(ray.origin);
   Color color = shade(ray, hit, within, record, shadows);
-  if (fogs_) color = fogged(color, ray, hit.t);
+  if (fogs_ && hollow(within.interiors)) color = fogged(color, ray, hit.t);
   color = dialect_.bounced(color);
   // Gathered rays see no media (POV-Ray's radiosity `media` is off by default: the manual, "Radiosity").
   if (within.interiors && path.bounce == 0) color = throughMedia(within.interiors, color, ray, hit.t);
@@ -685,6 +686,20 @@ template <class T> struct Tracer<T>::MediaLighting final : MediaLights {
 // The manual's "Empty and Solid Objects": media are only inside hollow objects. Measured with POV-Ray 3.7: a
 // ray's media (those of all the interiors it is in, adding up) count only while every interior it is in is
 // hollow; a solid object inside a medium, or around it, takes its place.
+// The numbers of CSG interiors (1, 2, …) are no object's or medium's address.
+template <class T> uintptr_t Tracer<T>::interiorKey(const Object<T>& object) {
+  const SurfaceExtras& extras = *object.material().extras;
+  if (extras.media) return reinterpret_cast<uintptr_t>(&*extras.media);
+  return extras.interior != 0 ? extras.interior : reinterpret_cast<uintptr_t>(&object);
+}
+
+template <class T> bool Tracer<T>::hollow(const InteriorLink* interiors) {
+  for (const InteriorLink* link = interiors; link; link = link->outer) {
+    if (!link->hollow) return false;
+  }
+  return true;
+}
+
 template <class T>
 [[gnu::noinline]] Color Tracer<T>::throughMedia(const InteriorLink* interiors, const Color& color, const Ray<T>& ray,
                                                 T t) {
@@ -712,8 +727,7 @@ template <class T> const typename Tracer<T>::InteriorLink* Tracer<T>::eyeInterio
       if (bounds && (glm::any(glm::lessThan(origin, bounds->min)) || glm::any(glm::greaterThan(origin, bounds->max)))) continue;
       if (!object->inside(origin)) continue;
       const SurfaceExtras& extras = *object->material().extras;
-      const Media* medium = extras.media ? &*extras.media : nullptr;
-      eyeInteriors_.push_back({medium ? static_cast<const void*>(medium) : object.get(), object.get(), medium,
+      eyeInteriors_.push_back({interiorKey(*object), object.get(), extras.media ? &*extras.media : nullptr,
                                extras.hollow, true, nullptr});
     }
     for (size_t i = 1; i < eyeInteriors_.size(); ++i) eyeInteriors_[i].outer = &eyeInteriors_[i - 1];
@@ -730,7 +744,7 @@ template <class T>
                                                              const Path& child, RayRecord* record) {
   const SurfaceExtras& extras = *hit.object->material().extras;
   const Media* medium = extras.media ? &*extras.media : nullptr;
-  const void* key = medium ? static_cast<const void*>(medium) : hit.object;
+  const uintptr_t key = interiorKey(*hit.object);
   const auto find = [&](const auto& left) {
     const InteriorLink* found = child.interiors;
     while (found && !left(*found)) found = found->outer;
@@ -772,7 +786,7 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
     ++counts_.secondary;
     // In a scene with media, the ray enters or leaves the object's interior (Path::interiors).
     const Ray<T> refractedRay = spawnRay(hit, *refracted, *scene_.arithmetic().offset);
-    const Traced t = media_ ? across(refractedRay, hit, child, sub)
+    const Traced t = interiors_ ? across(refractedRay, hit, child, sub)
                             : trace(refractedRay, RayRecord::Kind::Refraction, child, sub);
     Color gathered = transmitTint * t.color;
     if (entering && options_.beers) gathered *= beerAttenuation(m.pigment, float(t.distance));

@@ -588,6 +588,8 @@ TEST_CASE("Media are seen along a ray only while every interior it is in is holl
       {box + "union { sphere { 0, 0.5 } sphere { z * 0.3, 0.5 } hollow" + clear + "interior { media { emission 0.2 } } }", 0.32000},
       {box + "merge { sphere { 0, 0.5 } sphere { z * 0.3, 0.5 } hollow" + clear + "interior { media { emission 0.2 } } }", 0.46000},
       {box + "difference { sphere { 0, 0.5 } sphere { z * 0.3, 0.3 } hollow" + clear + "interior { media { emission 0.2 } } }", 0.30001},
+      // A solid difference ends where the ray leaves it through its second part (z = 0).
+      {box + "difference { sphere { 0, 0.5 } sphere { z * 0.3, 0.3 }" + clear + "}", 0.14999},
   };
   const auto seen = [](const std::string& camera, const std::string& objects) {
     return centre(povray::parsePovRay("#version 3.7;\nglobal_settings { assumed_gamma 1 }\n" + camera +

@@ -79,10 +79,10 @@ template <class T> class Tracer {
   };
 
   // One object's interior a ray is in, and those it was in before (Path::interiors), kept in the frames of
-  // the rays' parents. `key` names the interior: its medium, which a CSG's parts share, or else its object.
-  // `eye`: found around the eye ray's origin, `object` then being a whole scene object.
+  // the rays' parents. `key` names the interior (interiorKey()). `eye`: found around the eye ray's origin,
+  // `object` then being a whole scene object.
   struct InteriorLink {
-    const void* key;
+    uintptr_t key;
     const Object<T>* object;
     const Media* medium;  // null for an interior without one
     bool hollow;
@@ -97,7 +97,7 @@ template <class T> class Tracer {
     float weight = 1;   // the accumulated weight of its colour in the pixel (docs/reference/stability.md F12)
     uint64_t key = 0;   // the root of its random numbers (sampler.hpp); 0 without -gi, which reads none
     bool mirrored = false;  // reflected on its way from the eye
-    // The interiors it is in, the last entered first; only kept in a scene with media (media_).
+    // The interiors it is in, the last entered first; only kept in a scene with media or fog (interiors_).
     const InteriorLink* interiors = nullptr;
     // The objects it sees: a ray from the eye all but no_image ones until it is reflected, then all but
     // no_reflection ones; a gathered ray all but no_radiosity ones.
@@ -148,6 +148,11 @@ template <class T> class Tracer {
   // follow() for a hit in a scene with media.
   Traced followInMedia(const Ray<T>& ray, const Hit<T>& hit, RayRecord::Kind kind, const Path& path,
                        RayRecord* record, const std::optional<ShadowRay>* shadows);
+  // What names an object's interior: its medium or its CSG's interior (both shared by a CSG's parts), else the
+  // object itself.
+  static uintptr_t interiorKey(const Object<T>& object);
+  // Whether every interior of the list is hollow.
+  static bool hollow(const InteriorLink* interiors);
   // `color` from a hit at t seen through the media of the interiors the ray is in, from its origin.
   Color throughMedia(const InteriorLink* interiors, const Color& color, const Ray<T>& ray, T t);
   // The interiors around an eye ray's origin (eyeInteriors_, kept while the origin stays).
@@ -223,7 +228,7 @@ template <class T> class Tracer {
   std::vector<const Object<T>*> lastOccluder_;  // per light: what occluded its latest shadow ray (Scene::occluded)
   const SkySphere* sky_;                        // the scene's, or none
   bool fogs_;                                   // whether the scene has any fog
-  bool media_ = false;                          // whether some object has a medium (Path::interiors)
+  bool interiors_ = false;  // whether some object has a medium or the scene a fog: rays keep Path::interiors
   std::vector<InteriorLink> eyeInteriors_;      // eyeInteriors(): around eyeOrigin_, the innermost last
   std::optional<Vec3<T>> eyeOrigin_;
   bool sampledLights_ = false;   // some light is an area or parallel light (Light::sampled)

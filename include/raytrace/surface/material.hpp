@@ -43,11 +43,13 @@ struct SurfaceExtras {
   std::optional<Media> media;
   // POV-Ray's `hollow`: media are seen only inside hollow objects (the manual, "Empty and Solid Objects").
   bool hollow = false;
+  // The interior a CSG's parts share, numbered from 1 in the scene; 0 for an object's own (Path::interiors).
+  size_t interior = 0;
 
   // Whether any of them changes a picture.
   bool any() const {
     return fadeDistance > 0 || caustics != 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0 ||
-           media.has_value() || hollow;
+           media.has_value() || hollow || interior != 0;
   }
 };
 

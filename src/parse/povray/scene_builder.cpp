@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -190,7 +191,7 @@ class Builder {
       }
       return;
     }
-    markHollow(o, false);
+    markInterior(o, false, 0);
     const std::string shortage = objectMemoryShortage(scene_.objects.size(), scene_.objects.size() + 1, "the scene");
     if (!shortage.empty()) throw ParseError(at, shortage);
     // A long list grows four times over rather than twice: each growth moves every object into fresh pages,
@@ -201,21 +202,24 @@ class Builder {
     list.push_back(std::move(o));
   }
 
-  // The material's `hollow` (SurfaceExtras), on a CSG's children too unless they say otherwise, as POV-Ray's
-  // manual has it ("Empty and Solid Objects"). Materials made hollow are shared (hollowed_).
-  void markHollow(ObjectDesc& o, bool outer) {
+  // The material's `hollow` (SurfaceExtras), on a CSG's parts too unless they say otherwise, as POV-Ray's
+  // manual has it ("Empty and Solid Objects"), and the interior a CSG's parts share (`group`, numbered here).
+  // The extras made are shared (marked_).
+  void markInterior(ObjectDesc& o, bool outer, size_t group) {
     const bool hollow = o.hollow.value_or(outer);
-    if (hollow != o.material.extras->hollow) {
-      const SurfaceExtras*& made = hollowed_[o.material.extras];
+    if (group == 0 && std::holds_alternative<CsgDesc>(o.shape)) group = ++groups_;
+    if (hollow != o.material.extras->hollow || group != o.material.extras->interior) {
+      const SurfaceExtras*& made = marked_[{o.material.extras, hollow, group}];
       if (!made) {
         SurfaceExtras extras = *o.material.extras;
         extras.hollow = hollow;
+        extras.interior = group;
         made = keptExtras(extras);
       }
       o.material.extras = made;
     }
     if (auto* csg = std::get_if<CsgDesc>(&o.shape)) {
-      for (ObjectDesc& child : csg->children) markHollow(child, hollow);
+      for (ObjectDesc& child : csg->children) markInterior(child, hollow, group);
     }
   }
 
@@ -950,7 +954,9 @@ class Builder {
   bool asciiStrings_ = true;  // global_settings' charset
   Surface default_;
   ReadingContext context_;
-  std::map<const SurfaceExtras*, const SurfaceExtras*> hollowed_;  // markHollow's: each extras made (not) hollow
+  // markInterior's: each extras made (not) hollow and in a CSG's interior, and the CSGs numbered so far.
+  std::map<std::tuple<const SurfaceExtras*, bool, size_t>, const SurfaceExtras*> marked_;
+  size_t groups_ = 0;
   struct Asked {
     std::shared_ptr<const Node> node;  // held, so that its address names no other node
     std::unique_ptr<Object<double>> object;
