@@ -620,6 +620,24 @@ TEST_CASE("Media are seen along a ray only while every interior it is in is holl
   }
 }
 
+TEST_CASE("Fog is seen only along rays in hollow objects, as POV-Ray draws it", "[render][media]") {
+  // A clear sphere z = -2 to 2 before a black wall at z = 5, fog of distance 10: solid, the ray is fogged over
+  // 3 before it and 3 after it alone, 1 − e^(−0.3) seen through e^(−0.3) plus 1 − e^(−0.3) (POV-Ray: 0.45119);
+  // hollow, over all 10 (POV-Ray: 0.63212).
+  const auto seen = [](const char* hollow) {
+    return centre(povray::parsePovRay(std::string(R"(#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { orthographic location <0, 0, -5> look_at 0 right x * 2 up y * 2 }
+background { rgb 0 }
+fog { color rgb 1 distance 10 }
+box { <-9, -9, 5>, <9, 9, 6> pigment { rgb 0 } finish { ambient 0 diffuse 0 } }
+sphere { 0, 2 pigment { rgbt 1 } )") + hollow + " }\n", "scene.pov", povray::PovRayOptions{{}, 1, 1, false})).r;
+  };
+  const double a = std::exp(-0.3);
+  CHECK_THAT(seen(""), Catch::Matchers::WithinAbs((1 - a) * a + (1 - a), 1e-5));
+  CHECK_THAT(seen("hollow"), Catch::Matchers::WithinAbs(1 - std::exp(-1.0), 1e-5));
+}
+
 TEST_CASE("A medium's density moves with its object", "[render][media]") {
   // The gradient's ramp, moved by the box's translate, reads from 0 at the box's near side: as unmoved.
   const auto seen = [](const char* box) {
