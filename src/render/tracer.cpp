@@ -111,6 +111,7 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
       const float reflected = (dialect_.transparencyDimsReflection() ? 1 - m.filter : 1) * reflection;
       gain = std::max(gain, (reflected + m.filter) * std::max(1.0f, brightest(m.pigment)));
       filteredShadows_ = filteredShadows_ || (dialect_.filtersShadows() && m.filter > 0);
+      interiors_ = interiors_ || fogs_ || m.extras->media.has_value();
     });
   }
   // What a ray that leaves the scene brings back; fogs add their colours (throughFogs).
@@ -338,11 +339,31 @@ typename Tracer<T>::Traced Tracer<T>::follow(const Ray<T>& ray, const std::optio
     if (record) record->color = sky;
     return {sky, std::numeric_limits<T>::infinity()};
   }
+  if (interiors_) return followInMedia(ray, *hit, kind, path, record, shadows);
   Color color = shade(ray, *hit, path, record, shadows);
   if (fogs_) color = fogged(color, ray, hit->t);
   color = dialect_.bounced(color);
   if (record) record->color = color;
   return {color, hit->t};
+}
+
+// follow() in a scene with media or fog: an eye ray starts in the interiors around its origin, and the colour
+// from the hit is seen through the media of those the ray is in. Fog, as media, fills hollow objects alone (the
+// manual, "Empty and Solid Objects"): a ray in a solid one is not fogged.
+template <class T>
+[[gnu::noinline]] typename Tracer<T>::Traced Tracer<T>::followInMedia(const Ray<T>& ray, const Hit<T>& hit,
+                                                                    RayRecord::Kind kind, const Path& path,
+                                                                    RayRecord* record,
+                                                                    const std::optional<ShadowRay>* shadows) {
+  Path within = path;
+  if (kind == RayRecord::Kind::Primary && path.depth == 0 && path.bounce == 0) within.interiors = eyeInteriors(ray.origin);
+  Color color = shade(ray, hit, within, record, shadows);
+  if (fogs_ && hollow(within.interiors)) color = fogged(color, ray, hit.t);
+  color = dialect_.bounced(color);
+  // Gathered rays see no media (POV-Ray's radiosity `media` is off by default: the manual, "Radiosity").
+  if (within.interiors && path.bounce == 0) color = throughMedia(within.interiors, color, ray, hit.t);
+  if (record) record->color = color;
+  return {color, hit.t};
 }
 
 template <class T> Color Tracer<T>::fogged(Color c, const Ray<T>& ray, T t) const {
@@ -681,6 +702,89 @@ template <class T> struct Tracer<T>::MediaLighting final : MediaLights {
   Tracer& tracer;
 };
 
+// The manual's "Empty and Solid Objects": media are only inside hollow objects. Measured with POV-Ray 3.7: a
+// ray's media (those of all the interiors it is in, adding up) count only while every interior it is in is
+// hollow; a solid object inside a medium, or around it, takes its place.
+// The numbers of CSG interiors (1, 2, …) are no object's or medium's address.
+template <class T> uintptr_t Tracer<T>::interiorKey(const Object<T>& object) {
+  const SurfaceExtras& extras = *object.material().extras;
+  if (extras.media) return reinterpret_cast<uintptr_t>(&*extras.media);
+  return extras.interior != 0 ? extras.interior : reinterpret_cast<uintptr_t>(&object);
+}
+
+template <class T> bool Tracer<T>::hollow(const InteriorLink* interiors) {
+  for (const InteriorLink* link = interiors; link; link = link->outer) {
+    if (!link->hollow) return false;
+  }
+  return true;
+}
+
+template <class T>
+[[gnu::noinline]] Color Tracer<T>::throughMedia(const InteriorLink* interiors, const Color& color, const Ray<T>& ray,
+                                                T t) {
+  std::vector<const Media*> media;
+  for (const InteriorLink* link = interiors; link; link = link->outer) {
+    if (!link->hollow) return color;
+    if (link->medium) media.push_back(link->medium);
+  }
+  if (media.empty()) return color;
+  const glm::dvec3 dir(ray.dir);
+  const double length = glm::length(dir);
+  MediaLighting lights(*this);
+  return Media::through(media.data(), media.size(), color, glm::dvec3(ray.origin), dir / length, double(t) * length,
+                        &lights);
+}
+
+// As POV-Ray's pictures show, an eye ray starting inside objects is in their interiors (a medium around the
+// camera is seen from it; a solid object around it hides the media until the ray leaves it).
+template <class T> const typename Tracer<T>::InteriorLink* Tracer<T>::eyeInteriors(const Vec3<T>& origin) {
+  if (eyeOrigin_ != origin) {
+    eyeOrigin_ = origin;
+    eyeInteriors_.clear();
+    for (const auto& object : scene_.objects()) {
+      const std::optional<Aabb<T>> bounds = object->bounds();
+      if (bounds && (glm::any(glm::lessThan(origin, bounds->min)) || glm::any(glm::greaterThan(origin, bounds->max)))) continue;
+      if (!object->inside(origin)) continue;
+      const SurfaceExtras& extras = *object->material().extras;
+      eyeInteriors_.push_back({interiorKey(*object), object.get(), extras.media ? &*extras.media : nullptr,
+                               extras.hollow, true, nullptr});
+    }
+    for (size_t i = 1; i < eyeInteriors_.size(); ++i) eyeInteriors_[i].outer = &eyeInteriors_[i - 1];
+  }
+  return eyeInteriors_.empty() ? nullptr : &eyeInteriors_.back();
+}
+
+// As POV-Ray's pictures show, a ray crossing a surface leaves the interior if it is in it (through any of the
+// parts of a CSG that share it: in a union's overlap a ray is out of it), else enters it. Leaving, the interiors
+// entered since are linked anew in this frame. An interior found around the eye is left where the ray is no
+// longer inside its object.
+template <class T>
+[[gnu::noinline]] typename Tracer<T>::Traced Tracer<T>::across(const Ray<T>& ray, const Hit<T>& hit,
+                                                             const Path& child, RayRecord* record) {
+  const SurfaceExtras& extras = *hit.object->material().extras;
+  const Media* medium = extras.media ? &*extras.media : nullptr;
+  const uintptr_t key = interiorKey(*hit.object);
+  const auto find = [&](const auto& left) {
+    const InteriorLink* found = child.interiors;
+    while (found && !left(*found)) found = found->outer;
+    return found;
+  };
+  const InteriorLink* found = find([&](const InteriorLink& link) { return link.key == key; });
+  if (!found) found = find([&](const InteriorLink& link) { return link.eye && !link.object->inside(ray.origin); });
+  Path crossed = child;
+  const InteriorLink entered{key, hit.object, medium, extras.hollow, false, child.interiors};
+  std::vector<InteriorLink> since;
+  if (found) {
+    for (const InteriorLink* link = child.interiors; link != found; link = link->outer) since.push_back(*link);
+    const InteriorLink* outer = found->outer;
+    for (size_t i = since.size(); i-- > 0;) since[i].outer = outer, outer = &since[i];
+    crossed.interiors = outer;
+  } else {
+    crossed.interiors = &entered;
+  }
+  return trace(ray, RayRecord::Kind::Refraction, crossed, record);
+}
+
 template <class T>
 [[gnu::always_inline]] inline
 Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material& m, const Vec3<T>& n,
@@ -699,16 +803,11 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
     if (sub) sub->extraInfo.push_back(entering ? "into-object" : "into-air");
     if (options_.gi.enabled) child.key = childKey(path.key, kRefractionBranch);
     ++counts_.secondary;
-    const Traced t =
-        trace(spawnRay(hit, *refracted, *scene_.arithmetic().offset), RayRecord::Kind::Refraction, child, sub);
+    // In a scene with media, the ray enters or leaves the object's interior (Path::interiors).
+    const Ray<T> refractedRay = spawnRay(hit, *refracted, *scene_.arithmetic().offset);
+    const Traced t = interiors_ ? across(refractedRay, hit, child, sub)
+                            : trace(refractedRay, RayRecord::Kind::Refraction, child, sub);
     Color gathered = transmitTint * t.color;
-    // Through the interior's medium up to the next surface; a ray that never leaves the object keeps its colour.
-    if (entering && m.extras->media && std::isfinite(t.distance)) {
-      const double length = double(t.distance) * double(glm::length(*refracted));
-      const glm::dvec3 dir = glm::normalize(glm::dvec3(*refracted));
-      MediaLighting lights(*this);
-      gathered = transmitTint * m.extras->media->through(t.color, glm::dvec3(hit.point), dir, length, &lights);
-    }
     if (entering && options_.beers) gathered *= beerAttenuation(m.pigment, float(t.distance));
     if (entering && m.extras->fadeDistance > 0) gathered *= interiorFade(m, float(t.distance));
     refraction = w.transmission * gathered;

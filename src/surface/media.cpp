@@ -42,26 +42,47 @@ double Scattering::phase(const glm::dvec3& dir, const glm::dvec3& toLight) const
 
 Color Media::through(const Color& behind, const glm::dvec3& start, const glm::dvec3& dir, double distance,
                      MediaLights* lights) const {
-  const glm::dvec3 a(absorption), e(emission);
-  const glm::dvec3 s = scattering ? glm::dvec3(scattering->color) : glm::dvec3(0);
-  const glm::dvec3 extinction = a + (scattering ? scattering->extinction : 0.0) * s;
-  const bool lit = lights && scattering && s != glm::dvec3(0);
+  const Media* self = this;
+  return through(&self, 1, behind, start, dir, distance, lights);
+}
+
+Color Media::through(const Media* const* media, size_t count, const Color& behind, const glm::dvec3& start,
+                     const glm::dvec3& dir, double distance, MediaLights* lights) {
+  int samples = 0, intervals = 0, aaLevel = 0;
+  double aaThreshold = media[0]->aaThreshold;
+  bool lit = false;
+  for (size_t i = 0; i < count; ++i) {
+    const Media& m = *media[i];
+    samples = std::max(samples, m.samples);
+    intervals = std::max(intervals, m.intervals);
+    aaLevel = std::max(aaLevel, m.aaLevel);
+    aaThreshold = std::min(aaThreshold, m.aaThreshold);
+    lit = lit || (m.scattering && m.scattering->color != Color(0));
+  }
+  lit = lit && lights;
   std::vector<MediaLights::Arrival> arrivals;
   const auto sample = [&](double t) {
     const glm::dvec3 at = start + dir * t;
-    glm::dvec3 density(1);
-    if (!densities.empty()) {
-      const glm::dvec3 p = glm::dvec3(fromWorld * glm::dvec4(at, 1));
-      for (const auto& d : densities) density *= glm::dvec3(d->at(p).rgb);
-    }
-    Sample out{e, extinction};
     if (lit) {
       arrivals.clear();
       lights->at(at, arrivals);
-      for (const auto& arrival : arrivals) out.light += s * glm::dvec3(arrival.color) * scattering->phase(dir, arrival.toLight);
     }
-    out.light *= density;
-    out.extinction *= density;
+    Sample out;
+    for (size_t i = 0; i < count; ++i) {
+      const Media& m = *media[i];
+      const glm::dvec3 s = m.scattering ? glm::dvec3(m.scattering->color) : glm::dvec3(0);
+      glm::dvec3 density(1);
+      if (!m.densities.empty()) {
+        const glm::dvec3 p = glm::dvec3(m.fromWorld * glm::dvec4(at, 1));
+        for (const auto& d : m.densities) density *= glm::dvec3(d->at(p).rgb);
+      }
+      glm::dvec3 light(m.emission);
+      if (lit && m.scattering) {
+        for (const auto& arrival : arrivals) light += s * glm::dvec3(arrival.color) * m.scattering->phase(dir, arrival.toLight);
+      }
+      out.light += light * density;
+      out.extinction += (glm::dvec3(m.absorption) + (m.scattering ? m.scattering->extinction : 0.0) * s) * density;
+    }
     return out;
   };
   const int n = std::max(2, samples / 2 + 1);

@@ -567,6 +567,20 @@ TEST_CASE("A scene's gamma raises each pixel's colour before it is written, in r
   checkColor(tracer.pixel(Camera<double>(scene.camera, 1, 1), 0, 0), expected);
 }
 
+TEST_CASE("A no_shadow object casts no shadow through transparent surfaces either", "[render]") {
+  // The filtering sphere makes shadow rays pass transparent surfaces; the no_shadow sphere lies between the light
+  // and the point seen, which POV-Ray 3.7 lights fully: n·l = 10 / |(3.75, 10)| (its picture: 0.93632).
+  const SceneDesc scene = povray::parsePovRay(R"(#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { orthographic location <-0.75, 1, 0> look_at <-0.75, 0, 0> right x * 0.1 up z * 0.1 }
+light_source { <3, 10, 0>, rgb 1 }
+plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+sphere { <0, 2, 0>, 0.5 pigment { rgb 1 } no_shadow }
+sphere { <5, 2, 0>, 0.5 pigment { rgbf 0.5 } }
+)", "scene.pov", povray::PovRayOptions{{}, 1, 1, false});
+  checkColor(centre(scene), Color(float(10 / std::hypot(3.75, 10.0))));
+}
+
 TEST_CASE("An eye ray across a hollow box of media gets POV-Ray's method 3 colour", "[render][media]") {
   // POV-Ray 3.7's picture of this scene, 16-bit and linear: 0.27451 emitted plus e^-1 of the white background.
   const SceneDesc scene = povray::parsePovRay(R"(#version 3.7;
@@ -614,6 +628,84 @@ box { <-5, -5, 0.001>, <5, 5, 0.999> hollow pigment { rgbt 1 }
                                                 "scene.pov", povray::PovRayOptions{{}, 1, 1, false});
     CHECK_THAT(centre(scene).r, Catch::Matchers::WithinAbs(m.povray, 2e-5));
   }
+}
+
+TEST_CASE("Media are seen along a ray only while every interior it is in is hollow, as POV-Ray draws them",
+          "[render][media]") {
+  // POV-Ray 3.7's pictures (16-bit, linear) of the centre of a hollow box z = -1 to 1 of `emission 0.1` before
+  // black, with the objects below in it, seen from z = -5 or, for the second list, from the origin.
+  const std::string box = "box { <-5, -5, -1>, <5, 5, 1> hollow pigment { rgbt 1 } interior { media { emission 0.1 } } }\n";
+  const std::string solidBox = "box { <-5, -5, -1>, <5, 5, 1> pigment { rgbt 1 } interior { media { emission 0.1 } } }\n";
+  const std::string clear = " pigment { rgbt 1 } ";
+  const struct {
+    std::string objects;
+    double povray;
+  } fromFront[] = {
+      {box, 0.2},
+      {solidBox, 0},  // a medium in a solid object is not seen
+      {box + "sphere { 0, 0.5" + clear + "}", 0.10001},  // a solid object inside takes the medium's place
+      {box + "sphere { 0, 0.5 hollow" + clear + "}", 0.2},
+      {box + "sphere { 0, 0.5" + clear + "interior { media { emission 0.3 } } }", 0.10001},
+      {box + "sphere { 0, 0.5 hollow" + clear + "interior { media { emission 0.3 } } }", 0.50001},  // they add up
+      {box + "sphere { 0, 0.5 hollow" + clear + "interior { ior 1.5 } }", 0.2},
+      {box + "sphere { 0, 0.5 pigment { rgb 0 } }", 0.05000},  // up to an opaque object
+      {box + "box { <-6, -6, -3>, <6, 6, 3>" + clear + "}", 0},  // inside a solid object
+      {box + "plane { z, 0" + clear + "}", 0.10001},
+      {box + "plane { z, 0 hollow" + clear + "}", 0.2},
+      // A mirror at z = 0.5: 1.5 there and 1.5 back.
+      {box + "box { <-5, -5, 0.5>, <5, 5, 0.6> pigment { rgb 0 } finish { ambient 0 diffuse 0 reflection 1 } }", 0.29999},
+      // A CSG's parts share its medium: in the overlap (z = -0.2 to 0.5) of a union the ray is out of it again.
+      {box + "union { sphere { 0, 0.5 } sphere { z * 0.3, 0.5 } hollow" + clear + "interior { media { emission 0.2 } } }", 0.32000},
+      {box + "merge { sphere { 0, 0.5 } sphere { z * 0.3, 0.5 } hollow" + clear + "interior { media { emission 0.2 } } }", 0.46000},
+      {box + "difference { sphere { 0, 0.5 } sphere { z * 0.3, 0.3 } hollow" + clear + "interior { media { emission 0.2 } } }", 0.30001},
+      // A solid difference ends where the ray leaves it through its second part (z = 0).
+      {box + "difference { sphere { 0, 0.5 } sphere { z * 0.3, 0.3 }" + clear + "}", 0.14999},
+  };
+  const auto seen = [](const std::string& camera, const std::string& objects) {
+    return centre(povray::parsePovRay("#version 3.7;\nglobal_settings { assumed_gamma 1 }\n" + camera +
+                                          "background { rgb 0 }\n" + objects + "\n",
+                                      "scene.pov", povray::PovRayOptions{{}, 1, 1, false}))
+        .r;
+  };
+  for (const auto& m : fromFront) {
+    INFO(m.objects);
+    CHECK_THAT(seen("camera { orthographic location <0, 0, -5> look_at 0 right x * 2 up y * 2 }\n", m.objects),
+               Catch::Matchers::WithinAbs(m.povray, 2e-5));
+  }
+  // An eye ray starts in the interiors around its origin.
+  const struct {
+    std::string objects;
+    double povray;
+  } fromInside[] = {
+      {box, 0.10001},
+      {solidBox, 0},
+      {box + "sphere { 0, 0.5" + clear + "}", 0.05000},
+      {box + "sphere { 0, 0.5 hollow" + clear + "}", 0.10001},
+      {box + "sphere { 0, 0.1" + clear + "}", 0.09000},
+  };
+  for (const auto& m : fromInside) {
+    INFO(m.objects);
+    CHECK_THAT(seen("camera { orthographic location 0 look_at z right x * 2 up y * 2 }\n", m.objects),
+               Catch::Matchers::WithinAbs(m.povray, 2e-5));
+  }
+}
+
+TEST_CASE("Fog is seen only along rays in hollow objects, as POV-Ray draws it", "[render][media]") {
+  // A clear sphere z = -2 to 2 before a black wall at z = 5, fog of distance 10: solid, the ray is fogged over
+  // 3 before it and 3 after it alone, 1 − e^(−0.3) seen through e^(−0.3) plus 1 − e^(−0.3) (POV-Ray: 0.45119);
+  // hollow, over all 10 (POV-Ray: 0.63212).
+  const auto seen = [](const char* hollow) {
+    return centre(povray::parsePovRay(std::string(R"(#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { orthographic location <0, 0, -5> look_at 0 right x * 2 up y * 2 }
+background { rgb 0 }
+fog { color rgb 1 distance 10 }
+box { <-9, -9, 5>, <9, 9, 6> pigment { rgb 0 } finish { ambient 0 diffuse 0 } }
+sphere { 0, 2 pigment { rgbt 1 } )") + hollow + " }\n", "scene.pov", povray::PovRayOptions{{}, 1, 1, false})).r;
+  };
+  const double a = std::exp(-0.3);
+  CHECK_THAT(seen(""), Catch::Matchers::WithinAbs((1 - a) * a + (1 - a), 1e-5));
+  CHECK_THAT(seen("hollow"), Catch::Matchers::WithinAbs(1 - std::exp(-1.0), 1e-5));
 }
 
 TEST_CASE("A medium's density moves with its object", "[render][media]") {

@@ -78,6 +78,18 @@ template <class T> class Tracer {
     T distance;  // to the hit, +∞ on a miss (Beer's law needs it)
   };
 
+  // One object's interior a ray is in, and those it was in before (Path::interiors), kept in the frames of
+  // the rays' parents. `key` names the interior (interiorKey()). `eye`: found around the eye ray's origin,
+  // `object` then being a whole scene object.
+  struct InteriorLink {
+    uintptr_t key;
+    const Object<T>* object;
+    const Media* medium;  // null for an interior without one
+    bool hollow;
+    bool eye;
+    const InteriorLink* outer;
+  };
+
   // Where a ray is in the tree of its eye ray.
   struct Path {
     int depth = 0;      // reflection/refraction level, the primary ray 0 (§c.9)
@@ -85,6 +97,8 @@ template <class T> class Tracer {
     float weight = 1;   // the accumulated weight of its colour in the pixel (docs/reference/stability.md F12)
     uint64_t key = 0;   // the root of its random numbers (sampler.hpp); 0 without -gi, which reads none
     bool mirrored = false;  // reflected on its way from the eye
+    // The interiors it is in, the last entered first; only kept in a scene with media or fog (interiors_).
+    const InteriorLink* interiors = nullptr;
     // The objects it sees: a ray from the eye all but no_image ones until it is reflected, then all but
     // no_reflection ones; a gathered ray all but no_radiosity ones.
     Sight sight() const { return bounce > 0 ? Sight::Gathered : mirrored ? Sight::Reflected : Sight::Image; }
@@ -131,6 +145,20 @@ template <class T> class Tracer {
   struct MediaLighting;
   // `c` seen through the scene's fogs (fogs_) along the ray up to t (infinite for a ray that leaves the scene).
   Color fogged(Color c, const Ray<T>& ray, T t) const;
+  // follow() for a hit in a scene with media.
+  Traced followInMedia(const Ray<T>& ray, const Hit<T>& hit, RayRecord::Kind kind, const Path& path,
+                       RayRecord* record, const std::optional<ShadowRay>* shadows);
+  // What names an object's interior: its medium or its CSG's interior (both shared by a CSG's parts), else the
+  // object itself.
+  static uintptr_t interiorKey(const Object<T>& object);
+  // Whether every interior of the list is hollow.
+  static bool hollow(const InteriorLink* interiors);
+  // `color` from a hit at t seen through the media of the interiors the ray is in, from its origin.
+  Color throughMedia(const InteriorLink* interiors, const Color& color, const Ray<T>& ray, T t);
+  // The interiors around an eye ray's origin (eyeInteriors_, kept while the origin stays).
+  const InteriorLink* eyeInteriors(const Vec3<T>& origin);
+  // The ray refracted across the surface `hit` is on, which it enters or leaves.
+  Traced across(const Ray<T>& ray, const Hit<T>& hit, const Path& child, RayRecord* record);
   // The weights of the local light and the two secondary rays at a hit; `refracted` receives the transmitted
   // direction when there is one (total internal reflection moves the transmitted share to reflection).
   Weights split(const Ray<T>& ray, const Hit<T>& hit, const Material& m, const Vec3<T>& n, RayRecord* record,
@@ -200,6 +228,9 @@ template <class T> class Tracer {
   std::vector<const Object<T>*> lastOccluder_;  // per light: what occluded its latest shadow ray (Scene::occluded)
   const SkySphere* sky_;                        // the scene's, or none
   bool fogs_;                                   // whether the scene has any fog
+  bool interiors_ = false;  // whether some object has a medium or the scene a fog: rays keep Path::interiors
+  std::vector<InteriorLink> eyeInteriors_;      // eyeInteriors(): around eyeOrigin_, the innermost last
+  std::optional<Vec3<T>> eyeOrigin_;
   bool sampledLights_ = false;   // some light is an area or parallel light (Light::sampled)
   bool filteredShadows_ = false;  // shadow rays pass transparent surfaces (POV-Ray, and some surface lets light through)
   std::vector<Batch> batches_;                 // [0] tile()'s eye rays, [1 + b] the gather rays at bounce b

@@ -57,6 +57,7 @@ struct ObjectDesc {
   bool noReflection = false;  // POV-Ray's no_reflection: reflected rays do not see it
   bool noRadiosity = false;   // POV-Ray's no_radiosity: gathered rays (-gi) do not see it
   bool inverse = false;   // POV-Ray's inverse: inside and outside swap (shapes/inverted)
+  std::optional<bool> hollow;  // POV-Ray's hollow as written (SurfaceExtras::hollow; a CSG's goes to its children)
   // A texture that varies over the surface, in world space; none when `material` is the same everywhere.
   std::shared_ptr<const Texture> texture;
   // The POV transforms as written (§c.10), in file order; a scene built in code gives its own the same way.

@@ -49,11 +49,15 @@ struct SurfaceExtras {
   bool doubleIlluminate = false;
   // The interior's medium, which a ray that enters the object crosses up to its next hit.
   std::optional<Media> media;
+  // POV-Ray's `hollow`: media are seen only inside hollow objects (the manual, "Empty and Solid Objects").
+  bool hollow = false;
+  // The interior a CSG's parts share, numbered from 1 in the scene; 0 for an object's own (Path::interiors).
+  size_t interior = 0;
 
   // Whether any of them changes a picture.
   bool any() const {
     return fadeDistance > 0 || caustics != 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0 ||
-           conserveEnergy || irid || doubleIlluminate || media.has_value();
+           conserveEnergy || irid || doubleIlluminate || media.has_value() || hollow || interior != 0;
   }
 };
 

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <optional>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -197,15 +199,6 @@ class Builder {
   void finish() {
     // Media do not dim the lights yet: a light that asks them to is refused, once some object has a medium.
     if (context_.mediaAttenuation && context_.media) context_.refuse(*context_.mediaAttenuation, "media_attenuation");
-    // A ray crosses a medium only up to its next hit: an object that may lie inside or across a medium would
-    // cut the medium short behind it, so such scenes are refused (an unbounded medium, or an unbounded object
-    // other than a plane, always).
-    for (const auto& [index, at] : mediaObjects_) {
-      const Ball medium = worldBall(scene_.objects[index]);
-      for (size_t j = 0; j < scene_.objects.size(); ++j) {
-        if (j != index && mayCross(medium, scene_.objects[j])) context_.refuse(at, "an object inside or across a medium");
-      }
-    }
     if (const auto& refused = context_.firstRefusal) throw ParseError(refused->loc, "'" + refused->what + "' is not supported yet");
   }
 
@@ -220,14 +213,15 @@ class Builder {
         child.noImage = child.noImage || o.noImage;
         child.noReflection = child.noReflection || o.noReflection;
         child.noRadiosity = child.noRadiosity || o.noRadiosity;
+        if (!child.hollow) child.hollow = o.hollow;
         add(std::move(child), at);
       }
       return;
     }
+    markInterior(o, false, 0);
     static const std::string kWhat = "the scene";  // made once, not for every object
     const std::string shortage = objectMemoryShortage(scene_.objects.size(), scene_.objects.size() + 1, kWhat);
     if (!shortage.empty()) throw ParseError(at, shortage);
-    if (o.material.extras->media) mediaObjects_.emplace_back(scene_.objects.size(), at);
     // A long list grows four times over rather than twice: each growth moves every object into fresh pages,
     // while the room not yet filled is never touched. A million objects are then moved a third of a time
     // each, not once, and their pages met 1.3 times rather than twice.
@@ -236,31 +230,25 @@ class Builder {
     list.push_back(std::move(o));
   }
 
-  // A ball around the object in world space (radius 0 for an unbounded one): its shape's ball moved by its
-  // transforms, the radius scaled by √(‖A‖₁·‖A‖∞) of their linear part A, which bounds any stretch.
-  static Ball worldBall(const ObjectDesc& o) {
-    const Ball own = std::visit([](const auto& kind) { return kind.boundingBall(); }, o.shape);
-    const glm::dmat4 m = composeTransforms<double>(o.transforms);
-    double columns = 0, rows = 0;
-    for (int i = 0; i < 3; ++i) {
-      columns = std::max(columns, std::abs(m[i][0]) + std::abs(m[i][1]) + std::abs(m[i][2]));
-      rows = std::max(rows, std::abs(m[0][i]) + std::abs(m[1][i]) + std::abs(m[2][i]));
+  // The material's `hollow` (SurfaceExtras), on a CSG's parts too unless they say otherwise, as POV-Ray's
+  // manual has it ("Empty and Solid Objects"), and the interior a CSG's parts share (`group`, numbered here).
+  // The extras made are shared (marked_).
+  void markInterior(ObjectDesc& o, bool outer, size_t group) {
+    const bool hollow = o.hollow.value_or(outer);
+    if (group == 0 && std::holds_alternative<CsgDesc>(o.shape)) group = ++groups_;
+    if (hollow != o.material.extras->hollow || group != o.material.extras->interior) {
+      const SurfaceExtras*& made = marked_[{o.material.extras, hollow, group}];
+      if (!made) {
+        SurfaceExtras extras = *o.material.extras;
+        extras.hollow = hollow;
+        extras.interior = group;
+        made = keptExtras(extras);
+      }
+      o.material.extras = made;
     }
-    return {glm::dvec3(m * glm::dvec4(own.center, 1)), own.radius * std::sqrt(columns * rows)};
-  }
-
-  // Whether object `o` may have a point inside the ball `medium`: its own ball meets it or, for a plane, the
-  // plane passes through it (moved by its transforms M: normal M⁻ᵀn, through M of its point nearest the origin).
-  static bool mayCross(const Ball& medium, const ObjectDesc& o) {
-    if (medium.radius <= 0) return true;
-    const Ball other = worldBall(o);
-    if (other.radius > 0) return glm::distance(medium.center, other.center) < medium.radius + other.radius;
-    const auto* plane = std::get_if<PlaneDesc>(&o.shape);
-    if (!plane) return true;
-    const glm::dmat4 m = composeTransforms<double>(o.transforms);
-    const glm::dvec3 normal = glm::transpose(glm::inverse(glm::dmat3(m))) * plane->normal;
-    const glm::dvec3 point(m * glm::dvec4(plane->boundingBall().center, 1));
-    return std::abs(glm::dot(normal, medium.center - point)) < medium.radius * glm::length(normal);
+    if (auto* csg = std::get_if<CsgDesc>(&o.shape)) {
+      for (ObjectDesc& child : csg->children) markInterior(child, hollow, group);
+    }
   }
 
   void refuse(const SourceLoc& loc, std::string_view what) { context_.refuse(loc, what); }
@@ -542,7 +530,10 @@ class Builder {
           refuse(it.loc, m);
         }
       } else if (it.kind == Item::Kind::Keyword) {
-        if (it.word == "hollow" || it.word == "hierarchy") {
+        if (it.word == "hollow") {
+          const Value* v = valueAfter(n, i);
+          o.hollow = !v || v->v[0] != 0;
+        } else if (it.word == "hierarchy") {
           valueAfter(n, i);
         } else if (it.word == "inverse") {
           o.inverse = !o.inverse;
@@ -1067,7 +1058,9 @@ class Builder {
   };
   std::optional<DefaultTerms> defaultTerms_;
   ReadingContext context_;
-  std::vector<std::pair<size_t, SourceLoc>> mediaObjects_;  // the objects with a medium, and where each is written
+  // markInterior's: each extras made (not) hollow and in a CSG's interior, and the CSGs numbered so far.
+  std::map<std::tuple<const SurfaceExtras*, bool, size_t>, const SurfaceExtras*> marked_;
+  size_t groups_ = 0;
   struct Asked {
     std::shared_ptr<const Node> node;  // held, so that its address names no other node
     std::unique_ptr<Object<double>> object;
