@@ -258,6 +258,8 @@ TEST_CASE("patterns: spiral1's arms, and its turbulence refused", "[noise]") {
   a.vector = glm::dvec3(3);  // spiral1 3
   a.hasVector = true;
   checkPattern("spiral1", a, kSpiral1, 1.1e-5);  // the wrap's 1e-5 where a value lands on a whole number
+  // On the z axis the angle counts as 0: the value is z (POV-Ray's triangle wave of it gives 0.6 at z = 0.3).
+  CHECK(makePattern(*patternKind("spiral1"), a)->value({0, 0, 0.3}) == Approx(0.3).margin(kExact));
   CHECK_FALSE(patternKind("spiral1")->turbulenceDrawn);
 }
 

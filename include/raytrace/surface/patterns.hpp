@@ -47,6 +47,9 @@ std::unique_ptr<Pattern> makeSlope(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpherical(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpiral1(const PatternArgs&);
 std::unique_ptr<Pattern> makeSpiral2(const PatternArgs&);
+// The spirals' angle about z from the −y axis, as a share of a turn in [0, 1); 0 on the axis itself, as
+// POV-Ray counts it (docs/povray-noise.md).
+double spiralTurn(const glm::dvec3& p);
 std::unique_ptr<Pattern> makeWaves(const PatternArgs&);
 std::unique_ptr<Pattern> makeWood(const PatternArgs&);
 std::unique_ptr<Pattern> makeWrinkles(const PatternArgs&);

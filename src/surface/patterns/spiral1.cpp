@@ -7,18 +7,19 @@
 
 namespace rt {
 
+double spiralTurn(const glm::dvec3& p) {
+  constexpr double kTwoPi = 6.28318530717958647692;
+  if (p.x == 0 && p.y == 0) return 0;
+  const double turn = std::atan2(p.y, p.x) / kTwoPi + 0.25;
+  return turn < 0 ? turn + 1 : turn;
+}
+
 namespace {
 
 class Spiral1 final : public Pattern {
  public:
   explicit Spiral1(double arms) : arms_(arms) {}
-  double value(const glm::dvec3& p) const override {
-    constexpr double kTwoPi = 6.28318530717958647692;
-    // The angle about z from the −y axis, as a share of a turn in [0, 1).
-    double turn = std::atan2(p.y, p.x) / kTwoPi + 0.25;
-    if (turn < 0) turn += 1;
-    return p.z + std::hypot(p.x, p.y) + arms_ * turn;
-  }
+  double value(const glm::dvec3& p) const override { return p.z + std::hypot(p.x, p.y) + arms_ * spiralTurn(p); }
 
  private:
   double arms_;

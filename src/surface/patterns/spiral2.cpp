@@ -18,12 +18,8 @@ class Spiral2 final : public Pattern {
  public:
   explicit Spiral2(double arms) : arms_(arms) {}
   double value(const glm::dvec3& p) const override {
-    constexpr double kTwoPi = 6.28318530717958647692;
     const double radius = std::hypot(p.x, p.y);
-    // The angle about z from the −y axis, as a share of a turn in [0, 1); 0 on the axis itself.
-    double turn = radius > 0 ? std::atan2(p.y, p.x) / kTwoPi + 0.25 : 0;
-    if (turn < 0) turn += 1;
-    return triangle(p.z + radius + arms_ * turn) + triangle(radius);
+    return triangle(p.z + radius + arms_ * spiralTurn(p)) + triangle(radius);
   }
 
  private:
