@@ -110,9 +110,33 @@ std::pair<size_t, float> entryAt(const TexturePattern& tp, const glm::dvec3& q) 
   return {lo, lo < last ? float(v - double(lo)) : 0.0f};
 }
 
+// An average's textures at q, their colour terms weighted; the terms that are not colours come from the heaviest
+// entry, the highlight's shape from the heaviest that has a highlight.
+Material averaged(const TexturePattern& tp, const glm::dvec3& q) {
+  float sum = 0;
+  for (float w : tp.weights) sum += w;
+  Material m, shiniest;
+  Color pigment(0), ambient(0), diffuse(0), specular(0);
+  float filter = 0, reflection = 0, heaviest = -1, brightest = 0;
+  for (size_t i = 0; i < tp.textures.size(); ++i) {
+    const Material e = tp.textures[i]->at(q);
+    const float w = tp.weights[i] / sum;
+    if (tp.weights[i] > heaviest) m = e, heaviest = tp.weights[i];
+    const float shine = w * (e.specular.r + e.specular.g + e.specular.b);
+    if (shine > brightest) shiniest = e, brightest = shine;
+    pigment += w * e.pigment, ambient += w * e.ambient, diffuse += w * e.diffuse, specular += w * e.specular;
+    filter += w * e.filter, reflection += w * e.reflection;
+  }
+  m.pigment = pigment, m.ambient = ambient, m.diffuse = diffuse, m.specular = specular;
+  m.filter = filter, m.reflection = reflection;
+  if (brightest > 0) m.exponent = shiniest.exponent, m.roughness = shiniest.roughness, m.lobe = shiniest.lobe;
+  return m;
+}
+
 // The texture a texture pattern gives at p.
 Material patterned(const TexturePattern& tp, const glm::dvec3& p) {
   const glm::dvec3 q = glm::dvec3(tp.fromTexture * glm::dvec4(p, 1));
+  if (!tp.weights.empty()) return averaged(tp, q);
   const auto [lo, t] = entryAt(tp, q);
   const Material a = tp.textures[lo]->at(q);
   return t > 0 ? blend(a, tp.textures[lo + 1]->at(q), t) : a;
@@ -125,6 +149,15 @@ glm::dvec3 patternedNormal(const TexturePattern& tp, const glm::dvec3& p, const 
   const auto bentBy = [&](const Texture& sub) {
     return sub.bumpy ? sub.bentInSpace(glm::dvec3(sub.fromWorld * glm::dvec4(q, 1)), glm::dmat3(sub.fromWorld) * toPattern, n) : n;
   };
+  if (!tp.weights.empty()) {
+    float sum = 0;
+    glm::dvec3 total(0);
+    for (size_t i = 0; i < tp.textures.size(); ++i) {
+      total += double(tp.weights[i]) * bentBy(*tp.textures[i]);
+      sum += tp.weights[i];
+    }
+    return glm::normalize(total / double(sum));
+  }
   const auto [lo, t] = entryAt(tp, q);
   const glm::dvec3 a = bentBy(*tp.textures[lo]);
   return t > 0 ? glm::normalize(a + (bentBy(*tp.textures[lo + 1]) - a) * double(t)) : a;

@@ -32,6 +32,9 @@ struct TexturePattern {
   Pigment selector;
   std::vector<std::shared_ptr<const Texture>> textures;
   glm::dmat4 fromTexture{1};  // the pattern's transforms, which move its textures too
+  // `average texture_map { [w T] … }`: every texture at once, each weighted by w over the weights' sum (the
+  // POV-Ray 3.7 manual, "Average"); empty for a pattern, which reads the selector instead.
+  std::vector<float> weights;
 };
 
 struct TextureLayer {

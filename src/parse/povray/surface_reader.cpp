@@ -1,6 +1,7 @@
 #include "raytrace/parse/povray/surface_reader.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 #include "raytrace/surface/density_file.hpp"
 #include "raytrace/surface/patterns.hpp"
@@ -994,25 +995,35 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
   Pigment& selector = tp->selector;
   PatternDraft draft;
   std::vector<TransformStep> steps;
+  std::vector<float> weights;
+  bool average = false;
+  const Node* unweighted = nullptr;  // the first texture_map entry without its value
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& it = n.items[i];
     if (readTransform(n, i, steps, context)) continue;
     if (it.kind == Item::Kind::Node && it.node->keyword == "texture") {
       tp->textures.push_back(subTexture(*it.node, defaults, context));
+    } else if (it.kind == Item::Kind::Keyword && it.word == "average") {
+      average = true;
     } else if (it.kind == Item::Kind::Node && it.node->keyword == "texture_map") {
       for (const Item& e : it.node->items) {
         // `[value texture { … }]`, or `[value pigment { … } finish { … } …]`: a texture's items written bare.
-        const bool entry = e.kind == Item::Kind::Node && e.node->keyword == "[" && e.node->items.size() >= 2 &&
-                           e.node->items[0].kind == Item::Kind::Value && e.node->items[0].value.type == Value::Type::Float;
-        if (!entry) {
+        const bool bracket = e.kind == Item::Kind::Node && e.node->keyword == "[" && !e.node->items.empty();
+        const bool valued = bracket && e.node->items[0].kind == Item::Kind::Value &&
+                            e.node->items[0].value.type == Value::Type::Float;
+        // An average's entries may leave out their weight, which is then 1 (the POV-Ray 3.7 manual, "Average").
+        if (!(valued && e.node->items.size() >= 2) && !(bracket && !valued)) {
           context.refuse(e, "a texture_map entry");
           continue;
         }
         Node body;
         body.keyword = "texture";
         body.loc = e.loc;
-        body.items.assign(e.node->items.begin() + 1, e.node->items.end());
-        selector.map.push_back({e.node->items[0].value.v[0], solidPigment({Color(float(tp->textures.size())), 0, 0})});
+        body.items.assign(e.node->items.begin() + (valued ? 1 : 0), e.node->items.end());
+        const double value = valued ? e.node->items[0].value.v[0] : 1.0;
+        selector.map.push_back({value, solidPigment({Color(float(tp->textures.size())), 0, 0})});
+        weights.push_back(float(value));
+        if (!valued && !unweighted) unweighted = e.node.get();
         tp->textures.push_back(subTexture(body, defaults, context));
       }
     } else if (it.kind == Item::Kind::Node && it.node->keyword == "tiles") {
@@ -1028,6 +1039,20 @@ std::shared_ptr<const TexturePattern> readTexturePattern(const Node& n, const Su
     }
   }
   draft.finish(selector.pattern, n.loc, context);
+  if (average) {
+    if (selector.pattern || selector.image) throw ParseError(n.loc, "'average' takes no pattern");
+    if (tp->textures.empty() || weights.size() != tp->textures.size()) {
+      throw ParseError(n.loc, "'average' needs a texture_map and no other texture");
+    }
+    if (std::accumulate(weights.begin(), weights.end(), 0.0f) <= 0) {
+      throw ParseError(n.loc, "an average's weights must add up to more than 0");
+    }
+    tp->weights = std::move(weights);
+    selector.map.clear();
+    tp->fromTexture = glm::inverse(composeTransforms<double>(steps));
+    return tp;
+  }
+  if (unweighted) throw ParseError(unweighted->loc, "a texture_map entry needs its value before its texture");
   const int blocks = selector.pattern ? selector.pattern->blocks() : 0;
   for (int b = 0; b < blocks; ++b) selector.list.push_back(solidPigment({Color(float(b)), 0, 0}));
   if (!selector.pattern && !selector.image) {
