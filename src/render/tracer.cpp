@@ -116,7 +116,10 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
   }
   // What a ray that leaves the scene brings back; fogs add their colours (throughFogs).
   const SceneDesc& desc = scene.desc();
-  for (const Media& m : desc.media) sceneMedia_.push_back({reinterpret_cast<uintptr_t>(&m), nullptr, &m, true, false, nullptr});
+  // Scene-level media: outermost hollow interiors named by their addresses, which no object's key is.
+  for (const Media& m : desc.media) {
+    sceneMedia_.push_back({reinterpret_cast<uintptr_t>(&m), nullptr, &m, true, false, nullptr});
+  }
   for (size_t i = 1; i < sceneMedia_.size(); ++i) sceneMedia_[i].outer = &sceneMedia_[i - 1];
   interiors_ = interiors_ || !sceneMedia_.empty();
   float background = std::max(brightest(background_), desc.sky ? brightest(desc.sky->bound()) : 0.0f);
