@@ -708,6 +708,47 @@ sphere { 0, 2 pigment { rgbt 1 } )") + hollow + " }\n", "scene.pov", povray::Pov
   CHECK_THAT(seen("hollow"), Catch::Matchers::WithinAbs(1 - std::exp(-1.0), 1e-5));
 }
 
+TEST_CASE("Scene-level media fill the scene as an outermost hollow interior, as POV-Ray draws them",
+          "[render][media]") {
+  // POV-Ray 3.7's pictures (16-bit, linear) of these scenes' centres, seen from z = -5 before a black wall at
+  // z = 5 (`wall`) or before the background alone.
+  const std::string wall = "box { <-9, -9, 5>, <9, 9, 6> pigment { rgb 0 } finish { ambient 0 diffuse 0 } }\n";
+  const std::string clear = " pigment { rgbt 1 } ";
+  const struct {
+    std::string background, objects;
+    double povray;
+  } measured[] = {
+      // A ray that hits nothing crosses 2·10¹⁰ units of the medium: 0.02 emitted, e^(−0.2) of the background.
+      {"0", "media { emission 1e-12 }", 0.02000},
+      {"1", "media { absorption 1e-11 }", 0.81874},
+      {"0", "media { emission 0.05 }" + wall, 0.50001},
+      {"0", "media { emission 0.05 } media { emission 0.02 }" + wall, 0.70001},  // several add up
+      // A solid object hides the medium along the ray's way through it; a hollow one does not.
+      {"0", "media { emission 0.05 }" + wall + "sphere { 0, 2" + clear + "}", 0.29999},
+      {"0", "media { emission 0.05 }" + wall + "sphere { 0, 2 hollow" + clear + "}", 0.50001},
+      {"0", "media { emission 0.05 }" + wall + "sphere { 0, 2 hollow" + clear + "interior { ior 1.5 } }", 0.50001},
+      {"0", "media { emission 0.1 }" + wall + "box { <-9, -9, -9>, <9, 9, 3>" + clear + "}", 0.2},  // camera inside
+      // A hollow object's own medium adds to the scene's.
+      {"0", "media { emission 0.05 }" + wall + "sphere { 0, 2 hollow" + clear + "interior { media { emission 0.1 } } }",
+       0.90001},
+      // A mirror at z = 1 before a black wall behind the camera at z = −7: 6 there and 8 back.
+      {"0",
+       "media { emission 0.05 } box { <-9, -9, 1>, <9, 9, 2> pigment { rgb 0 } finish { ambient 0 diffuse 0 "
+       "reflection 1 } } box { <-9, -9, -8>, <9, 9, -7> pigment { rgb 0 } finish { ambient 0 diffuse 0 } }",
+       0.70001},
+      {"0", "light_source { <0, 10, 0>, rgb 1 } media { scattering { 1, 0.05 } }" + wall, 0.41009},
+  };
+  for (const auto& m : measured) {
+    INFO(m.objects);
+    const SceneDesc scene = povray::parsePovRay(
+        "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+        "camera { orthographic location <0, 0, -5> look_at 0 right x * 2 up y * 2 }\nbackground { rgb " +
+            m.background + " }\n" + m.objects + "\n",
+        "scene.pov", povray::PovRayOptions{{}, 1, 1, false});
+    CHECK_THAT(centre(scene).r, Catch::Matchers::WithinAbs(m.povray, 2e-5));
+  }
+}
+
 TEST_CASE("A medium's density moves with its object", "[render][media]") {
   // The gradient's ramp, moved by the box's translate, reads from 0 at the box's near side: as unmoved.
   const auto seen = [](const char* box) {

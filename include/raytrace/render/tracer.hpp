@@ -145,6 +145,8 @@ template <class T> class Tracer {
   struct MediaLighting;
   // `c` seen through the scene's fogs (fogs_) along the ray up to t (infinite for a ray that leaves the scene).
   Color fogged(Color c, const Ray<T>& ray, T t) const;
+  // The background `sky` seen along a ray that hits nothing through the scene's media (sceneMedia_).
+  Color missInMedia(const Color& sky, const Ray<T>& ray, RayRecord::Kind kind, const Path& path);
   // follow() for a hit in a scene with media.
   Traced followInMedia(const Ray<T>& ray, const Hit<T>& hit, RayRecord::Kind kind, const Path& path,
                        RayRecord* record, const std::optional<ShadowRay>* shadows);
@@ -155,7 +157,7 @@ template <class T> class Tracer {
   static bool hollow(const InteriorLink* interiors);
   // `color` from a hit at t seen through the media of the interiors the ray is in, from its origin.
   Color throughMedia(const InteriorLink* interiors, const Color& color, const Ray<T>& ray, T t);
-  // The interiors around an eye ray's origin (eyeInteriors_, kept while the origin stays).
+  // The interiors around an eye ray's origin (eyeInteriors_, kept while the origin stays), inside the scene's media.
   const InteriorLink* eyeInteriors(const Vec3<T>& origin);
   // The ray refracted across the surface `hit` is on, which it enters or leaves.
   Traced across(const Ray<T>& ray, const Hit<T>& hit, const Path& child, RayRecord* record);
@@ -230,6 +232,8 @@ template <class T> class Tracer {
   bool fogs_;                                   // whether the scene has any fog
   bool interiors_ = false;  // whether some object has a medium or the scene a fog: rays keep Path::interiors
   std::vector<InteriorLink> eyeInteriors_;      // eyeInteriors(): around eyeOrigin_, the innermost last
+  // The scene's (atmospheric) media as the outermost interiors every eye ray starts in, the last one innermost.
+  std::vector<InteriorLink> sceneMedia_;
   std::optional<Vec3<T>> eyeOrigin_;
   bool sampledLights_ = false;   // some light is an area or parallel light (Light::sampled)
   bool filteredShadows_ = false;  // shadow rays pass transparent surfaces (POV-Ray, and some surface lets light through)

@@ -123,6 +123,8 @@ struct SceneDesc {
   std::optional<float> adcBailout;
   std::shared_ptr<const SkySphere> sky;  // seen where a ray leaves the scene, over the background
   std::vector<Fog> fogs;                 // each ray crosses them in order
+  // Scene-level (atmospheric) `media`: around every ray as an outermost hollow interior (docs/povray-language.md).
+  std::vector<Media> media;
   std::optional<RadiosityDesc> radiosity;  // POV-Ray's radiosity block: the ambient term gathered (docs/gi.md)
   std::vector<std::string> warnings;  // "file:line:col: warning: …", printed before any output
   // The images the file asks for, in order; empty for POV, whose `render` writes output.png.

@@ -60,6 +60,8 @@ class Builder {
       skySphere(n);
     } else if (k == "fog") {
       fog(n);
+    } else if (k == "media") {
+      if (std::optional<Media> media = readMedia(n, context_)) scene_.media.push_back(std::move(*media));
     } else if (k == "background") {
       for (const Item& i : n.items) {
         if (i.kind == Item::Kind::Value && i.value.numeric()) scene_.background = colourOf(i.value).rgb;

@@ -223,6 +223,15 @@ TEST_CASE("povray scene: a fog's turbulence and its modifiers; the scene's noise
         "scene.pov:3:37: error: 'warp' is not supported yet");
 }
 
+TEST_CASE("povray scene: scene-level media are read as an interior's, in order", "[povray][media]") {
+  const SceneDesc s = scene("media { emission 0.5 samples 4 } media { absorption <1, 0, 0.5> }\n");
+  REQUIRE(s.media.size() == 2);
+  CHECK(s.media[0].emission == Color(0.5f));
+  CHECK(s.media[0].samples == 4);
+  CHECK(s.media[1].absorption == Color(1, 0, 0.5f));
+  CHECK(s.objects.empty());
+}
+
 TEST_CASE("povray scene: an interior's media, its densities and scattering; other methods are refused", "[povray][media]") {
   const SceneDesc s = scene(R"(
 box { -1, 1 hollow pigment { rgbt 1 }
@@ -286,7 +295,9 @@ sphere { x * 10, 1 }
                 "box { -1, 1 interior { media { absorption 1 } } }\n") ==
         "scene.pov:3:25: error: 'media_attenuation' is not supported yet");
   CHECK(failure("light_source { 0, White media_attenuation on }\n") == "no error");  // nothing to dim it
-  CHECK(failure("media { emission 1 }\n") == "scene.pov:3:1: error: 'media' is not supported yet");
+  CHECK(failure("light_source { 0, White media_attenuation on }\nmedia { emission 1 }\n") ==
+        "scene.pov:3:25: error: 'media_attenuation' is not supported yet");
+  CHECK(failure("media { emission 1 method 1 }\n") == "scene.pov:3:20: error: 'media method other than 3' is not supported yet");
   // An object inside a medium, or a plane across it, is drawn (POV-Ray's rule on hollow objects).
   CHECK(failure("sphere { 0, 1 hollow interior { media { emission 1 } } scale 3 }\nsphere { x * 3.5, 1 }\n"
                 "plane { y, 2 translate -y }\n") == "no error");
