@@ -143,12 +143,18 @@ plane { y, 0 pigment { checker rgb 1 rgb 0.3 } }
 POV
 echo '#declare Orange = rgb <1, 0.4, 0.2>;' >spin.inc
 switches=(+Ispin.pov +W"$width" +H"$height" +KFI0 +KFF3)
-frames() {
-  RAYTRACE=$raytrace sbatch --wait --array=0-3 "$here/render-frames.sbatch" "${switches[@]}" +Oslurm/spin >/dev/null
+# Submits the animation into folder $1 by the command after it, renders it on one machine, compares every
+# frame and shows the tasks' logs.
+animation() {
+  local out=$1
+  shift
+  rm -f frame-*.log
+  RAYTRACE=$raytrace "$@" "${switches[@]}" +O"$out"/spin >/dev/null
   "$raytrace" "${switches[@]}" +Oone/spin
-  for f in 0 1 2 3; do cmp "one/spin$f.png" "slurm/spin$f.png"; done
+  for f in 0 1 2 3; do cmp "one/spin$f.png" "$out/spin$f.png"; done
   cat frame-*.log
 }
+frames() { animation slurm sbatch --wait --array=0-3 "$here/render-frames.sbatch"; }
 said() {
   [ "$(cat frame-*.log | grep -c "$1")" = "$2" ] || { echo "local-cluster: not $2 frames $1" >&2; exit 1; }
 }
@@ -170,13 +176,7 @@ echo "local-cluster: frames resubmitted after a deleted frame and an edited incl
 # A fresh start: the stamps of the frames above are of other switches.
 rm -rf frames.stamps
 mkdir -p tiled
-tiled() {
-  rm -f frame-*.log
-  RAYTRACE=$raytrace "$here/submit.sh" --frames 0-3 -n 2 --wait -- "${switches[@]}" +Otiled/spin >/dev/null
-  "$raytrace" "${switches[@]}" +Oone/spin
-  for f in 0 1 2 3; do cmp "one/spin$f.png" "tiled/spin$f.png"; done
-  cat frame-*.log
-}
+tiled() { animation tiled "$here/submit.sh" --frames 0-3 -n 2 --wait --; }
 tiled
 said "is not rendered yet: rendering its tile" 8
 said "is not rendered yet: merging its tiles" 4
