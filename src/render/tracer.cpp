@@ -832,7 +832,7 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
     if (entering && m.extras->fadeDistance > 0) gathered *= interiorFade(m, float(t.distance));
     refraction = w.transmission * gathered;
   }
-  Color reflectTint = dialect_.reflectionTint(m.pigment);
+  Color reflectTint = dialect_.reflectionTint(m.pigment) * m.extras->reflectionTint;
   if (m.extras->reflectionMetallic != 0) {
     reflectTint *= metallicTint(m.pigment, m.extras->reflectionMetallic, float(glm::dot(n, -ray.dir)));
   }

@@ -328,6 +328,17 @@ TEST_CASE("area_illumination lights a point from each grid point's own direction
   checkColor(centre(wallScene("area_light 2*x, 0*z, 2, 1 area_illumination off", 5)), Color(float(nl(5))), 1e-5);
 }
 
+TEST_CASE("A colour reflection tints what the surface reflects, channel by channel", "[render]") {
+  // A mirror facing the camera reflects the background behind it: POV-Ray's picture of this scene is the
+  // background times the reflection's colour, (0.4·0.5, 0.8·0.25, 1·0.1).
+  const std::string text = "#version 3.7;\n"
+      "camera { orthographic location <0, 0, -5> look_at 0 right 0.001*x up 0.001*y }\n"
+      "background { rgb <0.4, 0.8, 1> }\n"
+      "plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0 reflection rgb <0.5, 0.25, 0.1> } }\n";
+  checkColor(centre(rt::povray::parsePovRay(text, "mirror.pov", rt::povray::PovRayOptions{{}, 1, 1, false})),
+             Color(0.2f, 0.2f, 0.1f), 1e-6);
+}
+
 TEST_CASE("area_illumination: pixels of a sphere, a box and a plane under a 5x5 light, as POV-Ray draws them",
           "[render]") {
   // The pixels' bytes from `povray +W40 +H30 -A` of this scene, kept as data. The sphere's lower side, where the

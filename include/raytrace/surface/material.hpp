@@ -39,6 +39,9 @@ struct SurfaceExtras {
   // `reflection { … metallic M }`: reflected light tinted by the pigment, less so toward grazing angles
   // (metallicTint(), shading.hpp); 0: not tinted.
   float reflectionMetallic = 0;
+  // A colour `reflection`: reflected light tinted by the colour over its largest channel, the Material's
+  // `reflection` (POV-Ray 3.7 manual, "Specular Reflection": the reflection may be a colour); white: not tinted.
+  Color reflectionTint{1};
   bool reflectionFresnel = false;
   // conserve_energy: light through the surface is what its reflection leaves (Weights, shading.hpp).
   bool conserveEnergy = false;
@@ -57,7 +60,7 @@ struct SurfaceExtras {
   // Whether any of them changes a picture.
   bool any() const {
     return fadeDistance > 0 || caustics != 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0 ||
-           conserveEnergy || irid || doubleIlluminate || media.has_value() || hollow || interior != 0;
+           reflectionTint != Color(1) || conserveEnergy || irid || doubleIlluminate || media.has_value() || hollow || interior != 0;
   }
 };
 

@@ -568,14 +568,27 @@ std::vector<WarpMark> readPigment(const Node& n, Pigment& p, std::vector<Transfo
   return std::move(draft.warps);
 }
 
+float largest(const Color& c) { return std::max({c.r, c.g, c.b}); }
+
+// A colour reflection as its largest channel and the tint that makes the colour of it.
+Color reflectionTint(const Color& c) { return largest(c) > 0 ? c / largest(c) : Color(1); }
+
+void setReflection(PovFinish& f, const Color& c) {
+  f.reflection = largest(c);
+  f.reflectionTint = reflectionTint(c);
+}
+
 // `reflection { [min,] max [fresnel on] [falloff F] }` (POV-Ray 3.7 manual, "Specular Reflection"): one value
 // reflects the same at every angle, two vary from the first facing the viewer to the second at grazing angles.
 void readReflection(const Node& n, PovFinish& f, ReadingContext& context) {
-  std::vector<double> values;
+  std::vector<Color> values;
   for (size_t i = 0; i < n.items.size(); ++i) {
     const Item& r = n.items[i];
     if (r.kind == Item::Kind::Value && r.value.numeric()) {
-      values.push_back(colourOf(r.value).rgb.r);
+      values.push_back(colourOf(r.value).rgb);
+      if (values.size() == 2 && reflectionTint(values[0]) != reflectionTint(values[1])) {
+        context.refuse(r, "a reflection's minimum and maximum of different hues");
+      }
       continue;
     }
     const Value* v = r.kind == Item::Kind::Keyword ? valueAfter(n, i) : nullptr;
@@ -592,8 +605,8 @@ void readReflection(const Node& n, PovFinish& f, ReadingContext& context) {
     }
   }
   if (values.empty()) return;
-  f.reflection = values.back();
-  f.reflectionMin = values.size() > 1 ? std::optional<double>(values.front()) : std::nullopt;
+  setReflection(f, values.back());
+  f.reflectionMin = values.size() > 1 ? std::optional<double>(largest(values.front())) : std::nullopt;
 }
 
 // `irid { amount [thickness T] [turbulence U] }` (POV-Ray 3.7 manual, "Iridescence"); amount 0 is no film.
@@ -671,7 +684,7 @@ void readFinish(const Node& n, PovFinish& f, ReadingContext& context) {
     } else if (w == "roughness") {
       f.roughness = x;
     } else if (w == "reflection") {
-      f.reflection = x;
+      setReflection(f, colourOf(*v).rgb);
       f.reflectionMin.reset();
     } else if (w == "brilliance") {
       f.brilliance = x;
@@ -849,6 +862,7 @@ FinishTerms finishTerms(const PovFinish& f, const Surface& s) {
   SurfaceExtras extras;
   extras.crand = float(f.crand);
   extras.reflectionMetallic = float(f.reflectionMetallic);
+  extras.reflectionTint = f.reflectionTint;
   extras.conserveEnergy = f.conserveEnergy;
   extras.irid = f.irid;
   // Fresnel with a single value varies from 0 (POV-Ray: `reflection { 1 fresnel }` is a dielectric's mirror).

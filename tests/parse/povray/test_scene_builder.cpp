@@ -405,6 +405,21 @@ sphere { 0, 1 finish { reflection { 0.5 metallic 0.25 } } }
   CHECK(s.objects[0].material.extras->reflectionMetallic == 0);
   CHECK(s.objects[4].material.extras->reflectionMetallic == 1);  // the value is optional
   CHECK(s.objects[5].material.extras->reflectionMetallic == 0.25f);
+  // A colour: its largest channel is the reflection, the colour over it the tint; a grey one has none.
+  const SceneDesc c = scene(R"(
+sphere { 0, 1 finish { reflection rgb <0.5, 0.25, 0.1> } }
+sphere { 0, 1 finish { reflection { rgb <0.1, 0.2, 0.05>, rgb <0.2, 0.4, 0.1> } } }
+sphere { 0, 1 finish { reflection rgb 0.5 } }
+)");
+  REQUIRE(c.objects.size() == 3);
+  CHECK(c.objects[0].material.reflection == 0.5f);
+  CHECK(c.objects[0].material.extras->reflectionTint == Color(1, 0.5f, 0.2f));
+  CHECK(c.objects[1].material.reflection == 0.4f);
+  CHECK(c.objects[1].material.extras->reflectionMin == 0.2f);
+  CHECK(c.objects[1].material.extras->reflectionTint == Color(0.5f, 1, 0.25f));
+  CHECK(c.objects[2].material.extras == &kNoExtras);
+  CHECK(failure("sphere { 0, 1 finish { reflection { rgb <1, 0, 0>, rgb <0, 1, 0> } } }\n") ==
+        "scene.pov:3:52: error: 'a reflection's minimum and maximum of different hues' is not supported yet");
 }
 
 TEST_CASE("povray scene: textures take the transforms after them, at every level, and pass to CSG children",
