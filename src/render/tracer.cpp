@@ -83,7 +83,7 @@ float specularBound(const Material& m, Brdf brdf) {
 // than half an 8-bit step: the byte changes only if the exact value lay within that distance of a rounding
 // boundary. Only deeper trees can reach the ray budget (scenes/depth_bomb.pov would take ~10^11 rays at
 // --depth=64): it bounds an eye ray's work whatever the depth, at the price of that guarantee. bound_ is built
-// bottom-up: a ray returns the background or wl·local + Σ weight·tint·(child colour) with wl ≤ 1, local ≤
+// bottom-up: a ray returns the background or wl·local + Σ weight·tint·(child colour) with |wl·local| ≤
 // Lmax and Σ weight·tint ≤ G, the largest ((1−f)k + f)·max(1, C) of the scene's materials.
 template <class T>
 Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
@@ -106,11 +106,13 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
         local +=
             brightest(light.color) * (brightest(m.diffuse) + brightest(m.specular) * specularBound(m, options.brdf));
       }
-      localMax = std::max(localMax, options.normals ? 1.0f : local);
+      // A filter or transmit outside [0, 1], which POV-Ray draws as written, makes a local weight 1 − f above 1
+      // or below 0, and a transmitted one f below 0.
+      localMax = std::max(localMax, options.normals ? 1.0f : local * std::max(1.0f, std::abs(1 - m.filter)));
       const float reflection = std::max(m.reflection, m.extras->reflectionMin);
       const float reflected = (dialect_.transparencyDimsReflection() ? 1 - m.filter : 1) * reflection;
-      gain = std::max(gain, (reflected + m.filter) * std::max(1.0f, brightest(m.pigment)));
-      filteredShadows_ = filteredShadows_ || (dialect_.filtersShadows() && m.filter > 0);
+      gain = std::max(gain, (reflected + std::abs(m.filter)) * std::max(1.0f, brightest(m.pigment)));
+      filteredShadows_ = filteredShadows_ || (dialect_.filtersShadows() && m.filter != 0);
       interiors_ = interiors_ || fogs_ || m.extras->media.has_value();
     });
   }
@@ -413,7 +415,7 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
   const Weights w = split(ray, hit, m, n, record, refracted);
   Color ambientLight(0);
   Local local;
-  if (w.local > 0) {
+  if (w.local != 0) {
     local = direct(hit, m, side, n, v, record, shadows);
     if (m.extras->doubleIlluminate) {
       // The lights behind the surface, as if seen from that side: the normal and the side to leave by turned.
@@ -449,7 +451,7 @@ Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Material& m
     varied.reflection = variableReflection(m, float(glm::dot(n, -ray.dir)));
     w = weights(varied, fresnel, dialect_);
   }
-  if (w.transmission > 0) {
+  if (w.transmission != 0) {
     // The outward normal as the shading normal bends it: hit.normal itself where nothing bends it.
     refracted = refractDirection(ray.dir, glm::dot(ray.dir, hit.normal) <= T(0) ? n : -n, m.ior);
     if (!refracted) {  // total internal reflection: the transmitted share is reflected (§c.4)
@@ -814,11 +816,11 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
   Color refraction(0), reflection(0);
   Path child = path;
   ++child.depth;
-  // The weight a child's colour has in the pixel includes the tint put on it: transmitted light is tinted by
-  // the object it travelled in (§c.4; Beer's law instead, §c.6), reflected light by the pigment (§c.3).
-  const Color transmitTint = entering && !options_.beers ? m.pigment : Color(1);
-  child.weight = path.weight * w.transmission * brightest(transmitTint);
-  if (child.depth <= maxDepth_ && w.transmission > 0 && matters(child.weight, child.depth)) {
+  // The weight a child's colour has in the pixel includes the tint put on it: transmitted light is tinted as
+  // the dialect says (Beer's law instead, §c.6), reflected light by the pigment (§c.3).
+  const Color transmitTint = options_.beers ? Color(1) : dialect_.transmissionTint(m.pigment, entering);
+  child.weight = path.weight * std::abs(w.transmission) * brightest(transmitTint);
+  if (child.depth <= maxDepth_ && w.transmission != 0 && matters(child.weight, child.depth)) {
     RayRecord* sub = record ? &record->children.emplace_back() : nullptr;
     if (sub) sub->extraInfo.push_back(entering ? "into-object" : "into-air");
     if (options_.gi.enabled) child.key = childKey(path.key, kRefractionBranch);

@@ -180,7 +180,7 @@ TierDomain tierDomain(const SceneDesc& scene, View view) {
     out.textbookPixels = std::max(out.textbookPixels, textbook / footprint);
     out.robustPixels = std::max(out.robustPixels, s.most * robustSphereError(D) / footprint);
     out.textbookHitError = std::max(out.textbookHitError, textbook);
-    if (o.material.filter > 0) {
+    if (o.material.filter != 0) {
       const double behind = farthest(s.center);
       out.offsetRefractionPixels =
           std::max(out.offsetRefractionPixels, 2 * kCourseEpsilon / (s.least * s.radius) * behind / footprint);

@@ -18,7 +18,7 @@ Material layerMaterial(const FinishTerms& f, const Rgbft& c) {
   Material m;
   // The light let through is filter·C + transmit: the tracer's transmitted share is f + t, tinted by `pigment`.
   const float through = c.filter + c.transmit;
-  m.pigment = through > 0 ? (c.filter * c.rgb + Color(c.transmit)) / through : c.rgb;
+  m.pigment = through != 0 ? (c.filter * c.rgb + Color(c.transmit)) / through : c.rgb;
   m.filter = through;
   m.ambient = f.ambient * c.rgb;
   m.diffuse = f.diffuse * c.rgb;
@@ -51,7 +51,7 @@ Texture bounded(Texture t) {
   b.exponent = 0;
   const auto take = [&b](const Material& m) {
     b.pigment = glm::max(b.pigment, m.pigment);
-    b.filter = std::max(b.filter, m.filter);
+    b.filter = std::max(b.filter, std::abs(m.filter));  // POV-Ray draws a filter below 0 as written
     b.ambient = glm::max(b.ambient, m.ambient);
     b.diffuse = glm::max(b.diffuse, m.diffuse);
     b.specular = glm::max(b.specular, m.specular);

@@ -339,6 +339,31 @@ TEST_CASE("A colour reflection tints what the surface reflects, channel by chann
              Color(0.2f, 0.2f, 0.1f), 1e-6);
 }
 
+TEST_CASE("A filter or transmit outside [0, 1] is drawn as written, in eye rays and in shadows", "[render]") {
+  // POV-Ray's `transmit 100` trick: the surface adds (1 − t)·ambient·C and t times what is behind, whatever t.
+  const auto seen = [](const std::string& pigment) {
+    const std::string text = "#version 3.7;\n"
+        "camera { orthographic location <0, 0, -5> look_at 0 right 0.001*x up 0.001*y }\n"
+        "background { rgb 0.3 }\n"
+        "plane { z, 0 pigment { " + pigment + " } finish { ambient 1 diffuse 0 } }\n";
+    return centre(rt::povray::parsePovRay(text, "window.pov", rt::povray::PovRayOptions{{}, 1, 1, false}));
+  };
+  checkColor(seen("rgb 0.5 transmit 2"), Color(-1 * 0.5f + 2 * 0.3f));
+  checkColor(seen("rgb 0.5 transmit -1"), Color(2 * 0.5f - 0.3f));
+  checkColor(seen("rgb 0.5 filter -1"), Color(2 * 0.5f - 0.5f * 0.3f));
+  // A light straight above a white plane, through an unseen sheet (one crossing) or box (two) of transmit −1.
+  const auto lit = [](const std::string& shape) {
+    const std::string text = "#version 3.7;\n"
+        "camera { orthographic location <0, 5, 0> look_at 0 right 0.001*x up 0.001*z }\n"
+        "light_source { <0, 10, 0> rgb 1 }\n"
+        "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n" +
+        shape + " pigment { rgb 0.5 transmit -1 } no_image }\n";
+    return centre(rt::povray::parsePovRay(text, "shadow.pov", rt::povray::PovRayOptions{{}, 1, 1, false}));
+  };
+  checkColor(lit("disc { 2*y, y, 1"), Color(-1));
+  checkColor(lit("box { <-1, 2, -1>, <1, 3, 1>"), Color(1));
+}
+
 TEST_CASE("area_illumination: pixels of a sphere, a box and a plane under a 5x5 light, as POV-Ray draws them",
           "[render]") {
   // The pixels' bytes from `povray +W40 +H30 -A` of this scene, kept as data. The sphere's lower side, where the

@@ -34,7 +34,8 @@ class Dialect {
   }
 
   // POV-Ray 3.7 (docs/povray-language.md): reflected light added to the surface's own, untinted and whole
-  // however transparent the surface (manual, "Specular Reflection"; measured); light reaching a point through transparent surfaces, tinted by each; five levels
+  // however transparent the surface (manual, "Specular Reflection"; measured); light through a transparent
+  // surface tinted at each surface it crosses, in eye rays as in shadows (measured); five levels
   // (manual, "Max_Trace_Level"). `gamma` is the scene's assumed_gamma: the sRGB of each pixel's colour raised to
   // it is written, or, at 0 (a scene before #version 3.7 without assumed_gamma), the colours as they are,
   // rounded (docs/povray-language.md, "Gamma").
@@ -44,6 +45,7 @@ class Dialect {
     d.reflectionTakesPigment_ = false;
     d.transparencyDimsReflection_ = false;
     d.filtersShadows_ = true;
+    d.tintsEachCrossing_ = true;
     if (gamma > 0) {
       d.toByte_ = ToByte::Srgb;
       d.gamma_ = float(gamma);
@@ -63,6 +65,11 @@ class Dialect {
   // Whether a surface's reflection k counts for its opaque share alone, (1−f)·k, or whole (render/shading.hpp,
   // Weights).
   bool transparencyDimsReflection() const { return transparencyDimsReflection_; }
+  // The tint on light a surface of this pigment lets through: on the way into its object alone (the course:
+  // transmitted light takes the colour of the object it travelled in, §c.4), or at every surface crossed.
+  Color transmissionTint(const Color& pigment, bool entering) const {
+    return entering || tintsEachCrossing_ ? pigment : Color(1);
+  }
 
   // What a ray's colour becomes before the level above weighs it, and the largest it can be for a colour whose
   // largest channel is at most `brightest`.
@@ -84,6 +91,7 @@ class Dialect {
   bool reflectionReplacesLocal_ = true;
   bool reflectionTakesPigment_ = true;
   bool transparencyDimsReflection_ = true;
+  bool tintsEachCrossing_ = false;
   bool clampsEachBounce_ = false;
   int depthLimit_ = 5;
   bool shadesAtDepthLimit_ = true;
