@@ -414,10 +414,13 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
   Color ambientLight(0);
   Local local;
   if (w.local > 0) {
-    local = direct(hit, m, side, n, v, record, shadows);
+    // Measured with POV-Ray 3.7 (docs/gi.md, "POV-Ray's radiosity"): where a radiosity ray lands, an area
+    // light lights as a point light at its centre, shadows and all.
+    const bool areaAsPoint = path.bounce > 0 && options_.gi.radiosity;
+    local = direct(hit, m, side, n, v, record, shadows, areaAsPoint);
     if (m.extras->doubleIlluminate) {
       // The lights behind the surface, as if seen from that side: the normal and the side to leave by turned.
-      const Local behind = direct(hit, m, -side, -n, v, record, nullptr);
+      const Local behind = direct(hit, m, -side, -n, v, record, nullptr, areaAsPoint);
       local.diffuse += behind.diffuse;
       local.specular += behind.specular;
     }
@@ -556,17 +559,17 @@ Color Tracer<T>::gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path
 template <class T>
 typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m, const Vec3<T>& side,
                                             const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
-                                            const std::optional<ShadowRay>* shadows) {
+                                            const std::optional<ShadowRay>* shadows, bool areaAsPoint) {
   const bool plain = !sampledLights_ && n == side && !(m.extras->crand > 0) && !m.extras->irid;
-  return plain ? lightLoop<true>(hit, m, side, n, v, record, shadows)
-               : lightLoop<false>(hit, m, side, n, v, record, shadows);
+  return plain ? lightLoop<true>(hit, m, side, n, v, record, shadows, areaAsPoint)
+               : lightLoop<false>(hit, m, side, n, v, record, shadows, areaAsPoint);
 }
 
 template <class T>
 template <bool kPlain>
 typename Tracer<T>::Local Tracer<T>::lightLoop(const Hit<T>& hit, const Material& m, const Vec3<T>& side,
                                                const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
-                                               const std::optional<ShadowRay>* shadows) {
+                                               const std::optional<ShadowRay>* shadows, bool areaAsPoint) {
   const bool bent = !kPlain && n != side;
   // Summed in locals, not in the returned struct: that one lives in the caller's memory, and each sum would
   // wait for the store before it.
@@ -578,7 +581,7 @@ typename Tracer<T>::Local Tracer<T>::lightLoop(const Hit<T>& hit, const Material
     ShadowRay own;
     const ShadowRay* s = nullptr;
     if (!kPlain && light.sampled) {
-      if (sampledLight(hit, n, light, i, own, lightColor)) s = &own;
+      if (sampledLight(hit, n, light, i, own, lightColor, areaAsPoint)) s = &own;
     } else if (shadows) {
       if (shadows[i]) s = &*shadows[i];
     } else if (shadowRay(hit, side, light, own)) {
@@ -599,7 +602,7 @@ typename Tracer<T>::Local Tracer<T>::lightLoop(const Hit<T>& hit, const Material
       const double distance = glm::length(toPoint);
       lightColor *= light.shape->at(toPoint / distance, distance);
     }
-    if (!kPlain && light.area && light.area->illumination) {
+    if (!kPlain && light.area && light.area->illumination && !areaAsPoint) {
       illuminate(hit, n, v, m, light, i, lightColor, diffuse, specular);
       if (crand > 0) diffuse -= grain(lightColor, m, hit.point, i);
       continue;
@@ -869,7 +872,7 @@ bool Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& l
 
 template <class T>
 bool Tracer<T>::sampledLight(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, size_t index,
-                             ShadowRay& out, Color& lightColor) {
+                             ShadowRay& out, Color& lightColor, bool areaAsPoint) {
   const OffsetPolicy offset = *scene_.arithmetic().offset;
   // A parallel light shines along its direction from the plane through its position across it; a point beyond
   // that plane is lit with no shadow (POV-Ray 3.7 manual, "Parallel Lights").
@@ -881,7 +884,7 @@ bool Tracer<T>::sampledLight(const Hit<T>& hit, const Vec3<T>& n, const Light<T>
   spawnRayTo(hit, target(light.position), out.l, n, offset, out.ray, out.segment);
   out.occluded = false;
   // With area_illumination a grid point above the surface's horizon may light it while the centre is below.
-  const bool lit = out.nl > 0.0f || (light.area && light.area->illumination);
+  const bool lit = out.nl > 0.0f || (light.area && light.area->illumination && !areaAsPoint);
   if (!lit || (light.shadowless && !scene_.projected(index))) return lit;
   const bool beyond = light.parallel && !(glm::dot(light.position - hit.point, *light.parallel) > T(0));
   // What reaches the point from `at` along a shadow ray: all, none, or through transparent surfaces.
@@ -894,7 +897,7 @@ bool Tracer<T>::sampledLight(const Hit<T>& hit, const Vec3<T>& n, const Light<T>
     return scene_.occluded(ray, *segment, &lastOccluder_[index]) ? Color(0) : Color(1);
   };
   Color share(1);
-  if (!light.area) {
+  if (!light.area || areaAsPoint) {
     if (!beyond) share = seen(out.ray, out.segment);
   } else if (!beyond) {
     const GridSeenFrom grid(*light.area, glm::dvec3(light.position), hit.point, index);
