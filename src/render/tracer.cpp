@@ -696,29 +696,45 @@ template <class T> struct Tracer<T>::MediaLighting final : MediaLights {
     for (size_t i = 0; i < tracer.scene_.lights().size(); ++i) {
       const Light<T>& light = tracer.scene_.lights()[i];
       if (!light.mediaInteraction) continue;
-      // A parallel light shines along its direction from the plane through its position (sampledLight).
-      const Vec3<T> toLight = light.parallel ? *light.parallel : light.position - p;
-      const T distance = light.parallel ? glm::dot(light.position - p, *light.parallel) : glm::length(toLight);
-      const Vec3<T> l = light.parallel ? toLight : toLight / distance;
       Color color = light.color;
       if (light.shape) {
         const glm::dvec3 fromLight = glm::dvec3(p - light.position);
         const double length = glm::length(fromLight);
         color *= light.shape->at(fromLight / length, length);
       }
-      if ((!light.shadowless || tracer.scene_.projected(i)) && distance > T(0)) {
-        const Ray<T> ray{p, l};
-        const std::optional<Interval<T>> segment = tracer.scene_.reaching(i, ray, Interval<T>{T(0), distance});
-        if (!segment) continue;
-        if (!light.shadowless && tracer.filteredShadows_) {
-          color *= tracer.transmittance(ray, *segment);
-        } else if (!light.shadowless) {
-          ++tracer.counts_.shadow;
-          if (tracer.scene_.occluded(ray, *segment, &tracer.lastOccluder_[i])) color = Color(0);
+      // Measured with POV-Ray 3.7 (docs/povray-language.md, "Media"): a medium sees every point of an area
+      // light's grid as a light of its own, whatever `adaptive` says, so its shadow shafts are soft.
+      if (light.area && !light.parallel) {
+        const AreaLight& area = *light.area;
+        const GridSeenFrom grid(area, glm::dvec3(light.position), p, i);
+        const Color each = color / float(area.size1 * area.size2);
+        for (int v = 0; v < area.size2; ++v) {
+          for (int u = 0; u < area.size1; ++u) arrive(p, light, i, Vec3<T>(grid(u, v)), each, out);
         }
+      } else {
+        arrive(p, light, i, light.position, color, out);
       }
-      if (color != Color(0)) out.push_back({glm::dvec3(l), color});
     }
+  }
+  // The light `color` from `from` that reaches `p`, past the shadows on its way.
+  void arrive(const Vec3<T>& p, const Light<T>& light, size_t i, const Vec3<T>& from, Color color,
+              std::vector<Arrival>& out) {
+    // A parallel light shines along its direction from the plane through its position (sampledLight).
+    const Vec3<T> toLight = light.parallel ? *light.parallel : from - p;
+    const T distance = light.parallel ? glm::dot(from - p, *light.parallel) : glm::length(toLight);
+    const Vec3<T> l = light.parallel ? toLight : toLight / distance;
+    if ((!light.shadowless || tracer.scene_.projected(i)) && distance > T(0)) {
+      const Ray<T> ray{p, l};
+      const std::optional<Interval<T>> segment = tracer.scene_.reaching(i, ray, Interval<T>{T(0), distance});
+      if (!segment) return;
+      if (!light.shadowless && tracer.filteredShadows_) {
+        color *= tracer.transmittance(ray, *segment);
+      } else if (!light.shadowless) {
+        ++tracer.counts_.shadow;
+        if (tracer.scene_.occluded(ray, *segment, &tracer.lastOccluder_[i])) color = Color(0);
+      }
+    }
+    if (color != Color(0)) out.push_back({glm::dvec3(l), color});
   }
   Tracer& tracer;
 };
