@@ -413,7 +413,9 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
   const Weights w = split(ray, hit, m, n, record, refracted);
   Color ambientLight(0);
   Local local;
-  if (w.local > 0) {
+  // The cache's prepass keeps only the records its rays make, not its pixels: the direct light of a hit not
+  // gathered (bounce 0) would go into the pixel alone, so it is left out there.
+  if (w.local > 0 && !(made_ && path.bounce == 0)) {
     // Measured with POV-Ray 3.7 (docs/gi.md, "POV-Ray's radiosity"): where a radiosity ray lands, an area
     // light lights as a point light at its centre, shadows and all.
     const bool areaAsPoint = path.bounce > 0 && options_.gi.radiosity;
@@ -424,8 +426,8 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
       local.diffuse += behind.diffuse;
       local.specular += behind.specular;
     }
-    ambientLight = w.local * ambient(hit, m, side, path);
   }
+  if (w.local > 0) ambientLight = w.local * ambient(hit, m, side, path);
   local.diffuse *= w.local;
   local.specular *= w.local;
   const Color secondaryLight = secondary(ray, hit, m, n, w, refracted, path, record);

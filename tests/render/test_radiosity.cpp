@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "raytrace/render/irradiance_prepass.hpp"
 #include "raytrace/render/radiosity.hpp"
 #include "raytrace/render/renderer.hpp"
 #include "pov_scene.hpp"
@@ -149,4 +150,21 @@ TEST_CASE("radiosity: where a gathered ray lands an area light lights as a point
   for (int y = 0; y < 6; ++y) {
     for (int x = 0; x < 8; ++x) CHECK(a.at(x, y) == p.at(x, y));
   }
+}
+
+TEST_CASE("radiosity: the cache's prepass traces no shadow ray where no gathered ray lands", "[radiosity]") {
+  // The prepass keeps the records alone; the light of the eye's hits goes into pixels it throws away. Every
+  // gathered ray from the floor leaves for the sky, so the area light's 4 shadow rays a hit are never needed.
+  const SceneDesc scene = test::pov("global_settings { radiosity { count 64 } }\n"
+                                    "camera { location <0, 4, -4> look_at 0 }\n"
+                                    "light_source { <0, 5, 0> rgb 1 area_light x, z, 2, 2 }\n"
+                                    "plane { y, 0 pigment { rgb 1 } }\n");
+  const RenderOptions o = options(scene);
+  const Scene<double> built(scene, chooseArithmetic(scene, o.arithmetic));
+  RayCounts counts;
+  prepareIrradianceCache(built, Camera<double>(scene.camera, 8, 6), o, &counts, nullptr);
+  CHECK(counts.eye == 48);
+  CHECK(counts.cacheRecords > 0);
+  CHECK(counts.gather > 0);
+  CHECK(counts.shadow == 0);
 }
