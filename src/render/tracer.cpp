@@ -415,16 +415,21 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
   const Weights w = split(ray, hit, m, n, record, refracted);
   Color ambientLight(0);
   Local local;
-  if (w.local != 0) {
-    local = direct(hit, m, side, n, v, record, shadows);
+  // The cache's prepass keeps only the records its rays make, not its pixels: the direct light of a hit not
+  // gathered (bounce 0) would go into the pixel alone, so it is left out there.
+  if (w.local != 0 && !(made_ && path.bounce == 0)) {
+    // Measured with POV-Ray 3.7 (docs/gi.md, "POV-Ray's radiosity"): where a radiosity ray lands, an area
+    // light lights as a point light at its centre, shadows and all.
+    const bool areaAsPoint = path.bounce > 0 && options_.gi.radiosity;
+    local = direct(hit, m, side, n, v, record, shadows, areaAsPoint);
     if (m.extras->doubleIlluminate) {
       // The lights behind the surface, as if seen from that side: the normal and the side to leave by turned.
-      const Local behind = direct(hit, m, -side, -n, v, record, nullptr);
+      const Local behind = direct(hit, m, -side, -n, v, record, nullptr, areaAsPoint);
       local.diffuse += behind.diffuse;
       local.specular += behind.specular;
     }
-    ambientLight = w.local * ambient(hit, m, side, path);
   }
+  if (w.local > 0) ambientLight = w.local * ambient(hit, m, side, path);
   local.diffuse *= w.local;
   local.specular *= w.local;
   const Color secondaryLight = secondary(ray, hit, m, n, w, refracted, path, record);
@@ -558,17 +563,17 @@ Color Tracer<T>::gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path
 template <class T>
 typename Tracer<T>::Local Tracer<T>::direct(const Hit<T>& hit, const Material& m, const Vec3<T>& side,
                                             const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
-                                            const std::optional<ShadowRay>* shadows) {
+                                            const std::optional<ShadowRay>* shadows, bool areaAsPoint) {
   const bool plain = !sampledLights_ && n == side && !(m.extras->crand > 0) && !m.extras->irid;
-  return plain ? lightLoop<true>(hit, m, side, n, v, record, shadows)
-               : lightLoop<false>(hit, m, side, n, v, record, shadows);
+  return plain ? lightLoop<true>(hit, m, side, n, v, record, shadows, areaAsPoint)
+               : lightLoop<false>(hit, m, side, n, v, record, shadows, areaAsPoint);
 }
 
 template <class T>
 template <bool kPlain>
 typename Tracer<T>::Local Tracer<T>::lightLoop(const Hit<T>& hit, const Material& m, const Vec3<T>& side,
                                                const Vec3<T>& n, const Vec3<T>& v, RayRecord* record,
-                                               const std::optional<ShadowRay>* shadows) {
+                                               const std::optional<ShadowRay>* shadows, bool areaAsPoint) {
   const bool bent = !kPlain && n != side;
   // Summed in locals, not in the returned struct: that one lives in the caller's memory, and each sum would
   // wait for the store before it.
@@ -580,7 +585,7 @@ typename Tracer<T>::Local Tracer<T>::lightLoop(const Hit<T>& hit, const Material
     ShadowRay own;
     const ShadowRay* s = nullptr;
     if (!kPlain && light.sampled) {
-      if (sampledLight(hit, n, light, i, own, lightColor)) s = &own;
+      if (sampledLight(hit, n, light, i, own, lightColor, areaAsPoint)) s = &own;
     } else if (shadows) {
       if (shadows[i]) s = &*shadows[i];
     } else if (shadowRay(hit, side, light, own)) {
@@ -601,7 +606,7 @@ typename Tracer<T>::Local Tracer<T>::lightLoop(const Hit<T>& hit, const Material
       const double distance = glm::length(toPoint);
       lightColor *= light.shape->at(toPoint / distance, distance);
     }
-    if (!kPlain && light.area && light.area->illumination) {
+    if (!kPlain && light.area && light.area->illumination && !areaAsPoint) {
       illuminate(hit, n, v, m, light, i, lightColor, diffuse, specular);
       if (crand > 0) diffuse -= grain(lightColor, m, hit.point, i);
       continue;
@@ -695,29 +700,45 @@ template <class T> struct Tracer<T>::MediaLighting final : MediaLights {
     for (size_t i = 0; i < tracer.scene_.lights().size(); ++i) {
       const Light<T>& light = tracer.scene_.lights()[i];
       if (!light.mediaInteraction) continue;
-      // A parallel light shines along its direction from the plane through its position (sampledLight).
-      const Vec3<T> toLight = light.parallel ? *light.parallel : light.position - p;
-      const T distance = light.parallel ? glm::dot(light.position - p, *light.parallel) : glm::length(toLight);
-      const Vec3<T> l = light.parallel ? toLight : toLight / distance;
       Color color = light.color;
       if (light.shape) {
         const glm::dvec3 fromLight = glm::dvec3(p - light.position);
         const double length = glm::length(fromLight);
         color *= light.shape->at(fromLight / length, length);
       }
-      if ((!light.shadowless || tracer.scene_.projected(i)) && distance > T(0)) {
-        const Ray<T> ray{p, l};
-        const std::optional<Interval<T>> segment = tracer.scene_.reaching(i, ray, Interval<T>{T(0), distance});
-        if (!segment) continue;
-        if (!light.shadowless && tracer.filteredShadows_) {
-          color *= tracer.transmittance(ray, *segment);
-        } else if (!light.shadowless) {
-          ++tracer.counts_.shadow;
-          if (tracer.scene_.occluded(ray, *segment, &tracer.lastOccluder_[i])) color = Color(0);
+      // Measured with POV-Ray 3.7 (docs/povray-language.md, "Media"): a medium sees every point of an area
+      // light's grid as a light of its own, whatever `adaptive` says, so its shadow shafts are soft.
+      if (light.area && !light.parallel) {
+        const AreaLight& area = *light.area;
+        const GridSeenFrom grid(area, glm::dvec3(light.position), p, i);
+        const Color each = color / float(area.size1 * area.size2);
+        for (int v = 0; v < area.size2; ++v) {
+          for (int u = 0; u < area.size1; ++u) arrive(p, light, i, Vec3<T>(grid(u, v)), each, out);
         }
+      } else {
+        arrive(p, light, i, light.position, color, out);
       }
-      if (color != Color(0)) out.push_back({glm::dvec3(l), color});
     }
+  }
+  // The light `color` from `from` that reaches `p`, past the shadows on its way.
+  void arrive(const Vec3<T>& p, const Light<T>& light, size_t i, const Vec3<T>& from, Color color,
+              std::vector<Arrival>& out) {
+    // A parallel light shines along its direction from the plane through its position (sampledLight).
+    const Vec3<T> toLight = light.parallel ? *light.parallel : from - p;
+    const T distance = light.parallel ? glm::dot(from - p, *light.parallel) : glm::length(toLight);
+    const Vec3<T> l = light.parallel ? toLight : toLight / distance;
+    if ((!light.shadowless || tracer.scene_.projected(i)) && distance > T(0)) {
+      const Ray<T> ray{p, l};
+      const std::optional<Interval<T>> segment = tracer.scene_.reaching(i, ray, Interval<T>{T(0), distance});
+      if (!segment) return;
+      if (!light.shadowless && tracer.filteredShadows_) {
+        color *= tracer.transmittance(ray, *segment);
+      } else if (!light.shadowless) {
+        ++tracer.counts_.shadow;
+        if (tracer.scene_.occluded(ray, *segment, &tracer.lastOccluder_[i])) color = Color(0);
+      }
+    }
+    if (color != Color(0)) out.push_back({glm::dvec3(l), color});
   }
   Tracer& tracer;
 };
@@ -871,7 +892,7 @@ bool Tracer<T>::shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& l
 
 template <class T>
 bool Tracer<T>::sampledLight(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, size_t index,
-                             ShadowRay& out, Color& lightColor) {
+                             ShadowRay& out, Color& lightColor, bool areaAsPoint) {
   const OffsetPolicy offset = *scene_.arithmetic().offset;
   // A parallel light shines along its direction from the plane through its position across it; a point beyond
   // that plane is lit with no shadow (POV-Ray 3.7 manual, "Parallel Lights").
@@ -883,7 +904,7 @@ bool Tracer<T>::sampledLight(const Hit<T>& hit, const Vec3<T>& n, const Light<T>
   spawnRayTo(hit, target(light.position), out.l, n, offset, out.ray, out.segment);
   out.occluded = false;
   // With area_illumination a grid point above the surface's horizon may light it while the centre is below.
-  const bool lit = out.nl > 0.0f || (light.area && light.area->illumination);
+  const bool lit = out.nl > 0.0f || (light.area && light.area->illumination && !areaAsPoint);
   if (!lit || (light.shadowless && !scene_.projected(index))) return lit;
   const bool beyond = light.parallel && !(glm::dot(light.position - hit.point, *light.parallel) > T(0));
   // What reaches the point from `at` along a shadow ray: all, none, or through transparent surfaces.
@@ -896,7 +917,7 @@ bool Tracer<T>::sampledLight(const Hit<T>& hit, const Vec3<T>& n, const Light<T>
     return scene_.occluded(ray, *segment, &lastOccluder_[index]) ? Color(0) : Color(1);
   };
   Color share(1);
-  if (!light.area) {
+  if (!light.area || areaAsPoint) {
     if (!beyond) share = seen(out.ray, out.segment);
   } else if (!beyond) {
     const GridSeenFrom grid(*light.area, glm::dvec3(light.position), hit.point, index);

@@ -785,6 +785,31 @@ TEST_CASE("Scene-level media fill the scene as an outermost hollow interior, as 
   }
 }
 
+TEST_CASE("A medium sees each point of an area light's grid, as POV-Ray draws it", "[render][media]") {
+  // A 2 × 1 area light has its points at x = ±2; the plate hides the left one, not the centre, from the whole
+  // way of the centre's eye ray, so half the light a point light gives is scattered. POV-Ray 3.7's pictures
+  // (16-bit, linear): 0.41009 for the point light, 0.20505 for the area light, `adaptive 1` or not.
+  const std::string scene = "global_settings { assumed_gamma 1 }\n"
+                            "camera { orthographic location <0, 0, -5> look_at 0 right x * 2 up y * 2 }\n"
+                            "background { rgb 0 }\n"
+                            "media { scattering { 1, 0.05 } }\n"
+                            "box { <-9, -9, 5>, <9, 9, 6> pigment { rgb 0 } finish { ambient 0 diffuse 0 } }\n"
+                            "box { <-2.5, 9, -9>, <-1.5, 9.1, 9> pigment { rgb 0 } }\n";
+  const struct {
+    std::string light;
+    double povray;
+  } measured[] = {{"", 0.41009},
+                  {"area_light <4, 0, 0>, <0, 0, 0>, 2, 1", 0.20505},
+                  {"area_light <4, 0, 0>, <0, 0, 0>, 2, 1 adaptive 1", 0.20505}};
+  for (const auto& m : measured) {
+    INFO(m.light);
+    const SceneDesc desc = povray::parsePovRay(
+        "#version 3.7;\n" + scene + "light_source { <0, 10, 0>, rgb 1 " + m.light + " }\n", "scene.pov",
+        povray::PovRayOptions{{}, 1, 1, false});
+    CHECK_THAT(centre(desc).r, Catch::Matchers::WithinAbs(m.povray, 2e-5));
+  }
+}
+
 TEST_CASE("A medium's density moves with its object", "[render][media]") {
   // The gradient's ramp, moved by the box's translate, reads from 0 at the box's near side: as unmoved.
   const auto seen = [](const char* box) {

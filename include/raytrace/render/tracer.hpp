@@ -184,14 +184,14 @@ template <class T> class Tracer {
   Color gatherSet(const Hit<T>& hit, const Vec3<T>& n, const Path& path, int count);
   // Diffuse and specular light from every light the point sees (§c.1, §c.7), before weighting. `side` is the
   // surface's normal on the viewer's side, `n` the shading normal (side, or bent by a texture's normal), `v`
-  // the unit vector to the viewer.
+  // the unit vector to the viewer. With `areaAsPoint` an area light lights as a point light at its centre.
   Local direct(const Hit<T>& hit, const Material& m, const Vec3<T>& side, const Vec3<T>& n, const Vec3<T>& v,
-               RayRecord* record, const std::optional<ShadowRay>* shadows);
+               RayRecord* record, const std::optional<ShadowRay>* shadows, bool areaAsPoint);
   // direct()'s loop over the lights; `kPlain` compiles out what only area and parallel lights, a bent normal
   // and crand need, so that a scene without them pays nothing for them.
   template <bool kPlain>
   Local lightLoop(const Hit<T>& hit, const Material& m, const Vec3<T>& side, const Vec3<T>& n, const Vec3<T>& v,
-                  RayRecord* record, const std::optional<ShadowRay>* shadows);
+                  RayRecord* record, const std::optional<ShadowRay>* shadows, bool areaAsPoint);
   // The reflected and refracted light, weighted and tinted (§c.3, §c.4, §c.6), traced refraction first as the
   // course prints them (§a.3).
   Color secondary(const Ray<T>& ray, const Hit<T>& hit, const Material& m, const Vec3<T>& n, const Weights& w,
@@ -203,9 +203,10 @@ template <class T> class Tracer {
   bool shadowRay(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, ShadowRay& out) const;
   // The shadow ray toward a light the packets leave out (Light::sampled) as shadowRay() makes it, with the light
   // that reaches the point multiplied into `lightColor`: an area light's share of its grid (AreaLight::share),
-  // a parallel light's along its direction. False when the light cannot light the point.
+  // a parallel light's along its direction; with `areaAsPoint`, an area light's centre alone. False when the
+  // light cannot light the point.
   bool sampledLight(const Hit<T>& hit, const Vec3<T>& n, const Light<T>& light, size_t index, ShadowRay& out,
-                    Color& lightColor);
+                    Color& lightColor, bool areaAsPoint);
   // POV-Ray's area_illumination (manual, "Area Lights"): the diffuse and specular light of an area light as
   // the mean of its grid's points, each a point light from its own direction (jittered as sampledLight's),
   // added into `diffuse` and `specular`; `lightColor` already holds the grid's shadow share.
