@@ -592,6 +592,34 @@ box { <-5, -5, -1>, <5, 5, 1> hollow pigment { rgbt 1 } interior { media { absor
   checkColor(centre(scene), Color(float(0.27451 + std::exp(-1.0))));
 }
 
+TEST_CASE("Several media in one interior add up, as POV-Ray draws them", "[render][media]") {
+  // POV-Ray 3.7's picture of this scene, 16-bit and linear: the sum of samples 1 (the first medium's) over
+  // absorption 0.75 and emission 0.2, 0.2 · (1 + e^−0.75), plus e^−1.5 of the white background.
+  const SceneDesc scene = povray::parsePovRay(R"(#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { orthographic location <0, 0, -5> look_at 0 right x * 2 up y * 2 }
+background { rgb 1 }
+box { <-5, -5, -1>, <5, 5, 1> hollow pigment { rgbt 1 }
+      interior { media { absorption 0.5 emission 0.2 samples 1 } media { absorption 0.25 samples 10 } } }
+)", "scene.pov", povray::PovRayOptions{{}, 1, 1, false});
+  CHECK_THAT(centre(scene).r, Catch::Matchers::WithinAbs(0.51760, 2e-5));
+  CHECK_THAT(centre(scene).r, Catch::Matchers::WithinAbs(0.2 * (1 + std::exp(-0.75)) + std::exp(-1.5), 2e-5));
+  // Where a scene's medium and an object's overlap, the object's sampling comes first: POV-Ray's pictures before
+  // black, samples 1's sum 0.32131 and samples 10's 0.27451.
+  const auto overlapped = [](int object, int scene) {
+    return centre(povray::parsePovRay(
+                      "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+                      "camera { orthographic location <0, 0, -5> look_at 0 right x * 2 up y * 2 }\n"
+                      "background { rgb 0 }\nmedia { samples " + std::to_string(scene) + " density { rgb 1 } }\n"
+                      "box { <-5, -5, -1>, <5, 5, 1> hollow pigment { rgbt 1 } interior { media { absorption 0.5 "
+                      "emission 0.2 samples " + std::to_string(object) + " density { rgb 1 } } } }\n",
+                      "scene.pov", povray::PovRayOptions{{}, 1, 1, false}))
+        .r;
+  };
+  CHECK_THAT(overlapped(1, 10), Catch::Matchers::WithinAbs(0.32131, 2e-5));
+  CHECK_THAT(overlapped(10, 1), Catch::Matchers::WithinAbs(0.27451, 2e-5));
+}
+
 TEST_CASE("An eye ray across media with a density gets POV-Ray's colour", "[render][media]") {
   // POV-Ray 3.7's pictures (16-bit, linear) of a hollow box from z = 0.001 to 0.999 before black, whose medium
   // is `emission 1 absorption A intervals I samples S, S density { … }`, by density, A, I and S.

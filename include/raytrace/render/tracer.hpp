@@ -84,7 +84,7 @@ template <class T> class Tracer {
   struct InteriorLink {
     uintptr_t key;
     const Object<T>* object;
-    const Media* medium;  // null for an interior without one
+    const std::vector<Media>* media;  // null for an interior without any
     bool hollow;
     bool eye;
     const InteriorLink* outer;
@@ -232,7 +232,7 @@ template <class T> class Tracer {
   bool fogs_;                                   // whether the scene has any fog
   bool interiors_ = false;  // whether some object has a medium or the scene a fog: rays keep Path::interiors
   std::vector<InteriorLink> eyeInteriors_;      // eyeInteriors(): around eyeOrigin_, the innermost last
-  // The scene's (atmospheric) media as the outermost interiors every eye ray starts in, the last one innermost.
+  // The scene's (atmospheric) media as the outermost interior every eye ray starts in; none without any.
   std::vector<InteriorLink> sceneMedia_;
   std::optional<Vec3<T>> eyeOrigin_;
   bool sampledLights_ = false;   // some light is an area or parallel light (Light::sampled)

@@ -119,7 +119,7 @@ struct Surface {
   double fadeDistance = 0, fadePower = 0;  // the interior's fade (Material)
   Color fadeColor{0};
   double caustics = 0;         // the interior's faked caustics (Material)
-  std::optional<Media> media;  // the interior's (Material)
+  std::vector<Media> media;  // the interior's (Material)
   bool uvMapped = false;       // uv_mapping in the object, or in one of its pigments, normals or textures
   bool doubleIlluminate = false;  // the object's double_illuminate (Material)
   std::shared_ptr<const Surface> inside;  // the interior_texture's, seen from inside (Texture::interior)
