@@ -777,6 +777,43 @@ TEST_CASE("Scene-level media fill the scene as an outermost hollow interior, as 
   }
 }
 
+TEST_CASE("A light with media_attenuation is dimmed by the scene's fogs and media, as POV-Ray draws it",
+          "[render][media]") {
+  // POV-Ray 3.7's pictures (16-bit, linear) of a white wall at z = 0 lit from z = −4 (rgb 1, or 0.5 where the
+  // picture would clip), seen from z = −1 through the same fog or medium: e^(−1/4) from the eye's way alone,
+  // e^(−5/4) when the light's way of 4 counts too.
+  const std::string box =
+      "box { <-1, -1, -3.5>, <1, 1, -1.5> hollow pigment { rgbt 1 } interior { media { absorption 0.25 } } }";
+  const struct {
+    std::string atmosphere;
+    bool attenuated;
+    const char* light;
+    double povray;
+  } measured[] = {
+      {"fog { distance 4 rgb 0 }", false, "1", 0.77879},
+      {"fog { distance 4 rgb 0 }", true, "1", 0.28650},
+      {"media { absorption 0.25 }", false, "1", 0.77879},
+      {"media { absorption 0.25 }", true, "1", 0.28650},
+      // The light scattered toward the eye is dimmed on its way too.
+      {"media { scattering { 1, 0.1 } }", false, "0.5", 0.50039},
+      {"media { scattering { 1, 0.1 } }", true, "0.5", 0.33735},
+      // An object's medium dims every light, attenuated or not: e^(−0.25·2).
+      {box, false, "1", 0.60652},
+      {box, true, "1", 0.60652},
+  };
+  for (const auto& m : measured) {
+    INFO(m.atmosphere << ", media_attenuation " << m.attenuated);
+    const SceneDesc scene = povray::parsePovRay(
+        "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+        "camera { orthographic location <0, 0, -1> look_at 0 right x * 0.1 up y * 0.1 }\nbackground { rgb 0 }\n"
+        "light_source { <0, 0, -4>, rgb " + std::string(m.light) + " media_attenuation " +
+            std::string(m.attenuated ? "on" : "off") +
+            " }\nplane { -z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n" + m.atmosphere + "\n",
+        "scene.pov", povray::PovRayOptions{{}, 1, 1, false});
+    CHECK_THAT(centre(scene).r, Catch::Matchers::WithinAbs(m.povray, 2e-5));
+  }
+}
+
 TEST_CASE("A medium's density moves with its object", "[render][media]") {
   // The gradient's ramp, moved by the box's translate, reads from 0 at the box's near side: as unmoved.
   const auto seen = [](const char* box) {

@@ -199,8 +199,6 @@ class Builder {
   }
 
   void finish() {
-    // Media do not dim the lights yet: a light that asks them to is refused, once some object has a medium.
-    if (context_.mediaAttenuation && context_.media) context_.refuse(*context_.mediaAttenuation, "media_attenuation");
     if (const auto& refused = context_.firstRefusal) throw ParseError(refused->loc, "'" + refused->what + "' is not supported yet");
   }
 

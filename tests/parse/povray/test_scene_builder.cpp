@@ -301,12 +301,12 @@ sphere { x * 10, 1 }
   REQUIRE(added.size() == 2);
   CHECK(added[0].emission == Color(1));
   CHECK(added[1].absorption == Color(2));
-  CHECK(failure("light_source { 0, White media_attenuation on }\n"
-                "box { -1, 1 interior { media { absorption 1 } } }\n") ==
-        "scene.pov:3:25: error: 'media_attenuation' is not supported yet");
-  CHECK(failure("light_source { 0, White media_attenuation on }\n") == "no error");  // nothing to dim it
-  CHECK(failure("light_source { 0, White media_attenuation on }\nmedia { emission 1 }\n") ==
-        "scene.pov:3:25: error: 'media_attenuation' is not supported yet");
+  const SceneDesc dimmed = scene("light_source { 0, 1 media_attenuation on } light_source { 0, 1 media_attenuation }\n"
+                                 "light_source { 0, 1 media_attenuation off } light_source { 0, 1 }\n");
+  CHECK(dimmed.lights[0].mediaAttenuation);
+  CHECK(dimmed.lights[1].mediaAttenuation);
+  CHECK_FALSE(dimmed.lights[2].mediaAttenuation);
+  CHECK_FALSE(dimmed.lights[3].mediaAttenuation);
   CHECK(failure("media { emission 1 method 1 }\n") == "scene.pov:3:20: error: 'media method other than 3' is not supported yet");
   // An object inside a medium, or a plane across it, is drawn (POV-Ray's rule on hollow objects).
   CHECK(failure("sphere { 0, 1 hollow interior { media { emission 1 } } scale 3 }\nsphere { x * 3.5, 1 }\n"

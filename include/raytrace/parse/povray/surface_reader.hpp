@@ -41,8 +41,6 @@ struct ReadingContext {
   // The scene's working gamma for an image map's colours when it is read: assumed_gamma, or nothing before
   // #version 3.7, which takes them as they are.
   std::function<std::optional<double>()> imageGamma;
-  bool media = false;  // whether some interior has a medium, which a light's media_attenuation would dim it by
-  std::optional<SourceLoc> mediaAttenuation;  // where a light's `media_attenuation on` is written
 };
 
 // `image_map { [type] "file" … }` (image_map_reader.cpp); nothing when something in it is refused.
