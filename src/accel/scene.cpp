@@ -20,6 +20,7 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
     light.shape = shape;
     light.shadowless = l.shadowless;
     light.mediaInteraction = l.mediaInteraction;
+    light.mediaAttenuation = l.mediaAttenuation && (!desc.media.empty() || !desc.fogs.empty());
     if (l.area) light.area = &areas_.emplace_back(*l.area);
     if (l.parallelTo && glm::length(l.position - *l.parallelTo) > 0) {
       light.parallel = Vec3<T>(glm::normalize(l.position - *l.parallelTo));
@@ -29,7 +30,7 @@ Scene<T>::Scene(const SceneDesc& desc, const Arithmetic& arithmetic, Hierarchy h
       through_.resize(desc.projectedThrough.size());
       through_[index] = makeObject<T>(*desc.projectedThrough[index], arithmetic.sphere, 0, false);
     }
-    light.sampled = light.area || light.parallel || projected(index);
+    light.sampled = light.area || light.parallel || projected(index) || light.mediaAttenuation;
   }
   const bool course = arithmetic.tier == Tier::Course;
   const size_t n = desc.objects.size();

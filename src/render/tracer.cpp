@@ -113,16 +113,15 @@ Tracer<T>::Tracer(const Scene<T>& scene, const RenderOptions& options)
       const float reflected = (dialect_.transparencyDimsReflection() ? 1 - m.filter : 1) * reflection;
       gain = std::max(gain, (reflected + std::abs(m.filter)) * std::max(1.0f, brightest(m.pigment)));
       filteredShadows_ = filteredShadows_ || (dialect_.filtersShadows() && m.filter != 0);
-      interiors_ = interiors_ || fogs_ || m.extras->media.has_value();
+      interiors_ = interiors_ || fogs_ || !m.extras->media.empty();
     });
   }
   // What a ray that leaves the scene brings back; fogs add their colours (throughFogs).
   const SceneDesc& desc = scene.desc();
-  // Scene-level media: outermost hollow interiors named by their addresses, which no object's key is.
-  for (const Media& m : desc.media) {
-    sceneMedia_.push_back({reinterpret_cast<uintptr_t>(&m), nullptr, &m, true, false, nullptr});
+  // Scene-level media: one outermost hollow interior named by its address, which no object's key is.
+  if (!desc.media.empty()) {
+    sceneMedia_.push_back({reinterpret_cast<uintptr_t>(&desc.media), nullptr, &desc.media, true, false, nullptr});
   }
-  for (size_t i = 1; i < sceneMedia_.size(); ++i) sceneMedia_[i].outer = &sceneMedia_[i - 1];
   interiors_ = interiors_ || !sceneMedia_.empty();
   float background = std::max(brightest(background_), desc.sky ? brightest(desc.sky->bound()) : 0.0f);
   float fogs = 0;
@@ -682,15 +681,26 @@ template <class T> Color Tracer<T>::transmittance(const Ray<T>& ray, Interval<T>
     }
     // Leaving a medium: the light dimmed by its extinction on the way inside (the manual's note under "Media":
     // absorbing and scattering media cast shadows).
-    if (m.extras->media && glm::dot(ray.dir, hit->normal) > T(0)) {
+    if (!m.extras->media.empty() && glm::dot(ray.dir, hit->normal) > T(0)) {
       const double length = double(hit->t - segment.min) * double(glm::length(ray.dir));
       const glm::dvec3 dir = glm::normalize(glm::dvec3(ray.dir));
-      through *= m.extras->media->kept(glm::dvec3(ray.at(segment.min)), dir, length);
+      through *= Media::kept(m.extras->media, glm::dvec3(ray.at(segment.min)), dir, length);
     }
     if (through == Color(0)) return through;
     segment.min = hit->t;
   }
   return Color(0);
+}
+
+// The manual's "Atmospheric Attenuation": the light is dimmed by the fogs and the scene's media it crosses, as
+// a ray is (objects' media dim every light: transmittance()). Measured with POV-Ray 3.7: e^(−d/D) of a fog
+// and e^(−absorption·d) of a medium over the d from the point to the light.
+template <class T> Color Tracer<T>::attenuation(const Vec3<T>& point, const Vec3<T>& l, T distance) const {
+  const SceneDesc& desc = scene_.desc();
+  const glm::dvec3 from(point), dir(l);
+  Color kept = desc.media.empty() ? Color(1) : Media::kept(desc.media, from, dir, double(distance));
+  for (const Fog& fog : desc.fogs) kept *= fog.effect(from, dir, double(distance)).through;
+  return kept;
 }
 
 template <class T> struct Tracer<T>::MediaLighting final : MediaLights {
@@ -738,6 +748,7 @@ template <class T> struct Tracer<T>::MediaLighting final : MediaLights {
         if (tracer.scene_.occluded(ray, *segment, &tracer.lastOccluder_[i])) color = Color(0);
       }
     }
+    if (light.mediaAttenuation && color != Color(0)) color *= tracer.attenuation(p, l, std::max(distance, T(0)));
     if (color != Color(0)) out.push_back({glm::dvec3(l), color});
   }
   Tracer& tracer;
@@ -749,7 +760,7 @@ template <class T> struct Tracer<T>::MediaLighting final : MediaLights {
 // The numbers of CSG interiors (1, 2, …) are no object's or medium's address.
 template <class T> uintptr_t Tracer<T>::interiorKey(const Object<T>& object) {
   const SurfaceExtras& extras = *object.material().extras;
-  if (extras.media) return reinterpret_cast<uintptr_t>(&*extras.media);
+  if (!extras.media.empty()) return reinterpret_cast<uintptr_t>(extras.media.data());
   return extras.interior != 0 ? extras.interior : reinterpret_cast<uintptr_t>(&object);
 }
 
@@ -766,7 +777,9 @@ template <class T>
   std::vector<const Media*> media;
   for (const InteriorLink* link = interiors; link; link = link->outer) {
     if (!link->hollow) return color;
-    if (link->medium) media.push_back(link->medium);
+    if (link->media) {
+      for (const Media& m : *link->media) media.push_back(&m);
+    }
   }
   if (media.empty()) return color;
   const glm::dvec3 dir(ray.dir);
@@ -787,7 +800,7 @@ template <class T> const typename Tracer<T>::InteriorLink* Tracer<T>::eyeInterio
       if (bounds && (glm::any(glm::lessThan(origin, bounds->min)) || glm::any(glm::greaterThan(origin, bounds->max)))) continue;
       if (!object->inside(origin)) continue;
       const SurfaceExtras& extras = *object->material().extras;
-      eyeInteriors_.push_back({interiorKey(*object), object.get(), extras.media ? &*extras.media : nullptr,
+      eyeInteriors_.push_back({interiorKey(*object), object.get(), extras.media.empty() ? nullptr : &extras.media,
                                extras.hollow, true, nullptr});
     }
     for (size_t i = 1; i < eyeInteriors_.size(); ++i) eyeInteriors_[i].outer = &eyeInteriors_[i - 1];
@@ -805,7 +818,7 @@ template <class T>
 [[gnu::noinline]] typename Tracer<T>::Traced Tracer<T>::across(const Ray<T>& ray, const Hit<T>& hit,
                                                              const Path& child, RayRecord* record) {
   const SurfaceExtras& extras = *hit.object->material().extras;
-  const Media* medium = extras.media ? &*extras.media : nullptr;
+  const std::vector<Media>* media = extras.media.empty() ? nullptr : &extras.media;
   const uintptr_t key = interiorKey(*hit.object);
   const auto find = [&](const auto& left) {
     const InteriorLink* found = child.interiors;
@@ -815,7 +828,7 @@ template <class T>
   const InteriorLink* found = find([&](const InteriorLink& link) { return link.key == key; });
   if (!found) found = find([&](const InteriorLink& link) { return link.eye && !link.object->inside(ray.origin); });
   Path crossed = child;
-  const InteriorLink entered{key, hit.object, medium, extras.hollow, false, child.interiors};
+  const InteriorLink entered{key, hit.object, media, extras.hollow, false, child.interiors};
   std::vector<InteriorLink> since;
   if (found) {
     for (const InteriorLink* link = child.interiors; link != found; link = link->outer) since.push_back(*link);
@@ -933,6 +946,11 @@ bool Tracer<T>::sampledLight(const Hit<T>& hit, const Vec3<T>& n, const Light<T>
   }
   lightColor *= share;
   out.occluded = share == Color(0);
+  if (light.mediaAttenuation && !out.occluded) {
+    const T distance = light.parallel ? std::max(glm::dot(light.position - hit.point, *light.parallel), T(0))
+                                      : glm::length(light.position - hit.point);
+    lightColor *= attenuation(hit.point, out.l, distance);
+  }
   return true;
 }
 

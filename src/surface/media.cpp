@@ -48,17 +48,16 @@ Color Media::through(const Color& behind, const glm::dvec3& start, const glm::dv
 
 Color Media::through(const Media* const* media, size_t count, const Color& behind, const glm::dvec3& start,
                      const glm::dvec3& dir, double distance, MediaLights* lights) {
-  int samples = 0, intervals = 0, aaLevel = 0;
-  double aaThreshold = media[0]->aaThreshold;
+  // The first medium with the most intervals sets the sampling, as measured with POV-Ray 3.7.
+  const Media* lead = media[0];
   bool lit = false;
   for (size_t i = 0; i < count; ++i) {
     const Media& m = *media[i];
-    samples = std::max(samples, m.samples);
-    intervals = std::max(intervals, m.intervals);
-    aaLevel = std::max(aaLevel, m.aaLevel);
-    aaThreshold = std::min(aaThreshold, m.aaThreshold);
+    if (m.intervals > lead->intervals) lead = &m;
     lit = lit || (m.scattering && m.scattering->color != Color(0));
   }
+  const int samples = lead->samples, intervals = lead->intervals, aaLevel = lead->aaLevel;
+  const double aaThreshold = lead->aaThreshold;
   lit = lit && lights;
   std::vector<MediaLights::Arrival> arrivals;
   const auto sample = [&](double t) {
@@ -113,10 +112,14 @@ Color Media::through(const Media* const* media, size_t count, const Color& behin
   return Color(glm::dvec3(behind) * kept + seen);
 }
 
-Color Media::kept(const glm::dvec3& start, const glm::dvec3& dir, double distance) const {
-  Media dark = *this;
-  dark.emission = Color(0);
-  return dark.through(Color(1), start, dir, distance);
+Color Media::kept(const std::vector<Media>& media, const glm::dvec3& start, const glm::dvec3& dir, double distance) {
+  std::vector<Media> dark = media;
+  std::vector<const Media*> all;
+  for (Media& m : dark) {
+    m.emission = Color(0);
+    all.push_back(&m);
+  }
+  return through(all.data(), all.size(), Color(1), start, dir, distance);
 }
 
 }  // namespace rt

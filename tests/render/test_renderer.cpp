@@ -628,6 +628,34 @@ box { <-5, -5, -1>, <5, 5, 1> hollow pigment { rgbt 1 } interior { media { absor
   checkColor(centre(scene), Color(float(0.27451 + std::exp(-1.0))));
 }
 
+TEST_CASE("Several media in one interior add up, as POV-Ray draws them", "[render][media]") {
+  // POV-Ray 3.7's picture of this scene, 16-bit and linear: the sum of samples 1 (the first medium's) over
+  // absorption 0.75 and emission 0.2, 0.2 · (1 + e^−0.75), plus e^−1.5 of the white background.
+  const SceneDesc scene = povray::parsePovRay(R"(#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { orthographic location <0, 0, -5> look_at 0 right x * 2 up y * 2 }
+background { rgb 1 }
+box { <-5, -5, -1>, <5, 5, 1> hollow pigment { rgbt 1 }
+      interior { media { absorption 0.5 emission 0.2 samples 1 } media { absorption 0.25 samples 10 } } }
+)", "scene.pov", povray::PovRayOptions{{}, 1, 1, false});
+  CHECK_THAT(centre(scene).r, Catch::Matchers::WithinAbs(0.51760, 2e-5));
+  CHECK_THAT(centre(scene).r, Catch::Matchers::WithinAbs(0.2 * (1 + std::exp(-0.75)) + std::exp(-1.5), 2e-5));
+  // Where a scene's medium and an object's overlap, the object's sampling comes first: POV-Ray's pictures before
+  // black, samples 1's sum 0.32131 and samples 10's 0.27451.
+  const auto overlapped = [](int object, int scene) {
+    return centre(povray::parsePovRay(
+                      "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+                      "camera { orthographic location <0, 0, -5> look_at 0 right x * 2 up y * 2 }\n"
+                      "background { rgb 0 }\nmedia { samples " + std::to_string(scene) + " density { rgb 1 } }\n"
+                      "box { <-5, -5, -1>, <5, 5, 1> hollow pigment { rgbt 1 } interior { media { absorption 0.5 "
+                      "emission 0.2 samples " + std::to_string(object) + " density { rgb 1 } } } }\n",
+                      "scene.pov", povray::PovRayOptions{{}, 1, 1, false}))
+        .r;
+  };
+  CHECK_THAT(overlapped(1, 10), Catch::Matchers::WithinAbs(0.32131, 2e-5));
+  CHECK_THAT(overlapped(10, 1), Catch::Matchers::WithinAbs(0.27451, 2e-5));
+}
+
 TEST_CASE("An eye ray across media with a density gets POV-Ray's colour", "[render][media]") {
   // POV-Ray 3.7's pictures (16-bit, linear) of a hollow box from z = 0.001 to 0.999 before black, whose medium
   // is `emission 1 absorption A intervals I samples S, S density { … }`, by density, A, I and S.
@@ -807,6 +835,43 @@ TEST_CASE("A medium sees each point of an area light's grid, as POV-Ray draws it
         "#version 3.7;\n" + scene + "light_source { <0, 10, 0>, rgb 1 " + m.light + " }\n", "scene.pov",
         povray::PovRayOptions{{}, 1, 1, false});
     CHECK_THAT(centre(desc).r, Catch::Matchers::WithinAbs(m.povray, 2e-5));
+  }
+}
+
+TEST_CASE("A light with media_attenuation is dimmed by the scene's fogs and media, as POV-Ray draws it",
+          "[render][media]") {
+  // POV-Ray 3.7's pictures (16-bit, linear) of a white wall at z = 0 lit from z = −4 (rgb 1, or 0.5 where the
+  // picture would clip), seen from z = −1 through the same fog or medium: e^(−1/4) from the eye's way alone,
+  // e^(−5/4) when the light's way of 4 counts too.
+  const std::string box =
+      "box { <-1, -1, -3.5>, <1, 1, -1.5> hollow pigment { rgbt 1 } interior { media { absorption 0.25 } } }";
+  const struct {
+    std::string atmosphere;
+    bool attenuated;
+    const char* light;
+    double povray;
+  } measured[] = {
+      {"fog { distance 4 rgb 0 }", false, "1", 0.77879},
+      {"fog { distance 4 rgb 0 }", true, "1", 0.28650},
+      {"media { absorption 0.25 }", false, "1", 0.77879},
+      {"media { absorption 0.25 }", true, "1", 0.28650},
+      // The light scattered toward the eye is dimmed on its way too.
+      {"media { scattering { 1, 0.1 } }", false, "0.5", 0.50039},
+      {"media { scattering { 1, 0.1 } }", true, "0.5", 0.33735},
+      // An object's medium dims every light, attenuated or not: e^(−0.25·2).
+      {box, false, "1", 0.60652},
+      {box, true, "1", 0.60652},
+  };
+  for (const auto& m : measured) {
+    INFO(m.atmosphere << ", media_attenuation " << m.attenuated);
+    const SceneDesc scene = povray::parsePovRay(
+        "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+        "camera { orthographic location <0, 0, -1> look_at 0 right x * 0.1 up y * 0.1 }\nbackground { rgb 0 }\n"
+        "light_source { <0, 0, -4>, rgb " + std::string(m.light) + " media_attenuation " +
+            std::string(m.attenuated ? "on" : "off") +
+            " }\nplane { -z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n" + m.atmosphere + "\n",
+        "scene.pov", povray::PovRayOptions{{}, 1, 1, false});
+    CHECK_THAT(centre(scene).r, Catch::Matchers::WithinAbs(m.povray, 2e-5));
   }
 }
 

@@ -1,6 +1,7 @@
 // POV-Ray's media: what a ray brings back across them, against POV-Ray 3.7's own pictures.
 #include <cmath>
 #include <functional>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -69,6 +70,38 @@ TEST_CASE("Media: each of the intervals has the steps samples asks for", "[media
   for (int k = 0; k < 4; ++k) sum += std::exp(-0.25 * k);
   CHECK_THAT(across(m, Color(0), 2).r, WithinAbs(0.2 * 0.5 * sum, 1e-6));
   CHECK_THAT(across(m, Color(1), 0).r, WithinAbs(1.0, 1e-6));
+}
+
+TEST_CASE("Media: several media add up, sampled as the first with the most intervals", "[media]") {
+  const auto all = [](const std::vector<Media>& media, const Color& behind) {
+    std::vector<const Media*> pointers;
+    for (const Media& m : media) pointers.push_back(&m);
+    return Media::through(pointers.data(), pointers.size(), behind, glm::dvec3(0), glm::dvec3(0, 0, 1), 2);
+  };
+  // Two absorbing media let through the product of what each lets through, in light and in shadow.
+  const std::vector<Media> absorbing = {medium(0.5f, 0, 1), medium(0.25f, 0, 10)};
+  CHECK_THAT(all(absorbing, Color(1)).r, WithinAbs(std::exp(-1.5), 1e-6));
+  CHECK_THAT(Media::kept(absorbing, glm::dvec3(0), glm::dvec3(0, 0, 1), 2).r, WithinAbs(std::exp(-1.5), 1e-6));
+  // Emissions add.
+  CHECK_THAT(all({medium(0, 0.2f, 1), medium(0, 0.1f, 1)}, Color(0)).r, WithinAbs(0.6, 1e-6));
+  // POV-Ray 3.7's pictures (16-bit, linear) of a hollow box 2 deep before black, whose interior holds these
+  // media, each with `density { rgb 1 }`: `absorption 0.5 emission 0.2` and media that add nothing but their
+  // samples and intervals, which the sum takes from the first medium with the most intervals.
+  const auto sampled = [](int samples, int intervals) {
+    Media m = medium(0, 0, samples);
+    m.intervals = intervals;
+    return m;
+  };
+  const auto seen = [](Media m, int samples, int intervals) {
+    m.samples = samples;
+    m.intervals = intervals;
+    return m;
+  };
+  const Media lit = medium(0.5f, 0.2f, 1);
+  CHECK_THAT(all({seen(lit, 1, 1), sampled(10, 1)}, Color(0)).r, WithinAbs(0.32131, 1e-5));
+  CHECK_THAT(all({sampled(10, 1), seen(lit, 1, 1)}, Color(0)).r, WithinAbs(0.27451, 1e-5));
+  CHECK_THAT(all({seen(lit, 4, 1), sampled(10, 2)}, Color(0)).r, WithinAbs(0.26352, 2e-5));
+  CHECK_THAT(all({seen(lit, 4, 1), sampled(10, 1), sampled(1, 3)}, Color(0)).r, WithinAbs(0.27451, 2e-5));
 }
 
 TEST_CASE("Media: a density scales absorption and emission where the steps read it", "[media]") {

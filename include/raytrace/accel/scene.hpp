@@ -22,7 +22,9 @@ template <class T> struct Light {
   const LightShape* shape = nullptr;
   bool shadowless = false;  // casts no shadows: no shadow ray is traced toward it
   bool mediaInteraction = true;  // lights scattering media (POV-Ray's media_interaction)
-  // An area light or a parallel one (`sampled`) is lit by the tracer one hit at a time, not in packets.
+  bool mediaAttenuation = false;  // dimmed by the scene's fogs and media on its way (POV-Ray's media_attenuation)
+  // An area light, a parallel one or one the scene's media dim (`sampled`) is lit by the tracer one hit at a
+  // time, not in packets.
   bool sampled = false;
   const AreaLight* area = nullptr;
   std::optional<Vec3<T>> parallel;  // a parallel light's unit direction toward the light

@@ -84,7 +84,7 @@ template <class T> class Tracer {
   struct InteriorLink {
     uintptr_t key;
     const Object<T>* object;
-    const Media* medium;  // null for an interior without one
+    const std::vector<Media>* media;  // null for an interior without any
     bool hollow;
     bool eye;
     const InteriorLink* outer;
@@ -141,6 +141,9 @@ template <class T> class Tracer {
   // The share of a light's colour that reaches the end of a shadow ray through transparent surfaces, and the
   // media inside them.
   Color transmittance(const Ray<T>& ray, Interval<T> segment);
+  // The share of a light with media_attenuation (Light::mediaAttenuation) left by the scene's fogs and media
+  // over `distance` from `point` toward it along the unit `l`.
+  Color attenuation(const Vec3<T>& point, const Vec3<T>& l, T distance) const;
   // What reaches a point of a scattering medium from each light (MediaLights), shadowed as a surface would be.
   struct MediaLighting;
   // `c` seen through the scene's fogs (fogs_) along the ray up to t (infinite for a ray that leaves the scene).
@@ -233,10 +236,10 @@ template <class T> class Tracer {
   bool fogs_;                                   // whether the scene has any fog
   bool interiors_ = false;  // whether some object has a medium or the scene a fog: rays keep Path::interiors
   std::vector<InteriorLink> eyeInteriors_;      // eyeInteriors(): around eyeOrigin_, the innermost last
-  // The scene's (atmospheric) media as the outermost interiors every eye ray starts in, the last one innermost.
+  // The scene's (atmospheric) media as the outermost interior every eye ray starts in; none without any.
   std::vector<InteriorLink> sceneMedia_;
   std::optional<Vec3<T>> eyeOrigin_;
-  bool sampledLights_ = false;   // some light is an area or parallel light (Light::sampled)
+  bool sampledLights_ = false;   // some light is an area or parallel light, or dimmed by media (Light::sampled)
   bool filteredShadows_ = false;  // shadow rays pass transparent surfaces (POV-Ray, and some surface lets light through)
   std::vector<Batch> batches_;                 // [0] tile()'s eye rays, [1 + b] the gather rays at bounce b
   std::vector<size_t> blanks_;                 // tile()'s eye rays at the projection's blank points

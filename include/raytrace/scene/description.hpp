@@ -81,6 +81,7 @@ struct LightDesc {
   double fadeDistance = 0, fadePower = 0;  // 0: no fading
   bool shadowless = false;
   bool mediaInteraction = true;  // `media_interaction off`: scattering media do not see it
+  bool mediaAttenuation = false;  // `media_attenuation on`: the scene's fogs and media dim it on its way
 };
 
 // Pov is the course's subset of POV-Ray; PovRay the POV-Ray 3.7 language (docs/povray-language.md). Each

@@ -50,8 +50,9 @@ struct SurfaceExtras {
   // The object's double_illuminate: a light behind the surface, as the viewer sees it, lights it as if it
   // were in front (POV-Ray 3.7 manual, "Double Illuminate Object Modifier").
   bool doubleIlluminate = false;
-  // The interior's medium, which a ray that enters the object crosses up to its next hit.
-  std::optional<Media> media;
+  // The interior's media, which a ray that enters the object crosses up to its next hit; several add up (the
+  // manual, "Multiple Media").
+  std::vector<Media> media;
   // POV-Ray's `hollow`: media are seen only inside hollow objects (the manual, "Empty and Solid Objects").
   bool hollow = false;
   // The interior a CSG's parts share, numbered from 1 in the scene; 0 for an object's own (Path::interiors).
@@ -60,7 +61,8 @@ struct SurfaceExtras {
   // Whether any of them changes a picture.
   bool any() const {
     return fadeDistance > 0 || caustics != 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0 ||
-           reflectionTint != Color(1) || conserveEnergy || irid || doubleIlluminate || media.has_value() || hollow || interior != 0;
+           reflectionTint != Color(1) || conserveEnergy || irid || doubleIlluminate || !media.empty() || hollow ||
+           interior != 0;
   }
 };
 

@@ -59,13 +59,15 @@ struct Media {
   // through e^(−extinction·h).
   Color through(const Color& behind, const glm::dvec3& start, const glm::dvec3& dir, double distance,
                 MediaLights* lights = nullptr) const;
-  // through() across several media at once, as where media overlap or one holds another: at each point their
-  // absorptions, emissions and scatterings add (the manual, "Media": several media in one place add up), read
-  // with the most samples, intervals and aa_level among them and the least aa_threshold.
+  // through() across several media at once, as in one interior or where media overlap or one holds another: at
+  // each point their absorptions, emissions and scatterings add (the manual, "Multiple Density vs. Multiple
+  // Media"), read with the samples, intervals, aa_level and aa_threshold of the first with the most intervals
+  // (measured with POV-Ray 3.7: tests/surface/test_media.cpp).
   static Color through(const Media* const* media, size_t count, const Color& behind, const glm::dvec3& start,
                        const glm::dvec3& dir, double distance, MediaLights* lights = nullptr);
-  // What light crossing `distance` from `start` along the unit `dir` keeps: e^(−extinction) summed as above.
-  Color kept(const glm::dvec3& start, const glm::dvec3& dir, double distance) const;
+  // What light crossing `distance` of `media` (adding up) from `start` along the unit `dir` keeps:
+  // e^(−extinction) summed as above.
+  static Color kept(const std::vector<Media>& media, const glm::dvec3& start, const glm::dvec3& dir, double distance);
 };
 
 }  // namespace rt

@@ -70,8 +70,7 @@ void readLight(const Node& n, LightDesc& l, ReadingContext& context, const Looks
     const std::string_view w = it.word;
     if (w == "media_interaction" || w == "media_attenuation") {
       const Value* v = valueAfter(n, i);
-      if (w == "media_attenuation" && (!v || v->v[0] != 0)) context.mediaAttenuation = it.loc;
-      if (w == "media_interaction") l.mediaInteraction = !v || v->v[0] != 0;
+      (w == "media_interaction" ? l.mediaInteraction : l.mediaAttenuation) = !v || v->v[0] != 0;
     } else if (w == "shadowless") {
       l.shadowless = true;
     } else if (const LightKind* kind = lightKindNamed(w)) {

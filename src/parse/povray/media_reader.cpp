@@ -135,7 +135,6 @@ std::optional<Media> readMedia(const Node& n, ReadingContext& context) {
     }
   }
   if (refused) return std::nullopt;
-  context.media = true;
   return media;
 }
 

@@ -199,8 +199,6 @@ class Builder {
   }
 
   void finish() {
-    // Media do not dim the lights yet: a light that asks them to is refused, once some object has a medium.
-    if (context_.mediaAttenuation && context_.media) context_.refuse(*context_.mediaAttenuation, "media_attenuation");
     if (const auto& refused = context_.firstRefusal) throw ParseError(refused->loc, "'" + refused->what + "' is not supported yet");
   }
 
@@ -643,15 +641,19 @@ class Builder {
       o.texture = full.patterned() ? std::make_shared<const Texture>(bounded(makeTexture(full, after))) : nullptr;
     }
     // The inverse only for a medium with densities to move: a million spheres need none.
-    const auto& media = o.material.extras->media;
-    if (media && !media->densities.empty()) moveMedia(o.material, glm::inverse(composeTransforms<double>(after)));
+    if (hasDensities(o.material)) moveMedia(o.material, glm::inverse(composeTransforms<double>(after)));
+  }
+
+  static bool hasDensities(const Material& m) {
+    const std::vector<Media>& media = m.extras->media;
+    return std::any_of(media.begin(), media.end(), [](const Media& one) { return !one.densities.empty(); });
   }
 
   // A medium's densities move with the object as a texture does; `undo` as in moveTextures.
   static void moveMedia(Material& m, const glm::dmat4& undo) {
-    if (!m.extras->media || m.extras->media->densities.empty()) return;
+    if (!hasDensities(m)) return;
     SurfaceExtras moved = *m.extras;
-    moved.media->fromWorld = moved.media->fromWorld * undo;
+    for (Media& media : moved.media) media.fromWorld = media.fromWorld * undo;
     m.extras = keptExtras(moved);
   }
 

@@ -1146,8 +1146,8 @@ void readSurfaceItem(const Node& n, Surface& s, const Surface& defaults, Reading
                                       : s.fadePower) = v->v[0];
       } else if (it.kind == Item::Kind::Node && it.node->keyword == "interior") {
         readSurfaceItem(*it.node, s, defaults, context);
-      } else if (it.kind == Item::Kind::Node && it.node->keyword == "media" && !s.media) {
-        s.media = readMedia(*it.node, context);
+      } else if (it.kind == Item::Kind::Node && it.node->keyword == "media") {
+        if (std::optional<Media> media = readMedia(*it.node, context)) s.media.push_back(std::move(*media));
       } else {
         context.refuse(it, "interior");
       }

@@ -239,22 +239,22 @@ box { -1, 1 hollow pigment { rgbt 1 }
 sphere { x * 10, 1 }
 )");
   const SurfaceExtras& e = *s.objects[0].material.extras;
-  REQUIRE(e.media);
-  CHECK(e.media->absorption == Color(0.5f, 1, 0));
-  CHECK(e.media->emission == Color(0.2f));
-  CHECK(e.media->samples == 4);
-  CHECK_FALSE(s.objects[1].material.extras->media);
+  REQUIRE(e.media.size() == 1);
+  CHECK(e.media[0].absorption == Color(0.5f, 1, 0));
+  CHECK(e.media[0].emission == Color(0.2f));
+  CHECK(e.media[0].samples == 4);
+  CHECK(s.objects[1].material.extras->media.empty());
   // A declared medium, modified where it is used.
   const SceneDesc d = scene("#declare M = media { emission 0.5 samples 3 }\n"
                             "sphere { 0, 1 interior { media { M absorption 2 } } }\n");
-  const Media& m = *d.objects[0].material.extras->media;
+  const Media& m = d.objects[0].material.extras->media.at(0);
   CHECK(m.emission == Color(0.5f));
   CHECK(m.absorption == Color(2));
   CHECK(m.samples == 3);
   // Densities: white by default; a pattern without a map ramps from black to white; density_map as pigment_map.
   const SceneDesc ds = scene("sphere { 0, 1 interior { media { emission 1 intervals 2 density { } density { rgb 0.5 }\n"
                              "  density { gradient x } density { gradient y density_map { [0 density { rgb 0.2 }] [1 rgb 1] } } } } }\n");
-  const Media& dm = *ds.objects[0].material.extras->media;
+  const Media& dm = ds.objects[0].material.extras->media.at(0);
   CHECK(dm.intervals == 2);
   REQUIRE(dm.densities.size() == 4);
   CHECK(dm.densities[0]->at(glm::dvec3(0.3)).rgb == Color(1));
@@ -268,7 +268,7 @@ sphere { x * 10, 1 }
                              "  aa_level 5 aa_threshold 0.2 } } }\n"
                              "sphere { x * 10, 1 interior { media { scattering { 2, 0.5 extinction 0.25 } } } }\n"
                              "light_source { 0, 1 media_interaction off }\n");
-  const Media& s5 = *sc.objects[0].material.extras->media;
+  const Media& s5 = sc.objects[0].material.extras->media.at(0);
   REQUIRE(s5.scattering);
   CHECK(s5.scattering->type == 5);
   CHECK(s5.scattering->color == Color(0.1f, 0.2f, 0.3f));
@@ -276,7 +276,7 @@ sphere { x * 10, 1 }
   CHECK(s5.scattering->extinction == 1);
   CHECK(s5.aaLevel == 5);
   CHECK(s5.aaThreshold == 0.2);
-  const Media& s2 = *sc.objects[1].material.extras->media;
+  const Media& s2 = sc.objects[1].material.extras->media.at(0);
   CHECK(s2.scattering->type == 2);
   CHECK(s2.scattering->eccentricity == 0);
   CHECK(s2.scattering->extinction == 0.25);
@@ -289,14 +289,24 @@ sphere { x * 10, 1 }
         "scene.pov:3:32: error: 'scattering' needs a type and a colour");
   CHECK(failure("box { -1, 1 interior { media { emission 1 method 2 } } }\n") ==
         "scene.pov:3:43: error: 'media method other than 3' is not supported yet");
-  CHECK(failure("box { -1, 1 interior { media { emission 1 } media { absorption 1 } } }\n") ==
-        "scene.pov:3:45: error: 'media' is not supported yet");
-  CHECK(failure("light_source { 0, White media_attenuation on }\n"
-                "box { -1, 1 interior { media { absorption 1 } } }\n") ==
-        "scene.pov:3:25: error: 'media_attenuation' is not supported yet");
-  CHECK(failure("light_source { 0, White media_attenuation on }\n") == "no error");  // nothing to dim it
-  CHECK(failure("light_source { 0, White media_attenuation on }\nmedia { emission 1 }\n") ==
-        "scene.pov:3:25: error: 'media_attenuation' is not supported yet");
+  // Several media in one interior, in order (the manual, "Multiple Media"), and a declared interior's.
+  const SceneDesc two = scene("#declare I = interior { media { emission 1 } }\n"
+                              "box { -1, 1 interior { media { emission 0.5 } media { absorption 1 } } }\n"
+                              "box { -1, 1 interior { I media { absorption 2 } } }\n");
+  const std::vector<Media>& both = two.objects[0].material.extras->media;
+  REQUIRE(both.size() == 2);
+  CHECK(both[0].emission == Color(0.5f));
+  CHECK(both[1].absorption == Color(1));
+  const std::vector<Media>& added = two.objects[1].material.extras->media;
+  REQUIRE(added.size() == 2);
+  CHECK(added[0].emission == Color(1));
+  CHECK(added[1].absorption == Color(2));
+  const SceneDesc dimmed = scene("light_source { 0, 1 media_attenuation on } light_source { 0, 1 media_attenuation }\n"
+                                 "light_source { 0, 1 media_attenuation off } light_source { 0, 1 }\n");
+  CHECK(dimmed.lights[0].mediaAttenuation);
+  CHECK(dimmed.lights[1].mediaAttenuation);
+  CHECK_FALSE(dimmed.lights[2].mediaAttenuation);
+  CHECK_FALSE(dimmed.lights[3].mediaAttenuation);
   CHECK(failure("media { emission 1 method 1 }\n") == "scene.pov:3:20: error: 'media method other than 3' is not supported yet");
   // An object inside a medium, or a plane across it, is drawn (POV-Ray's rule on hollow objects).
   CHECK(failure("sphere { 0, 1 hollow interior { media { emission 1 } } scale 3 }\nsphere { x * 3.5, 1 }\n"

@@ -41,8 +41,6 @@ struct ReadingContext {
   // The scene's working gamma for an image map's colours when it is read: assumed_gamma, or nothing before
   // #version 3.7, which takes them as they are.
   std::function<std::optional<double>()> imageGamma;
-  bool media = false;  // whether some interior has a medium, which a light's media_attenuation would dim it by
-  std::optional<SourceLoc> mediaAttenuation;  // where a light's `media_attenuation on` is written
 };
 
 // `image_map { [type] "file" … }` (image_map_reader.cpp); nothing when something in it is refused.
@@ -120,7 +118,7 @@ struct Surface {
   double fadeDistance = 0, fadePower = 0;  // the interior's fade (Material)
   Color fadeColor{0};
   double caustics = 0;         // the interior's faked caustics (Material)
-  std::optional<Media> media;  // the interior's (Material)
+  std::vector<Media> media;  // the interior's (Material)
   bool uvMapped = false;       // uv_mapping in the object, or in one of its pigments, normals or textures
   bool doubleIlluminate = false;  // the object's double_illuminate (Material)
   std::shared_ptr<const Surface> inside;  // the interior_texture's, seen from inside (Texture::interior)
