@@ -1,6 +1,7 @@
 // The built-in constants and functions of POV-Ray 3.7's float, vector and string function lists.
 #include <algorithm>
 #include <cctype>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -21,14 +22,17 @@ namespace {
 constexpr double kPi = 3.1415926535897932384626;
 
 
+// A number as an int, clamped first: a double outside int's range (or NaN) has none.
+int clampedInt(double v, int lo, int hi) { return std::isnan(v) ? 0 : int(std::clamp(v, double(lo), double(hi))); }
+
 // printf's %f as str() and vstr() use it: a negative width pads with zeros, a negative precision means 6.
 std::string format(double x, double width, double precision) {
-  const int w = int(width), p = int(precision);
+  const int w = clampedInt(width, -200, 200), p = clampedInt(precision, -1, 200);
   char buffer[512];
   if (p < 0) {
-    std::snprintf(buffer, sizeof buffer, w < 0 ? "%0*f" : "%*f", std::min(std::abs(w), 200), x);
+    std::snprintf(buffer, sizeof buffer, w < 0 ? "%0*f" : "%*f", std::abs(w), x);
   } else {
-    std::snprintf(buffer, sizeof buffer, w < 0 ? "%0*.*f" : "%*.*f", std::min(std::abs(w), 200), std::min(p, 200), x);
+    std::snprintf(buffer, sizeof buffer, w < 0 ? "%0*.*f" : "%*.*f", std::abs(w), p, x);
   }
   return buffer;
 }
@@ -349,7 +353,7 @@ Value Interpreter::builtin(std::string_view name, std::uint8_t index, const Sour
     case B::vstr_: {
       count(5, 5);
       if (!a[1].numeric()) fail(at, "argument 2 of vstr must be a vector");
-      const int n = std::clamp(int(f(0)), 1, 5);
+      const int n = clampedInt(f(0), 1, 5);
       std::string r;
       for (int i = 0; i < n; ++i) {
         if (i) r += s(2);
@@ -366,7 +370,7 @@ Value Interpreter::builtin(std::string_view name, std::uint8_t index, const Sour
     }
     case B::chr_: {
       count(1, 1);
-      return Value::string(std::string(1, char(int(f(0)))));
+      return Value::string(std::string(1, char(clampedInt(f(0), INT_MIN, INT_MAX))));
     }
     case B::asc_: {
       count(1, 1);

@@ -57,6 +57,17 @@ struct Folder {
   std::vector<std::string> files;
 };
 
+TEST_CASE("povray: str, vstr and chr take any number, however far outside int's range", "[povray]") {
+  // Found by fuzz_povray: a width or precision of 4e92 was converted to int (undefined behaviour). Width and
+  // precision are held to ±200 digits, vstr's count to 1…5.
+  const std::string scene = "#version 3.7;\n"
+                            "#debug concat(\"[\", str(1.5, 0, 4e92), \"]\", str(1.5, 0, -4e92), \"|\", str(1.5, 1e300, 1), \"|\",\n"
+                            "  str(1.5, -1e300, 1), \"|\", vstr(1e99, <1, 2>, \",\", 0, 0), \"|\", chr(65), \"\\n\")\n";
+  const std::string digits(200, '0');
+  CHECK(run(scene) == "[1." + "5" + digits.substr(1) + "]1.500000|" + std::string(197, ' ') + "1.5|" +
+                          std::string(197, '0') + "1.5|1,2,0,0,0|A\n");
+}
+
 TEST_CASE("povray: built-in functions, operators, arrays, loops and conditions give POV-Ray's values", "[povray]") {
   const std::string scene = R"POV(#version 3.7;
 #declare A = array[2][3] { {1, 2, 3}, {4, 5, 6} };
