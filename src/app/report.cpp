@@ -17,8 +17,8 @@ void printMaterial(std::ostream& out, const ObjectDesc& o, SceneLanguage languag
         << "\n  - Reflection: " << fixed4(m.reflection) << "\n";
     return;
   }
-  out << "- Color: " << braces(m.pigment) << "\n- Material:\n  - Ambient: " << fixed4(o.finish.ambient)
-      << "\n  - Diffuse: " << fixed4(o.finish.diffuse) << "\n";
+  out << "- Color: " << braces(m.pigment) << "\n- Material:\n  - Ambient: " << fixed4(o.finish->ambient)
+      << "\n  - Diffuse: " << fixed4(o.finish->diffuse) << "\n";
 }
 
 }  // namespace

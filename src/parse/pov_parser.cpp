@@ -276,7 +276,8 @@ class PovParser {
 
   // pigment, finish and transforms, in any order and repeated, up to the object's closing brace.
   void parseModifiers(ObjectDesc& obj, const Token& keyword) {
-    Finish& finish = obj.finish;
+    Finish finish = *obj.finish;
+    bool finishRead = false;
     for (;;) {
       const Token& t = next();
       if (isPunct(t, '}')) break;
@@ -288,6 +289,7 @@ class PovParser {
         obj.textured = true;
       } else if (t.text == "finish") {
         parseFinish(finish, t);
+        finishRead = true;
         obj.textured = true;
       } else if (t.text == "translate") {
         obj.transforms.push_back({TransformStep::Kind::Translate, vec3("the translation")});
@@ -299,6 +301,7 @@ class PovParser {
         throw ParseError(t.loc, "unknown " + std::string(keyword.text) + " property " + t.quoted());
       }
     }
+    if (finishRead) obj.finish = finish;
     Material& m = obj.material;
     m.ambient = float(finish.ambient) * m.pigment;
     m.diffuse = float(finish.diffuse) * m.pigment;

@@ -63,8 +63,8 @@ TEST_CASE("pov: the course's simple.pov-like scene, every field") {
   CHECK(sphere.radius == 2.0);
   CHECK(s.objects[0].loc.str() == "simple.pov:9:1");
   CHECK(s.objects[0].material.pigment == rt::Color(1, 0, 1));
-  CHECK(s.objects[0].finish.ambient == 0.2);
-  CHECK(s.objects[0].finish.diffuse == 0.4);
+  CHECK(s.objects[0].finish->ambient == 0.2);
+  CHECK(s.objects[0].finish->diffuse == 0.4);
   CHECK(s.objects[0].worldFromObject() == glm::dmat4(1.0));
   const auto& plane = std::get<rt::PlaneDesc>(s.objects[1].shape);
   CHECK(plane.normal == glm::dvec3(0, 1, 0));
@@ -81,7 +81,7 @@ TEST_CASE("pov: defaults of §b") {
   CHECK(s.camera.lookAt == glm::dvec3(0, 0, -1));
   CHECK(s.lights.empty());
   const rt::Material& m = s.objects.at(0).material;
-  const rt::Finish& f = s.objects.at(0).finish;
+  const rt::Finish& f = *s.objects.at(0).finish;
   CHECK(m.pigment == rt::Color(0));
   CHECK(m.filter == 0.0f);
   CHECK(f.ambient == 0.0);
@@ -157,7 +157,7 @@ TEST_CASE("pov: finish keys in any order; a later finish block changes only what
       "sphere { <0,0,0>, 1 finish { ior 1.5 refraction 1 reflection 0.25 roughness 0.5 specular 0.7 diffuse 0.6 "
       "ambient 0.1 } pigment { rgb <1, 0.5, 0.25> } finish { ambient 0.3 } }");
   const rt::Material& m = s.objects[0].material;
-  const rt::Finish& f = s.objects[0].finish;
+  const rt::Finish& f = *s.objects[0].finish;
   CHECK(f.ambient == 0.3);
   CHECK(f.diffuse == 0.6);
   CHECK(f.specular == 0.7);
@@ -177,7 +177,7 @@ TEST_CASE("pov: finish keys in any order; a later finish block changes only what
 
 TEST_CASE("pov: the 'metallic' finish key is read and ignored with a located warning") {
   const SceneDesc s = parse("sphere { <0,0,0>, 1 finish { ambient 0.2\n metallic 0.5 diffuse 0.3 } }");
-  CHECK(s.objects[0].finish.diffuse == 0.3);
+  CHECK(s.objects[0].finish->diffuse == 0.3);
   CHECK(s.warnings == std::vector<std::string>{"s.pov:3:2: warning: 'metallic' is not modelled and is ignored"});
 }
 
@@ -197,7 +197,7 @@ TEST_CASE("pov: transforms compose in file order, repeated, before and after pig
   CHECK(p.y == Approx(2));
   CHECK(p.z == Approx(3));
   CHECK(s.objects[2].material.pigment == rt::Color(1, 0, 0));
-  CHECK(s.objects[2].finish.ambient == 1.0);
+  CHECK(s.objects[2].finish->ambient == 1.0);
   // The course's R = Rx·Ry·Rz turns about z, then y, then x (§c.10): x →(y 90)→ −z →(x 90)→ y.
   const glm::dvec3 q = apply(s.objects[3].worldFromObject(), {1, 0, 0});
   CHECK(q.x == Approx(0).margin(1e-12));

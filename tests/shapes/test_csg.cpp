@@ -148,11 +148,11 @@ TEST_CASE("a CSG child without a pigment or finish takes its group's", "[csg]") 
   CHECK(std::string(shapeName(desc.objects[0].shape)) == "Difference");
   REQUIRE(group.children.size() == 2);
   CHECK(group.children[0].material.pigment == kRed);
-  CHECK(group.children[0].finish.diffuse == 0);
+  CHECK(group.children[0].finish->diffuse == 0);
   const auto& inner = std::get<CsgDesc>(group.children[1].shape);
   for (const ObjectDesc& o : inner.children) {
     CHECK(o.material.pigment == kGreen);
-    CHECK(o.finish.diffuse == 0.5);
+    CHECK(o.finish->diffuse == 0.5);
     CHECK(o.material.diffuse == Color(0, 0.5f, 0));
   }
 }

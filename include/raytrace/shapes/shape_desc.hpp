@@ -46,10 +46,24 @@ using ShapeDesc = std::variant<SphereDesc, PlaneDesc, TriangleDesc, BoxDesc, Con
 
 struct ClipDesc;
 
+// An object's finish as written, held by a pointer that the objects of one surface share: a million objects'
+// descriptions are then 40 bytes smaller each, fewer pages to fill. No pointer reads as the default Finish.
+class SharedFinish {
+ public:
+  SharedFinish() = default;
+  SharedFinish(const Finish& f) : finish_(std::make_shared<const Finish>(f)) {}  // NOLINT: implicit
+  const Finish& operator*() const { return finish_ ? *finish_ : kDefault; }
+  const Finish* operator->() const { return &**this; }
+
+ private:
+  static inline const Finish kDefault{};
+  std::shared_ptr<const Finish> finish_;
+};
+
 struct ObjectDesc {
   ShapeDesc shape;
   Material material;
-  Finish finish;  // POV: as written, for sceneinfo
+  SharedFinish finish;  // POV: as written, for sceneinfo
   SourceLoc loc;  // where the object starts, for messages
   bool textured = false;  // the file gave it a pigment or finish of its own (a CSG child without takes its group's)
   bool noShadow = false;  // POV-Ray's no_shadow: it casts no shadow

@@ -55,105 +55,141 @@ void Interpreter::directive() {
   const Token& d = rawPeek();
   at = locOf(d);
   const std::string_view name = d.text;
+  const DirectiveId id = d.directiveId;
   ++frames_.back().pos;
   const size_t base = condBase_;
-  const bool conditional = name == "if" || name == "elseif" || name == "while" || name == "switch" ||
-                           name == "case" || name == "range" || name == "for";
+  using D = DirectiveId;
+  const bool conditional = id == D::If || id == D::Elseif || id == D::While || id == D::Switch || id == D::Case ||
+                           id == D::Range || id == D::For;
   if (conditional) condBase_ = conds_.size();
-  directive(name, at);
+  directive(id, name, at);
   condBase_ = base;
 }
 
-void Interpreter::directive(std::string_view name, const SourceLoc& at) {
-  if (name == "version") {
-    version_ = number("after #version");
-    if (rawPeek().is(";")) ++frames_.back().pos;
-  } else if (name == "declare" || name == "local") {
-    declareDirective(name == "local");
-  } else if (name == "undef") {
-    undefine(expectWord("an identifier after #undef"));
-  } else if (name == "default") {
-    expect("{", "after #default");
-    defaults_(block("default", at, "}"));
-  } else if (name == "if") {
-    ifDirective(truth(expression(), at) != 0);
-  } else if (name == "ifdef" || name == "ifndef") {
-    expect("(", "after #ifdef");
-    const std::string_view id = expectWord("an identifier");
-    bool defined = find(id) != nullptr;
-    if (defined && rawPeek().is("[")) {
-      const Value& a = find(id)->value;
-      next();
-      const double i = number("as an array index");
-      expect("]", "after the index");
-      const auto* arr = a.type == Value::Type::Array ? static_cast<const ArrayValue*>(a.ref.get()) : nullptr;
-      defined = arr && i >= 0 && size_t(i) < arr->elements.size() && arr->elements[size_t(i)].type != Value::Type::None;
-    }
-    expect(")", "after the identifier");
-    ifDirective(defined == (name == "ifdef"));
-  } else if (name == "else" || name == "elseif") {
-    if (conds_.empty() || conds_.back().frame != frames_.size()) fail(at, "#" + std::string(name) + " without #if");
-    if (conds_.back().kind == Cond::Kind::Switch) return;  // falls through, like a #case
-    if (conds_.back().kind != Cond::Kind::If) fail(at, "#" + std::string(name) + " without #if");
-    conds_.pop_back();
-    skipTo(false, false);
-  } else if (name == "end") {
-    endDirective(at);
-  } else if (name == "switch") {
-    switchDirective();
-  } else if (name == "case" || name == "range") {
-    if (conds_.empty() || conds_.back().kind != Cond::Kind::Switch || conds_.back().frame != frames_.size()) {
-      fail(at, "#" + std::string(name) + " without #switch");
-    }
-    // A case after the one that matched: its condition is read and the tokens run on until #break.
-    if (name == "case") {
-      expression();
-    } else {
-      expect("(", "after #range");
-      number("as the range's low end");
-      expect(",", "between the range's ends");
-      number("as the range's high end");
-      expect(")", "after the range");
-    }
-  } else if (name == "break") {
-    breakDirective(at);
-  } else if (name == "while") {
-    const size_t start = frames_.back().pos - 1;
-    if (truth(expression(), at) != 0) {
-      conds_.push_back({Cond::Kind::While, frames_.size(), start, {}, 0, 1});
-    } else {
-      skipTo(false, false);
-    }
-  } else if (name == "for") {
-    forDirective(at);
-  } else if (name == "macro") {
-    macroDefinition(at);
-  } else if (name == "include") {
-    includeDirective(at);
-  } else if (name == "debug" || name == "warning" || name == "render" || name == "statistics") {
-    const Value text = expression();
-    if (text.type != Value::Type::String) fail(at, "#" + std::string(name) + " needs a string, found a " + typeName(text));
-    if (options_.debug) {
-      if (name == "warning") {
-        *options_.debug << at.str() << ": warning: " << text.str() << "\n";
-      } else {
-        *options_.debug << text.str();
+void Interpreter::directive(DirectiveId id, std::string_view name, const SourceLoc& at) {
+  using D = DirectiveId;
+  switch (id) {
+    case D::Version:
+      version_ = number("after #version");
+      if (rawPeek().is(";")) ++frames_.back().pos;
+      return;
+    case D::Declare:
+    case D::Local:
+      declareDirective(id == D::Local);
+      return;
+    case D::Undef:
+      undefine(expectWord("an identifier after #undef"));
+      return;
+    case D::Default:
+      expect("{", "after #default");
+      defaults_(block("default", at, "}"));
+      return;
+    case D::If:
+      ifDirective(truth(expression(), at) != 0);
+      return;
+    case D::Ifdef:
+    case D::Ifndef: {
+      expect("(", "after #ifdef");
+      const std::string_view ident = expectWord("an identifier");
+      bool defined = find(ident) != nullptr;
+      if (defined && rawPeek().is("[")) {
+        const Value& a = find(ident)->value;
+        next();
+        const double i = number("as an array index");
+        expect("]", "after the index");
+        const auto* arr = a.type == Value::Type::Array ? static_cast<const ArrayValue*>(a.ref.get()) : nullptr;
+        defined = arr && i >= 0 && size_t(i) < arr->elements.size() && arr->elements[size_t(i)].type != Value::Type::None;
       }
+      expect(")", "after the identifier");
+      ifDirective(defined == (id == D::Ifdef));
+      return;
     }
-  } else if (name == "error") {
-    const Value text = expression();
-    fail(at, text.type == Value::Type::String ? text.str() : std::string("#error"));
-  } else if (name == "fopen") {
-    fopenDirective(at);
-  } else if (name == "fclose") {
-    fcloseDirective();
-  } else if (name == "read") {
-    readDirective(at);
-  } else if (name == "write") {
-    writeDirective(at);
-  } else {
-    fail(at, "unknown directive '#" + std::string(name) + "'");
+    case D::Else:
+    case D::Elseif:
+      if (conds_.empty() || conds_.back().frame != frames_.size()) fail(at, "#" + std::string(name) + " without #if");
+      if (conds_.back().kind == Cond::Kind::Switch) return;  // falls through, like a #case
+      if (conds_.back().kind != Cond::Kind::If) fail(at, "#" + std::string(name) + " without #if");
+      conds_.pop_back();
+      skipTo(false, false);
+      return;
+    case D::End:
+      endDirective(at);
+      return;
+    case D::Switch:
+      switchDirective();
+      return;
+    case D::Case:
+    case D::Range:
+      if (conds_.empty() || conds_.back().kind != Cond::Kind::Switch || conds_.back().frame != frames_.size()) {
+        fail(at, "#" + std::string(name) + " without #switch");
+      }
+      // A case after the one that matched: its condition is read and the tokens run on until #break.
+      if (id == D::Case) {
+        expression();
+      } else {
+        expect("(", "after #range");
+        number("as the range's low end");
+        expect(",", "between the range's ends");
+        number("as the range's high end");
+        expect(")", "after the range");
+      }
+      return;
+    case D::Break:
+      breakDirective(at);
+      return;
+    case D::While: {
+      const size_t start = frames_.back().pos - 1;
+      if (truth(expression(), at) != 0) {
+        conds_.push_back({Cond::Kind::While, frames_.size(), start, {}, 0, 1});
+      } else {
+        skipTo(false, false);
+      }
+      return;
+    }
+    case D::For:
+      forDirective(at);
+      return;
+    case D::Macro:
+      macroDefinition(at);
+      return;
+    case D::Include:
+      includeDirective(at);
+      return;
+    case D::Debug:
+    case D::Warning:
+    case D::Render:
+    case D::Statistics: {
+      const Value text = expression();
+      if (text.type != Value::Type::String) fail(at, "#" + std::string(name) + " needs a string, found a " + typeName(text));
+      if (options_.debug) {
+        if (id == D::Warning) {
+          *options_.debug << at.str() << ": warning: " << text.str() << "\n";
+        } else {
+          *options_.debug << text.str();
+        }
+      }
+      return;
+    }
+    case D::Error: {
+      const Value text = expression();
+      fail(at, text.type == Value::Type::String ? text.str() : std::string("#error"));
+    }
+    case D::Fopen:
+      fopenDirective(at);
+      return;
+    case D::Fclose:
+      fcloseDirective();
+      return;
+    case D::Read:
+      readDirective(at);
+      return;
+    case D::Write:
+      writeDirective(at);
+      return;
+    case D::Unknown:
+      break;
   }
+  fail(at, "unknown directive '#" + std::string(name) + "'");
 }
 
 void Interpreter::declareDirective(bool local) {
@@ -458,14 +494,17 @@ std::string_view Interpreter::skipTo(bool stopAtElse, bool stopAtCase) {
     ++f.pos;
     if (t.kind != Token::Kind::Directive) continue;
     const std::string_view n = t.text;
-    if (n == "if" || n == "ifdef" || n == "ifndef" || n == "switch" || n == "while" || n == "for" || n == "macro") {
+    using D = DirectiveId;
+    const D id = t.directiveId;
+    if (id == D::If || id == D::Ifdef || id == D::Ifndef || id == D::Switch || id == D::While || id == D::For ||
+        id == D::Macro) {
       ++depth;
-    } else if (n == "end") {
+    } else if (id == D::End) {
       if (depth == 0) return n;
       --depth;
-    } else if (depth == 0 && stopAtElse && (n == "else" || n == "elseif")) {
+    } else if (depth == 0 && stopAtElse && (id == D::Else || id == D::Elseif)) {
       return n;
-    } else if (depth == 0 && stopAtCase && (n == "case" || n == "range" || n == "else")) {
+    } else if (depth == 0 && stopAtCase && (id == D::Case || id == D::Range || id == D::Else)) {
       return n;
     }
   }

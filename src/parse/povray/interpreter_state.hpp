@@ -16,7 +16,18 @@ struct Interpreter::Slot {
 // The identifiers of one level: the global one, an include file's, or a macro call's. Parameters passed as a
 // bare identifier share the caller's slot, so `#declare` on them changes the caller's identifier.
 struct Interpreter::Scope {
-  std::unordered_map<std::string_view, std::shared_ptr<Slot>> symbols;
+  // Names compared byte by byte inline: a level's few names are searched one by one, and for a name of the
+  // same length the library's comparison would call memcmp each time, most of a loop's lookups' time.
+  struct SameName {
+    bool operator()(std::string_view a, std::string_view b) const {
+      if (a.size() != b.size()) return false;
+      for (size_t i = 0; i < a.size(); ++i) {
+        if (a[i] != b[i]) return false;
+      }
+      return true;
+    }
+  };
+  std::unordered_map<std::string_view, std::shared_ptr<Slot>, std::hash<std::string_view>, SameName> symbols;
 };
 
 // An open #if, #switch, #while, #for or macro call, closed by its #end.

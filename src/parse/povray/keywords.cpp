@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <iterator>
 #include <string_view>
+#include <utility>
 
 #include "raytrace/parse/povray/lexer.hpp"
 
@@ -112,6 +113,21 @@ constexpr std::string_view kBuiltins[] = {
 std::uint8_t builtinIndex(std::string_view word) {
   const auto* at = std::lower_bound(std::begin(kBuiltins), std::end(kBuiltins), word);
   return at != std::end(kBuiltins) && *at == word ? std::uint8_t(at - std::begin(kBuiltins) + 1) : 0;
+}
+
+DirectiveId directiveIdOf(std::string_view name) {
+  using D = DirectiveId;
+  static constexpr std::pair<std::string_view, D> kDirectives[] = {
+      {"version", D::Version}, {"declare", D::Declare}, {"local", D::Local}, {"undef", D::Undef},
+      {"default", D::Default}, {"if", D::If}, {"ifdef", D::Ifdef}, {"ifndef", D::Ifndef}, {"else", D::Else},
+      {"elseif", D::Elseif}, {"end", D::End}, {"switch", D::Switch}, {"case", D::Case}, {"range", D::Range},
+      {"break", D::Break}, {"while", D::While}, {"for", D::For}, {"macro", D::Macro}, {"include", D::Include},
+      {"debug", D::Debug}, {"warning", D::Warning}, {"render", D::Render}, {"statistics", D::Statistics},
+      {"error", D::Error}, {"fopen", D::Fopen}, {"fclose", D::Fclose}, {"read", D::Read}, {"write", D::Write}};
+  for (const auto& [n, id] : kDirectives) {
+    if (n == name) return id;
+  }
+  return D::Unknown;
 }
 
 bool isColourWord(std::string_view w) {

@@ -49,6 +49,7 @@ class Lexer {
         if (i_ >= s_.size() || !wordStart(s_[i_])) continue;  // a lone '#', which POV-Ray passes over
         t.kind = Token::Kind::Directive;
         t.text = word();
+        t.directiveId = directiveIdOf(t.text);
       } else {
         t.kind = Token::Kind::Symbol;
         const std::string_view two = s_.substr(i_, 2);

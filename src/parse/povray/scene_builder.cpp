@@ -228,6 +228,9 @@ class Builder {
     std::vector<ObjectDesc>& list = scene_.objects;
     if (list.size() == list.capacity() && list.size() >= kFourfoldFrom) list.reserve(list.size() * 4);
     list.push_back(std::move(o));
+    const ObjectDesc& added = list.back();
+    plainOnly_ = plainOnly_ && !added.texture && !std::holds_alternative<CsgDesc>(added.shape) &&
+                 !std::holds_alternative<MeshDesc>(added.shape);
   }
 
   // The material's `hollow` (SurfaceExtras), on a CSG's parts too unless they say otherwise, as POV-Ray's
@@ -1044,6 +1047,9 @@ class Builder {
 
  public:
   Color ambientLight_{1};
+  // No object added so far has a texture, a CSG's parts or a mesh's faces: an ambient_light of 1 then leaves
+  // every ambient term as it is, and the million objects of a large scene need not be gone over again.
+  bool plainOnly_ = true;
   bool nestedLight_ = false;  // reading a light inside an object
   std::vector<ObjectDesc> looksInside_;  // the looks_like objects of such lights, moved with them
   std::optional<double> assumedGamma_;
@@ -1057,7 +1063,7 @@ class Builder {
   // for all the objects until a #default changes it.
   struct DefaultTerms {
     FinishTerms terms;
-    Finish finish;
+    SharedFinish finish;
     bool patterned;
   };
   std::optional<DefaultTerms> defaultTerms_;
@@ -1149,7 +1155,10 @@ SceneDesc parsePovRay(std::string_view text, const std::string& path, const PovR
   // With radiosity a 3.7 scene's ambient term is 0 and its emission alone lights; an older scene's ambient (times
   // ambient_light) still does, as emission would (POV-Ray 3.7 manual, "How Radiosity Works"; measured, docs/gi.md).
   const bool noAmbient = scene.radiosity && interpreter.version() >= 3.7;
-  for (ObjectDesc& o : scene.objects) scaleAmbient(o, noAmbient ? Color(0) : builder.ambientLight_);
+  const Color light = noAmbient ? Color(0) : builder.ambientLight_;
+  if (light != Color(1) || !builder.plainOnly_) {
+    for (ObjectDesc& o : scene.objects) scaleAmbient(o, light);
+  }
   scene.dataFiles = interpreter.takeDataFiles();
   scene.inputFiles = interpreter.takeFilesFound();
   return scene;

@@ -275,6 +275,16 @@ TEST_CASE("povray: an error in an include file or a macro names the chain of pla
         "scene.pov:3:1: error: a directive is still open at the end of the file: #end is missing");
 }
 
+TEST_CASE("povray: each directive is told by its name, and an unknown one is an error", "[povray]") {
+  CHECK(failure("#version 3.7;\n  #whilst (1)\n") == "scene.pov:2:3: error: unknown directive '#whilst'");
+  CHECK(failure("#elseif (1)\n") == "scene.pov:1:1: error: #elseif without #if");
+  CHECK(failure("#range (1, 2)\n") == "scene.pov:1:1: error: #range without #switch");
+  // A skipped branch's nested #if, #while and #switch each close with their own #end.
+  CHECK(run("#if (0) #if (1) #while (0) #end #switch (1) #case (1) #break #end #end #debug \"a\" "
+            "#elseif (1) #debug \"b\" #else #debug \"c\" #end") == "b");
+  CHECK(run("#ifndef (Nope) #debug \"none\" #end #local L = 1; #undef L #ifdef (L) #debug \"still\" #end") == "none");
+}
+
 TEST_CASE("povray: what cannot be drawn yet is refused as not supported, after the whole file has parsed", "[povray]") {
   CHECK(failure("#version 3.7;\n  ovus { 1, 0.5 }\n") == "scene.pov:2:3: error: 'ovus' is not supported yet");
   CHECK(failure("#version 3.7;\nsphere { 0, 1 pigment { tiling 1 } }\n") ==

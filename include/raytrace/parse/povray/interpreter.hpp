@@ -164,7 +164,7 @@ class Interpreter {
 
   // Directives (directives.cpp).
   void directive();
-  void directive(std::string_view name, const SourceLoc& at);
+  void directive(DirectiveId id, std::string_view name, const SourceLoc& at);
   void declareDirective(bool local);
   void includeDirective(const SourceLoc& at);
   void macroDefinition(const SourceLoc& at);

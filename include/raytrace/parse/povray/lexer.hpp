@@ -10,6 +10,13 @@
 
 namespace rt::povray {
 
+// The directives, which the lexer names once (directiveId) so that the interpreter picks each by a switch
+// rather than comparing its name with every directive's in turn.
+enum class DirectiveId : std::uint8_t {
+  Unknown, Version, Declare, Local, Undef, Default, If, Ifdef, Ifndef, Else, Elseif, End, Switch, Case, Range,
+  Break, While, For, Macro, Include, Debug, Warning, Render, Statistics, Error, Fopen, Fclose, Read, Write
+};
+
 struct Token {
   enum class Kind : std::uint8_t { Number, String, Word, Symbol, Directive, End } kind = Kind::End;
   std::string_view text;  // a word, symbol or directive name; a string's contents with escapes resolved
@@ -21,6 +28,7 @@ struct Token {
   bool startsValue = false;
   bool colourWord = false;
   std::uint8_t builtin = 0;
+  DirectiveId directiveId = DirectiveId::Unknown;  // a directive's; Unknown for any other token
 
   // Symbols have one or two characters: compared directly, this is most of the parser's time otherwise.
   bool is(std::string_view symbol) const {
@@ -46,6 +54,8 @@ bool isKeyword(std::string_view word);
 bool isColourWord(std::string_view word);
 // A built-in constant or function's place among them sorted by name, from 1; 0 for any other word.
 std::uint8_t builtinIndex(std::string_view word);
+// The directive a name after '#' is; Unknown for any other name.
+DirectiveId directiveIdOf(std::string_view name);
 
 // Splits `text` into tokens. Throws ParseError for an unterminated string or comment or a stray character.
 void lex(std::string_view text, TokenFile& out);
