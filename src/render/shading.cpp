@@ -95,11 +95,12 @@ float fresnelReflectance(float cosTheta, float ior) {
   return 0.5f * a * a * (1 + b * b);
 }
 
-float variableReflection(const Material& m, float cosTheta) {
+Color variableReflection(const Material& m, float cosTheta) {
   const SurfaceExtras& e = *m.extras;
   const float t = e.reflectionFresnel ? fresnelReflectance(cosTheta, m.ior)
                                       : std::pow(1 - std::clamp(cosTheta, 0.0f, 1.0f), e.reflectionFalloff);
-  return e.reflectionMin + (m.reflection - e.reflectionMin) * t;
+  const Color least = e.reflectionMin * e.reflectionMinTint, most = m.reflection * e.reflectionTint;
+  return least + (most - least) * t;
 }
 
 Color metallicTint(const Color& pigment, float metallic, float cosTheta) {
@@ -137,6 +138,7 @@ Weights weights(const Material& m, float fresnel, const Dialect& dialect) {
   w.local = (1.0f - f) * (dialect.reflectionReplacesLocal() ? 1.0f - k : 1.0f);
   w.reflection = (dialect.transparencyDimsReflection() ? 1.0f - f : 1.0f) * k + f * fresnel;
   w.transmission = f * (1.0f - fresnel) * (m.extras->conserveEnergy ? 1.0f - k : 1.0f);
+  w.reflectionTint = m.extras->reflectionTint;
   return w;
 }
 

@@ -452,8 +452,10 @@ Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Material& m
   Weights w = weights(m, fresnel, dialect_);
   if (m.extras->reflectionFalloff > 0) {
     Material varied = m;
-    varied.reflection = variableReflection(m, float(glm::dot(n, -ray.dir)));
+    const Color reflection = variableReflection(m, float(glm::dot(n, -ray.dir)));
+    varied.reflection = brightest(reflection);
     w = weights(varied, fresnel, dialect_);
+    if (varied.reflection > 0) w.reflectionTint = reflection / varied.reflection;
   }
   if (w.transmission != 0) {
     // The outward normal as the shading normal bends it: hit.normal itself where nothing bends it.
@@ -868,7 +870,7 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
     if (entering && m.extras->fadeDistance > 0) gathered *= interiorFade(m, float(t.distance));
     refraction = w.transmission * gathered;
   }
-  Color reflectTint = dialect_.reflectionTint(m.pigment) * m.extras->reflectionTint;
+  Color reflectTint = dialect_.reflectionTint(m.pigment) * w.reflectionTint;
   if (m.extras->reflectionMetallic != 0) {
     reflectTint *= metallicTint(m.pigment, m.extras->reflectionMetallic, float(glm::dot(n, -ray.dir)));
   }

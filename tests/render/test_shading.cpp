@@ -218,11 +218,11 @@ TEST_CASE("POV-Ray's variable reflection: from its minimum to its maximum by the
   e.reflectionFalloff = 1;
   m.ior = 1.5f;
   // POV-Ray's picture of a black mirror ball in a white sky, `reflection { 0.2, 0.8 }`: 0.266 at cos θ 0.892.
-  CHECK_THAT(variableReflection(m, 1.0f), WithinAbs(0.2, 1e-6));
-  CHECK_THAT(variableReflection(m, 0.892f), WithinAbs(0.2648, 1e-4));
-  CHECK_THAT(variableReflection(m, 0.0f), WithinAbs(0.8, 1e-6));
+  CHECK_THAT(variableReflection(m, 1.0f).r, WithinAbs(0.2, 1e-6));
+  CHECK_THAT(variableReflection(m, 0.892f).r, WithinAbs(0.2648, 1e-4));
+  CHECK_THAT(variableReflection(m, 0.0f).r, WithinAbs(0.8, 1e-6));
   e.reflectionFalloff = 3;  // POV-Ray: 0.209 at cos θ 0.758
-  CHECK_THAT(variableReflection(m, 0.758f), WithinAbs(0.2 + 0.6 * std::pow(0.242, 3), 1e-5));
+  CHECK_THAT(variableReflection(m, 0.758f).r, WithinAbs(0.2 + 0.6 * std::pow(0.242, 3), 1e-5));
   // Fresnel: ((n − 1)/(n + 1))² = 0.04 head-on at n = 1.5, 1 at grazing; `reflection { 0.1, 1 fresnel }` is
   // 0.136 head-on in POV-Ray's picture.
   CHECK_THAT(fresnelReflectance(1.0f, 1.5f), WithinAbs(0.04, 1e-6));
@@ -230,7 +230,15 @@ TEST_CASE("POV-Ray's variable reflection: from its minimum to its maximum by the
   e.reflectionFresnel = true;
   e.reflectionMin = 0.1f;
   m.reflection = 1;
-  CHECK_THAT(variableReflection(m, 1.0f), WithinAbs(0.136, 1e-6));
+  CHECK_THAT(variableReflection(m, 1.0f).r, WithinAbs(0.136, 1e-6));
+  // Colours, `reflection { rgb <0.5, 0, 0>, rgb <0, 0.25, 0> }`: from the one to the other channel by channel.
+  e.reflectionFresnel = false;
+  e.reflectionFalloff = 1;
+  e.reflectionMin = 0.5f;
+  e.reflectionMinTint = Color(1, 0, 0);
+  m.reflection = 0.25f;
+  e.reflectionTint = Color(0, 1, 0);
+  CHECK(variableReflection(m, 0.5f) == Color(0.25f, 0.125f, 0));
 }
 
 TEST_CASE("metallic reflection: the pigment's colour facing the viewer, the light's at grazing angles", "[shading]") {

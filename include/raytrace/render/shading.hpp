@@ -65,7 +65,7 @@ float fresnelReflectance(float cosTheta, float ior);
 
 // POV-Ray's variable reflection at cos θ between the normal and the direction to the viewer (Material's
 // reflection and SurfaceExtras' reflectionMin, reflectionFalloff, reflectionFresnel; POV-Ray 3.7 manual, "Specular Reflection").
-float variableReflection(const Material& m, float cosTheta);
+Color variableReflection(const Material& m, float cosTheta);
 
 // The tint of light reflected by a `reflection { … metallic M }` surface, cos θ = cosTheta from the normal:
 // 1 + M·(1 − F)·(pigment − 1), with POV-Ray's empirical F(x) = 0.014567225/(x − 1.12)² − 0.011612903 in [0, 1]
@@ -81,6 +81,7 @@ Color metallicTint(const Color& pigment, float metallic, float cosTheta);
 // f(1−F)(1−k) (manual, "Conserve Energy for Reflection").
 struct Weights {
   float local = 1, reflection = 0, transmission = 0;
+  Color reflectionTint{1};  // a colour reflection over `reflection` (SurfaceExtras::reflectionTint)
 };
 Weights weights(const Material& m, float fresnel, const Dialect& dialect);
 

@@ -41,7 +41,8 @@ struct SurfaceExtras {
   float reflectionMetallic = 0;
   // A colour `reflection`: reflected light tinted by the colour over its largest channel, the Material's
   // `reflection` (POV-Ray 3.7 manual, "Specular Reflection": the reflection may be a colour); white: not tinted.
-  Color reflectionTint{1};
+  // The same for a variable reflection's minimum colour, over reflectionMin.
+  Color reflectionTint{1}, reflectionMinTint{1};
   bool reflectionFresnel = false;
   // conserve_energy: light through the surface is what its reflection leaves (Weights, shading.hpp).
   bool conserveEnergy = false;
@@ -61,7 +62,7 @@ struct SurfaceExtras {
   // Whether any of them changes a picture.
   bool any() const {
     return fadeDistance > 0 || caustics != 0 || reflectionFalloff > 0 || reflectionFresnel || crand != 0 || reflectionMetallic != 0 ||
-           reflectionTint != Color(1) || conserveEnergy || irid || doubleIlluminate || !media.empty() || hollow ||
+           reflectionTint != Color(1) || reflectionMinTint != Color(1) || conserveEnergy || irid || doubleIlluminate || !media.empty() || hollow ||
            interior != 0;
   }
 };

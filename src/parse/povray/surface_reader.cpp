@@ -586,9 +586,6 @@ void readReflection(const Node& n, PovFinish& f, ReadingContext& context) {
     const Item& r = n.items[i];
     if (r.kind == Item::Kind::Value && r.value.numeric()) {
       values.push_back(colourOf(r.value).rgb);
-      if (values.size() == 2 && reflectionTint(values[0]) != reflectionTint(values[1])) {
-        context.refuse(r, "a reflection's minimum and maximum of different hues");
-      }
       continue;
     }
     const Value* v = r.kind == Item::Kind::Keyword ? valueAfter(n, i) : nullptr;
@@ -607,6 +604,7 @@ void readReflection(const Node& n, PovFinish& f, ReadingContext& context) {
   if (values.empty()) return;
   setReflection(f, values.back());
   f.reflectionMin = values.size() > 1 ? std::optional<double>(largest(values.front())) : std::nullopt;
+  f.reflectionMinTint = reflectionTint(values.front());
 }
 
 // `irid { amount [thickness T] [turbulence U] }` (POV-Ray 3.7 manual, "Iridescence"); amount 0 is no film.
@@ -686,6 +684,7 @@ void readFinish(const Node& n, PovFinish& f, ReadingContext& context) {
     } else if (w == "reflection") {
       setReflection(f, colourOf(*v).rgb);
       f.reflectionMin.reset();
+      f.reflectionMinTint = Color(1);
     } else if (w == "brilliance") {
       f.brilliance = x;
     } else {
@@ -863,6 +862,7 @@ FinishTerms finishTerms(const PovFinish& f, const Surface& s) {
   extras.crand = float(f.crand);
   extras.reflectionMetallic = float(f.reflectionMetallic);
   extras.reflectionTint = f.reflectionTint;
+  extras.reflectionMinTint = f.reflectionMinTint;
   extras.conserveEnergy = f.conserveEnergy;
   extras.irid = f.irid;
   // Fresnel with a single value varies from 0 (POV-Ray: `reflection { 1 fresnel }` is a dielectric's mirror).

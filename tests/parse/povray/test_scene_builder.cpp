@@ -428,8 +428,12 @@ sphere { 0, 1 finish { reflection rgb 0.5 } }
   CHECK(c.objects[1].material.extras->reflectionMin == 0.2f);
   CHECK(c.objects[1].material.extras->reflectionTint == Color(0.5f, 1, 0.25f));
   CHECK(c.objects[2].material.extras == &kNoExtras);
-  CHECK(failure("sphere { 0, 1 finish { reflection { rgb <1, 0, 0>, rgb <0, 1, 0> } } }\n") ==
-        "scene.pov:3:52: error: 'a reflection's minimum and maximum of different hues' is not supported yet");
+  CHECK(c.objects[1].material.extras->reflectionMinTint == Color(0.5f, 1, 0.25f));
+  const SceneDesc hues = scene("sphere { 0, 1 finish { reflection { rgb <0.5, 0, 0>, rgb <0, 0.25, 0> } } }\n");
+  CHECK(hues.objects[0].material.extras->reflectionMin == 0.5f);
+  CHECK(hues.objects[0].material.extras->reflectionMinTint == Color(1, 0, 0));
+  CHECK(hues.objects[0].material.reflection == 0.25f);
+  CHECK(hues.objects[0].material.extras->reflectionTint == Color(0, 1, 0));
 }
 
 TEST_CASE("povray scene: textures take the transforms after them, at every level, and pass to CSG children",

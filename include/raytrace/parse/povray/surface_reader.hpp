@@ -81,7 +81,8 @@ struct PovFinish {
   double reflectionFalloff = 1;
   double reflectionMetallic = 0;
   bool reflectionFresnel = false;
-  Color reflectionTint{1};  // a colour `reflection` over its largest channel, which is `reflection`
+  Color reflectionTint{1};     // a colour `reflection` over its largest channel, which is `reflection`
+  Color reflectionMinTint{1};  // the same for the minimum
   bool conserveEnergy = false;
   std::shared_ptr<const Iridescence> irid;  // `irid { … }` with an amount other than 0
   double diffuse = 0.6, phong = 0, phongSize = 40, specular = 0, roughness = 0.05, reflection = 0, brilliance = 1, metallic = 0;
