@@ -295,6 +295,15 @@ struct PatternDraft {
       args.vector = vec3(*v);
       args.hasVector = true;
     }
+    if (k->make == makeTiling) {
+      // POV-Ray truncates the number and takes 1 … 27 (its parser's message).
+      const int number = int(args.vector.x);
+      if (number < 1 || number > 27) throw ParseError(it.loc, "tiling number must be between 1 and 27");
+      if (!tilingDrawn(number)) {
+        context.refuse(it.loc, "tiling " + std::to_string(number));
+        return nullptr;
+      }
+    }
     if (k->make == makeFractal) readFractalHead(n, i, args.fractal);
     if (k->make == makeDensityFile) readDensityFileHead(n, i, args, context);
     return makePattern(*k, args);
