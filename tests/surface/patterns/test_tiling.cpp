@@ -34,6 +34,16 @@ TEST_CASE("tiling: the tiles' values and bevels as POV-Ray gives them", "[patter
             0.606936, 0.958683});
   check(3, {0.223205, 0.902961, 0.157142, 0.956910, 0.788822, 0.468301, 0.888526, 0.950070, 0.684679, 0.842116,
             0.889193, 0.938025});
+  check(4, {0.630940, 0.870615, 0.542856, 0.274907, 0.718429, 0.884530, 0.451368, 0.053146, 0.579572, 0.621024,
+            0.852257, 0.917366});
+  check(6, {0.8, 0.31, 0.43, 0.71, 0.86, 0.95, 0.4, 0.73, 0.55, 0.8, 0.93, 0.38});
+  // Octagons among squares: an octagon's middle, farther from its edges than a square's, stays at 0.5.
+  check(7, {0.5, 0.395980, 0.573690, 0.972893, 0.522325, 0.742893, 0.5, 0.566619, 0.764609, 0.678680, 0.722893,
+            0.825269});
+  check(8, {0.769060, 0.780607, 0.926129, 0.757513, 0.319418, 0.942265, 0.294103, 0.633380, 0.160876, 0.283889,
+            0.926129, 0.470649});
+  check(9, {0.769060, 0.902346, 0.771428, 0.971273, 0.666667, 0.942265, 0.592351, 0.633380, 0.789786, 0.561411,
+            0.666667, 0.666667});
   check(5, {0.210313, 0.290205, 0.847619, 0.647516, 0.473595, 0.294843, 0.617123, 0.644476, 0.859857, 0.207008,
             0.404624, 0.305789});
 }
@@ -53,7 +63,10 @@ TEST_CASE("tiling: the scene reader's number", "[patterns][tiling]") {
         "scene.pov:2:24: error: tiling number must be between 1 and 27");
   CHECK(test::povFailure("plane { y, 0 pigment { tiling 0.5 } }") ==
         "scene.pov:2:24: error: tiling number must be between 1 and 27");
-  CHECK(test::povFailure("plane { y, 0 pigment { tiling } }") == "scene.pov:2:24: error: 'tiling' needs a number or a vector");
+  CHECK(test::povFailure("plane { y, 0 pigment { tiling 27 } }") ==
+        "scene.pov:2:24: error: 'tiling 27' is not supported yet");
+  CHECK(test::povFailure("plane { y, 0 pigment { tiling } }") ==
+        "scene.pov:2:24: error: 'tiling' needs a number or a vector");
 }
 
 }  // namespace
