@@ -94,6 +94,8 @@ TilingShape tilingShape(int n) {
                {1, {{0, 4 * kH}, {0.5, 3 * kH}, {1, 4 * kH}}},
                {2, hexagonAt(0.5, kH)},
                {2, hexagonAt(1.5, 3 * kH)}}};
+    case 10:  // unit squares in rows along x, every other row shifted by a half
+      return {1, {1, 2}, {{0, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}}, {0, {{-0.5, 1}, {0.5, 1}, {0.5, 2}, {-0.5, 2}}}}};
     default:
       return {};
   }
