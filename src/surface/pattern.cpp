@@ -45,6 +45,7 @@ const PatternKind* patternKind(std::string_view name) {
       {"spiral1", true, makeSpiral1, kTriangle, true, false},  // `spiral1 N`: N arms
       {"spiral2", true, makeSpiral2, kTriangle, true, false},  // `spiral2 N`: N arms
       {"spotted", false, makeBozo},
+      {"tiling", true, makeTiling},  // `tiling N`: its number checked by surface_reader.cpp
       {"waves", false, makeWaves},
       {"wood", false, makeWood, kTriangle, true, true, &kWoodMap},
       {"wrinkles", false, makeWrinkles},

@@ -207,5 +207,23 @@ TEST_CASE("patterns: bad fractal and brick settings stop the scene", "[patterns]
         "scene.pov:2:32: error: 'mortar' belongs to a brick pattern");
 }
 
+TEST_CASE("patterns: a later pigment block remakes the earlier block's pattern with its own modifiers",
+          "[patterns]") {
+  // What POV-Ray's pigment function gave for bozo turbulence 0.5 octaves 2 (and without octaves) rotate 90*z.
+  const SceneDesc s = test::pov(R"(
+#declare T = texture { pigment { bozo turbulence 0.5 color_map { [0 rgb 0] [1 rgb 1] } } }
+plane { y, 0 texture { T pigment { octaves 2 rotate 90*z } } }
+plane { y, 0 texture { T pigment { rotate 90*z } } }
+)");
+  REQUIRE(s.objects.size() == 2);
+  const glm::dvec3 points[] = {{0.3, 0.2, 0.1}, {1.7, -0.4, 2.2}, {-2.6, 1.5, -0.4}, {0.9, 3.1, -1.3}};
+  const double octaves2[] = {0.568297, 0.564489, 0.528309, 0.583634};
+  const double octaves6[] = {0.529166, 0.576050, 0.514104, 0.599669};
+  for (size_t i = 0; i < 4; ++i) {
+    CHECK(s.objects[0].texture->at(points[i]).pigment.r == Approx(octaves2[i]).margin(2e-6));
+    CHECK(s.objects[1].texture->at(points[i]).pigment.r == Approx(octaves6[i]).margin(2e-6));
+  }
+}
+
 }  // namespace
 }  // namespace rt

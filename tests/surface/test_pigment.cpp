@@ -48,7 +48,7 @@ TEST_CASE("pigment: the continuous patterns' values", "[pigment]") {
   CHECK(pattern("cylindrical")->value({0.6, 5, 0.8}) == Approx(0));
   CHECK(pattern("boxed")->value({0.5, -0.75, 0.25}) == Approx(0.25));
   CHECK(pattern("planar")->value({9, -0.25, 9}) == Approx(0.75));
-  CHECK(patternKind("tiling") == nullptr);
+  CHECK(patternKind("square") == nullptr);
 }
 
 TEST_CASE("pigment: a colour map interpolates between its entries and holds its ends", "[pigment]") {

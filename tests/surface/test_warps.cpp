@@ -80,6 +80,30 @@ TEST_CASE("black hole warp: a point moved along its line from the centre by stre
                                        {{-1.2, -1.3, -0.5}, {-1.197082, -1.298055, -0.5}}});
 }
 
+TEST_CASE("black hole warp: turbulence moves each block's centre; a hole too big for its block moves it", "[warp]") {
+  // black_hole <0.2,0.3,0.5>, 0.4 falloff 1 strength 0.8 repeat <1,1,0> turbulence <0.3,0.2,0.1>: the centre's
+  // x and y moved out to the radius, the block's x enlarged to 1.1; points near five blocks' centres.
+  BlackHoleArgs a;
+  a.centre = {0.2, 0.3, 0.5};
+  a.radius = 0.4;
+  a.falloff = 1;
+  a.strength = 0.8;
+  a.repeat = {1, 1, 0};
+  a.turbulence = {0.3, 0.2, 0.1};
+  check(*makeBlackHoleWarp(a), {{{-1.6047, -0.6045, 0.5826}, {-1.548585, -0.652003, 0.612837}},
+                                {{-0.3297, -0.5928, 0.6286}, {-0.273561, -0.640288, 0.658816}},
+                                {{0.5469, 1.4775, 0.5853}, {0.603020, 1.430005, 0.615543}},
+                                {{1.6514, -0.5231, 0.6222}, {1.707512, -0.570601, 0.652438}},
+                                {{2.7632, -0.6411, 0.6107}, {2.819324, -0.688598, 0.640911}},
+                                {{0.3, 0.2, 0.1}, {0.300002, 0.199997, 0.099999}}});
+  BlackHoleArgs alone;  // black_hole <0.5,0.5,0.5>, 0.4 falloff 0 turbulence 0.2: without a repeat it stays
+  alone.centre = glm::dvec3(0.5);
+  alone.radius = 0.4;
+  alone.falloff = 0;
+  alone.turbulence = glm::dvec3(0.2);
+  check(*makeBlackHoleWarp(alone), {{{0.6, 0.5, 0.55}, {0.7, 0.5, 0.6}}});
+}
+
 TEST_CASE("planar warp: the plane's pattern extruded along z, as POV-Ray reads it for any normal", "[warp]") {
   check(*makePlanarWarp({0, 0, 1}, 0), {{{0.3, 0.2, 0.1}, {0.3, 0.2, 0}}, {{-2.6, 1.5, -0.4}, {-2.6, 1.5, 0}}});
   check(*makePlanarWarp({0, 1, 0}, 0.3), {{{0.3, 0.2, 0.1}, {0.3, -0.3, 0.2}}, {{-2.6, 1.5, -0.4}, {-2.6, -0.3, 1.5}}});

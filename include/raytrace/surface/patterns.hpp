@@ -50,6 +50,9 @@ std::unique_ptr<Pattern> makeSpiral2(const PatternArgs&);
 // The spirals' angle about z from the −y axis, as a share of a turn in [0, 1); 0 on the axis itself, as
 // POV-Ray counts it (docs/povray-noise.md).
 double spiralTurn(const glm::dvec3& p);
+// `tiling N`: whether tiling N is drawn yet (N in 1 … 27 is POV-Ray's range).
+bool tilingDrawn(int n);
+std::unique_ptr<Pattern> makeTiling(const PatternArgs&);
 std::unique_ptr<Pattern> makeWaves(const PatternArgs&);
 std::unique_ptr<Pattern> makeWood(const PatternArgs&);
 std::unique_ptr<Pattern> makeWrinkles(const PatternArgs&);

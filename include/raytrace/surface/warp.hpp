@@ -35,6 +35,7 @@ struct BlackHoleArgs {
   double falloff = 2, strength = 1;
   bool inverse = false;
   glm::dvec3 repeat{0};  // 0 along an axis: no repetition along it
+  glm::dvec3 turbulence{0};  // with a repeat: how far each block's centre may stray, along each axis
 };
 std::unique_ptr<Warp> makeBlackHoleWarp(const BlackHoleArgs& args);
 

@@ -295,6 +295,15 @@ struct PatternDraft {
       args.vector = vec3(*v);
       args.hasVector = true;
     }
+    if (k->make == makeTiling) {
+      // POV-Ray truncates the number and takes 1 … 27 (its parser's message).
+      const int number = int(args.vector.x);
+      if (number < 1 || number > 27) throw ParseError(it.loc, "tiling number must be between 1 and 27");
+      if (!tilingDrawn(number)) {
+        context.refuse(it.loc, "tiling " + std::to_string(number));
+        return nullptr;
+      }
+    }
     if (k->make == makeFractal) readFractalHead(n, i, args.fractal);
     if (k->make == makeDensityFile) readDensityFileHead(n, i, args, context);
     return makePattern(*k, args);
@@ -550,8 +559,14 @@ void readPigmentItems(const Node& n, Pigment& p, PatternDraft& draft, std::vecto
 
 std::vector<WarpMark> readPigment(const Node& n, Pigment& p, std::vector<TransformStep>& steps, ReadingContext& context) {
   PatternDraft draft;
+  if (const auto earlier = p.pattern ? context.patternRecipes->find(p.pattern) : context.patternRecipes->end();
+      earlier != context.patternRecipes->end()) {  // a pattern of an earlier block, which this one may modify
+    draft.kind = earlier->second.kind;
+    draft.args = earlier->second.args;
+  }
   readPigmentItems(n, p, draft, steps, context);
   draft.finish(p.pattern, n.loc, context);
+  if (p.pattern && draft.kind) context.patternRecipes->insert_or_assign(p.pattern, ReadingContext::PatternRecipe{draft.kind, draft.args});
   // Without a map a continuous pattern is drawn with its kind's own map, else as a grey ramp, black at 0 and
   // white at 1 (measured with pigment functions).
   if (p.average && p.map.empty()) throw ParseError(n.loc, "'average' needs a pigment_map");

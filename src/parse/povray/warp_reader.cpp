@@ -30,10 +30,6 @@ class WarpItems {
     context_.refuse(it, "a value in a warp");
     refused_ = true;
   }
-  void refuse(const SourceLoc& loc, std::string_view what) {
-    context_.refuse(loc, what);
-    refused_ = true;
-  }
   bool refused() const { return refused_; }
   const Node& node() const { return n_; }
 
@@ -78,8 +74,7 @@ std::shared_ptr<const Warp> repeat(WarpItems& r) {
   return makeRepeatWarp(a);
 }
 
-// `black_hole C, R [falloff F] [strength S] [inverse] [repeat V]`; its `turbulence` (random centres per block)
-// is refused, as is a hole that does not fit its block, which POV-Ray moves and enlarges.
+// `black_hole C, R [falloff F] [strength S] [inverse] [repeat V] [turbulence T]`.
 std::shared_ptr<const Warp> blackHole(WarpItems& r) {
   size_t i = 0;
   BlackHoleArgs a;
@@ -91,19 +86,9 @@ std::shared_ptr<const Warp> blackHole(WarpItems& r) {
     if (word == "strength") a.strength = r.number(k);
     if (word == "repeat") a.repeat = r.vector(k);
     if (word == "inverse") a.inverse = true;
-    if (word == "turbulence") {
-      r.refuse(r.node().items[k].loc, "turbulence in a black_hole");
-      r.vector(k);
-    }
+    if (word == "turbulence") a.turbulence = r.vector(k);
     return word == "falloff" || word == "strength" || word == "repeat" || word == "inverse" || word == "turbulence";
   });
-  for (int k = 0; k < 3; ++k) {
-    const bool fits = a.centre[k] >= a.radius && a.centre[k] + a.radius <= a.repeat[k];
-    if (a.repeat[k] != 0 && !fits) {
-      r.refuse(r.node().items[0].loc, "a black_hole larger than its repeat block");
-      break;
-    }
-  }
   return makeBlackHoleWarp(a);
 }
 

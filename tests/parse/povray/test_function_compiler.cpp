@@ -146,9 +146,9 @@ TEST_CASE("a function that does not compile is refused where it is drawn", "[fun
   };
   CHECK(failure("isosurface { function { f_helix1(x, y, z, 1, 2, 3, 4, 5, 6, 7) } }\n") ==
         "scene.pov:3:25: error: 'f_helix1' is not supported yet");
-  CHECK(failure("#declare f_tiling = function { pattern { tiling 1 } }\n"
-                "sphere { 0, 1 pigment { function { f_tiling(x, y, z) } } }\n") ==
-        "scene.pov:4:36: error: 'f_tiling' is not supported yet");
+  CHECK(failure("#declare f_square = function { pattern { square } }\n"
+                "sphere { 0, 1 pigment { function { f_square(x, y, z) } } }\n") ==
+        "scene.pov:4:36: error: 'f_square' is not supported yet");
   CHECK(failure("isosurface { function { internal(25) } }\n") ==
         "scene.pov:3:25: error: 'internal(25)' is not supported yet");
 }

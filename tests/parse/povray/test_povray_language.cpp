@@ -287,8 +287,8 @@ TEST_CASE("povray: each directive is told by its name, and an unknown one is an 
 
 TEST_CASE("povray: what cannot be drawn yet is refused as not supported, after the whole file has parsed", "[povray]") {
   CHECK(failure("#version 3.7;\n  ovus { 1, 0.5 }\n") == "scene.pov:2:3: error: 'ovus' is not supported yet");
-  CHECK(failure("#version 3.7;\nsphere { 0, 1 pigment { tiling 1 } }\n") ==
-        "scene.pov:2:25: error: 'tiling' is not supported yet");
+  CHECK(failure("#version 3.7;\nsphere { 0, 1 pigment { square } }\n") ==
+        "scene.pov:2:25: error: 'square' is not supported yet");
   // A typo later in the file is still a typo.
   CHECK(failure("#version 3.7;\nsuperellipsoid { <1, 0.5> }\nsphere { 0, 1 pigment { Rde } }\n") ==
         "scene.pov:3:25: error: undeclared identifier 'Rde'");

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -41,6 +42,14 @@ struct ReadingContext {
   // The scene's working gamma for an image map's colours when it is read: assumed_gamma, or nothing before
   // #version 3.7, which takes them as they are.
   std::function<std::optional<double>()> imageGamma;
+  // How each pattern read was made, its kind and settings, so that a later block which modifies it (`texture {
+  // T pigment { octaves 3 } }`) makes it again with its own modifiers, as POV-Ray does.
+  struct PatternRecipe {
+    const PatternKind* kind;
+    PatternArgs args;
+  };
+  std::shared_ptr<std::map<std::shared_ptr<const Pattern>, PatternRecipe>> patternRecipes =
+      std::make_shared<std::map<std::shared_ptr<const Pattern>, PatternRecipe>>();
 };
 
 // `image_map { [type] "file" … }` (image_map_reader.cpp); nothing when something in it is refused.
