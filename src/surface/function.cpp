@@ -44,7 +44,7 @@ double ellipsoid(const double* a) {
 }
 double noise3d(const double* a) { return noise({a[0], a[1], a[2]}, NoiseGenerator::RangeCorrected); }
 double noiseGenerator(const double* a) {
-  return noise({a[0], a[1], a[2]}, a[3] < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected);
+  return noise({a[0], a[1], a[2]}, noiseGeneratorOf(a[3]));
 }
 
 constexpr Internal kInternals[] = {

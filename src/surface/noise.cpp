@@ -42,15 +42,22 @@ constexpr double kTable[267] = {
     -0.246937, 0.659449, -0.027512, 0.821897, -0.226215, 0.0181735, 0.500481, -0.420127, -0.427878, 0.566186,
 };
 
-// The lattice hash: a permutation of 0..4095 shuffled by POV-Ray's rand() seeded with 0 (the generator
-// docs/povray-language.md describes, its bits 16..30), applied to x, then y, then z.
+// POV-Ray's rand() stepped from a seed: bits 16..30 of its 32-bit state (docs/povray-language.md, "Random numbers").
+struct PovRand {
+  uint32_t state;
+  constexpr int operator()() {
+    state = state * 1812433253u + 12345u;
+    return int(state >> 16 & 0x7fff);
+  }
+};
+
+// The lattice hash: a permutation of 0..4095 shuffled by rand() seeded with 0, applied to x, then y, then z.
 constexpr std::array<uint16_t, 4096> makePermutation() {
   std::array<uint16_t, 4096> t{};
   for (int i = 0; i < 4096; ++i) t[size_t(i)] = uint16_t(i);
-  uint32_t state = 0;
+  PovRand rand{0};
   for (int i = 4095; i >= 0; --i) {
-    state = state * 1812433253u + 12345u;
-    const size_t j = ((state >> 16) & 0x7fff) % 4096;
+    const size_t j = size_t(rand() % 4096);
     const uint16_t swapped = t[size_t(i)];
     t[size_t(i)] = t[j];
     t[j] = swapped;
@@ -80,6 +87,59 @@ const std::array<double, 4098>& cellTable() {
 }
 
 double sCurve(double a) { return a * a * (3 - 2 * a); }
+
+// Generator 3's tables, both drawn from rand() seeded with 1 (docs/povray-noise.md, "Generator 3"): 2048 unit
+// gradients, each the first triple of draws (mod 4096, less 2048) no longer than 2048, then a permutation of
+// 0..2047 shuffled at its even places from 2048 down, where place 2048 starts as 0; it is stored twice over so
+// that a lookup's sum of two entries needs no wrap.
+struct PerlinTables {
+  std::array<glm::dvec3, 2048> gradient;
+  std::array<uint16_t, 4096> permutation;
+};
+
+const PerlinTables& perlinTables() {
+  static const PerlinTables tables = [] {
+    PerlinTables t{};
+    PovRand rand{1};
+    for (glm::dvec3& g : t.gradient) {
+      int v[3], length2;
+      do {
+        for (int& c : v) c = rand() % 4096 - 2048;
+        length2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+      } while (length2 > 2048 * 2048);
+      const double length = std::sqrt(double(length2));
+      g = {v[0] / length, v[1] / length, v[2] / length};
+    }
+    std::array<uint16_t, 2049> p{};
+    for (int i = 0; i < 2048; ++i) p[size_t(i)] = uint16_t(i);
+    for (int i = 2048; i > 0; i -= 2) std::swap(p[size_t(i)], p[size_t(rand() % 2048)]);
+    for (int i = 0; i < 4096; ++i) t.permutation[size_t(i)] = p[size_t(i & 2047)];
+    return t;
+  }();
+  return tables;
+}
+
+// Generator 3: gradient noise without lattice values, on a lattice shifted by 10000000.023157213 (the double
+// nearest it, which is also what sets its precision: the noise steps every 2⁻²⁹ near the origin).
+double perlinNoise(const glm::dvec3& p) {
+  constexpr double kShift = 10000000 + 0xBDB432p-29;
+  const PerlinTables& t = perlinTables();
+  const glm::dvec3 q = p + glm::dvec3(kShift);
+  const glm::dvec3 fl = glm::floor(q);
+  const glm::dvec3 f = q - fl;
+  const glm::dvec3 s = {sCurve(f.x), sCurve(f.y), sCurve(f.z)};
+  const int bx = int(fl.x), by = int(fl.y), bz = int(fl.z);
+  double sum = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const int i = corner >> 2 & 1, j = corner >> 1 & 1, k = corner & 1;
+    const double w = (i ? s.x : 1 - s.x) * (j ? s.y : 1 - s.y) * (k ? s.z : 1 - s.z);
+    const size_t row = t.permutation[size_t((bx + i) & 2047)] + size_t((by + j) & 2047);
+    const glm::dvec3& g = t.gradient[(t.permutation[row] + size_t((bz + k) & 2047)) & 2047];
+    sum += w * (g.x * (f.x - i) + g.y * (f.y - j) + g.z * (f.z - k));
+  }
+  // Measured: 0.4925 at every lattice point and 0.795 times the gradient beside it.
+  return std::clamp(0.4925 + 0.795 * sum, 0.0, 1.0);
+}
 
 // The lattice cell of p, as POV-Ray finds it: coordinates shifted by 10000, then floored.
 struct Cell {
@@ -117,6 +177,7 @@ template <int components> std::array<double, components> latticeSum(const glm::d
 }  // namespace
 
 double noise(const glm::dvec3& p, NoiseGenerator g) {
+  if (g == NoiseGenerator::Perlin) return perlinNoise(p);
   const double sum = latticeSum<1>(p)[0];
   // The range-corrected generator maps the sum's measured extremes, about -1.05 and 0.99, onto [0, 1].
   const double v = g == NoiseGenerator::Original ? sum + 0.5 : (sum + 1.05242) * 0.48985582;

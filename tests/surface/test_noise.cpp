@@ -166,6 +166,38 @@ constexpr double kSpiral2[] = {
     0.2804626452896724, 0.0207511038086614, 0.3018286715438094, 0.2636078720136363,
     0.6169513218234317, 0.0464290646760754, 0.4981916307003504, 0.9384988745670038};
 
+// noise_generator 3 (global_settings' in POV-Ray's run): the noise, and the patterns whose sums depend on the
+// generator, with the same modifiers as above.
+constexpr double kNoise3[] = {
+    0.9097456744535768, 0.313743449470324, 0.6412497516190048, 0.4971134100486281,
+    0.541662650520613, 0.7564669959522956, 0.3240813443975229, 0.4912258119656659,
+    0.5228019597539789, 0.474673533433763, 0.687182837801608, 0.5240268174894488};
+
+constexpr double kGranite3[] = {
+    0.5820294839943064, 0.781855725356861, 0.2972099877571722, 0.1330522158640063,
+    0.2829250000421946, 0.2593069840870273, 0.3410751204208369, 0.4059435246583216,
+    0.427652584403855, 0.6225536466877379, 0.164386609839005, 0.0540434890634499};
+
+constexpr double kWrinkles3[] = {
+    0.7267880837421846, 0.253623817582619, 0.772832320966774, 0.4495284932506985,
+    0.5230824995186639, 0.6403435349758163, 0.2639872204027578, 0.5436654307045398,
+    0.547927467506579, 0.5812804744283385, 0.6833850995193759, 0.5201748209543233};
+
+constexpr double kAgate3[] = {
+    0.2737090924485719, 0.9999911112163827, 0.7888468592337577, 0.8111739927195255,
+    0.054412107989126, 0.3975581317149593, 0.8805381199926109, 0.4103450105578317,
+    0.0906604958823507, 0.6202879176003305, 0.9535246439902624, 0.8977810894943821};
+
+constexpr double kMarble3[] = {  // with ramp_wave, as kMarble
+    0.4180447261760197, 0.0151543009951218, 0.5970503013997801, 0.3755745613445898,
+    0.3475146850584272, 0.2071104889091777, 0.7482467255636349, 0.5974404690969881,
+    0.1432253072762197, 0.3100795052631589, 0.1335460295863946, 0.6396058700048948};
+
+constexpr double kBozoTurbulence3[] = {
+    0.915561078480838, 0.3904348919198135, 0.6234611352748896, 0.4631043909050822,
+    0.5455985365714113, 0.7635302682452474, 0.4160623040650627, 0.4637905833137059,
+    0.6205560427531669, 0.4920686660941082, 0.6552772148394101, 0.5827295949106377};
+
 constexpr double kExact = 1e-11;  // POV-Ray printed 16 decimals; the sums agree to the last few bits
 
 TEST_CASE("noise: both generators and the vector noise give POV-Ray's values", "[noise]") {
@@ -176,6 +208,19 @@ TEST_CASE("noise: both generators and the vector noise give POV-Ray's values", "
     const glm::dvec3 v = vectorNoise(kPoints[i]);
     for (int c = 0; c < 3; ++c) CHECK(v[c] == Approx(kVectorNoise[i][c]).margin(kExact));
   }
+}
+
+TEST_CASE("noise: generator 3 gives POV-Ray's values, and the vector noise is the same for every generator", "[noise]") {
+  for (size_t i = 0; i < std::size(kPoints); ++i) {
+    INFO(i);
+    CHECK(noise(kPoints[i], NoiseGenerator::Perlin) == Approx(kNoise3[i]).margin(kExact));
+  }
+  // 0.4925 at a corner of its lattice, which lies 0.0231572… below the integers.
+  const double corner = -(0xBDB432p-29);
+  CHECK(noise({corner, 1 + corner, 2 + corner}, NoiseGenerator::Perlin) == 0.4925);
+  CHECK(noiseGeneratorOf(3.5) == NoiseGenerator::Perlin);
+  CHECK(noiseGeneratorOf(2) == NoiseGenerator::RangeCorrected);
+  CHECK(noiseGeneratorOf(1) == NoiseGenerator::Original);
 }
 
 TEST_CASE("noise: turbulence with POV-Ray's single-precision omega and lambda", "[noise]") {
@@ -232,6 +277,24 @@ TEST_CASE("noise patterns: turbulence displaces bozo, and marble and wood take i
   a.turbulence.omega = 0.7f;
   a.turbulence.lambda = 2.5f;
   checkPattern("marble", a, kMarble);
+}
+
+TEST_CASE("noise patterns: granite, wrinkles, agate, marble and turbulence with generator 3", "[noise]") {
+  PatternArgs a;
+  a.noise.own = NoiseGenerator::Perlin;
+  checkPattern("bozo", a, kNoise3);
+  checkPattern("granite", a, kGranite3);
+  checkPattern("wrinkles", a, kWrinkles3);
+  a.agateTurbulence = 0.5;
+  checkPattern("agate", a, kAgate3);
+  a.turbulence.amount = {0.5, 0.2, 0.1};
+  checkPattern("bozo", a, kBozoTurbulence3);
+  a.turbulence = Turbulence{};
+  a.turbulence.amount = glm::dvec3(0.5);
+  a.turbulence.octaves = 3;
+  a.turbulence.omega = 0.7f;
+  a.turbulence.lambda = 2.5f;
+  checkPattern("marble", a, kMarble3);
 }
 
 TEST_CASE("noise patterns: crackle's forms, metrics, offset and solid cells, and cells", "[noise]") {

@@ -8,8 +8,13 @@
 namespace rt {
 
 // global_settings' noise_generator, or a pattern's own: 1 the original noise, 2 the same with its range
-// stretched toward [0, 1] (POV-Ray 3.7's default), 3 Perlin's improved noise (not drawn yet).
+// stretched toward [0, 1] (POV-Ray 3.7's default), 3 a gradient noise of its own (called Perlin's by the manual).
 enum class NoiseGenerator : unsigned char { Original = 1, RangeCorrected = 2, Perlin = 3 };
+// The generator a noise_generator number names, its fraction dropped as POV-Ray does (3.5 is 3).
+inline NoiseGenerator noiseGeneratorOf(double n) {
+  if (n >= 3 && n < 4) return NoiseGenerator::Perlin;
+  return n < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
+}
 
 // Smooth noise in [0, 1], varying over unit distances.
 double noise(const glm::dvec3& p, NoiseGenerator g);

@@ -1027,8 +1027,11 @@ class Builder {
         } else if (w == "assumed_gamma" && v && v->type == Value::Type::Float) {
           assumedGamma_ = v->v[0];
         } else if (w == "noise_generator" && v && v->type == Value::Type::Float) {
-          if (v->v[0] == 3) refuse(it.loc, "noise_generator 3");
-          *context_.sceneNoise = v->v[0] < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
+          // POV-Ray drops the fraction and stops at anything but 1, 2 or 3.
+          if (!(v->v[0] >= 1 && v->v[0] < 4)) {
+            throw ParseError(it.loc, "noise_generator in global_settings must be 1, 2 or 3, found " + shortest(v->v[0]));
+          }
+          *context_.sceneNoise = noiseGeneratorOf(v->v[0]);
         } else if (w == "adc_bailout" && v && v->type == Value::Type::Float) {
           scene_.adcBailout = float(std::max(0.0, v->v[0]));
         } else if (w == "irid_wavelength" && v && v->numeric()) {

@@ -372,10 +372,8 @@ struct PatternDraft {
         throw ParseError(it.loc, "'exponent' belongs to a mandel or julia pattern");
       }
       args.fractal.exponent = x >= 2 && x < 34 ? int(x) : 2;  // POV-Ray warns and takes 2 outside 2 to 33
-    } else if (x == 3) {
-      context.refuse(it.loc, "noise_generator 3");
     } else {
-      args.noise.own = x < 2 ? NoiseGenerator::Original : NoiseGenerator::RangeCorrected;
+      args.noise.own = noiseGeneratorOf(x);
     }
     modified = true;
     return true;

@@ -121,6 +121,7 @@ TEST_CASE("functions.inc's internal functions give POV-Ray's values", "[function
   CHECK(value("f_noise3d(0.3, 0.7, 1.1)") == Approx(0.689585217264).margin(1e-12));
   CHECK(value("f_snoise3d(0.3, 0.7, 1.1)") == Approx(0.379170434528).margin(1e-12));
   CHECK(value("f_noise_generator(0.3, 0.7, 1.1, 1)") == Approx(0.855310987588).margin(1e-12));
+  CHECK(value("f_noise_generator(0.3, 0.7, 1.1, 3)") == Approx(0.573302353883).margin(1e-12));
   CHECK(value("f_rounded_box(1, 2, 3, 0.2, 0.5, 0.6, 0.7)") == Approx(2.849589136395).margin(1e-12));
   CHECK(value("f_rounded_box(0.1, 0.2, 0.3, 0.2, 0.5, 0.6, 0.7)") == Approx(-0.200001).margin(1e-12));
   CHECK(value("f_rounded_box(0.45, 0.5, 0.3, 0.2, 0.5, 0.6, 0.7)") == Approx(-0.019723436227).margin(1e-12));
@@ -256,12 +257,12 @@ TEST_CASE("a pigment function raytrace does not draw is refused where it is draw
   CHECK(pigmentFunctionFailure("sphere { 0, 1 pigment { function { F(x, y, z, 1).x } } }\n") ==
         "scene.pov:4:36: error: 'F with too many arguments' is not supported yet");
   // The refused pigment is named where it is, whether drawn through a function or called in SDL.
-  CHECK(pigmentFunctionFailure("#declare Q = function { pigment { bozo noise_generator 3 } }\n"
+  CHECK(pigmentFunctionFailure("#declare Q = function { pigment { spiral1 2 turbulence 0.3 } }\n"
                                "sphere { 0, 1 pigment { function { Q(x, y, z).x } } }\n") ==
-        "scene.pov:4:40: error: 'noise_generator 3' is not supported yet");
-  CHECK(pigmentFunctionFailure("#declare Q = function { pigment { bozo noise_generator 3 } }\n"
+        "scene.pov:4:25: error: 'turbulence on spiral1' is not supported yet");
+  CHECK(pigmentFunctionFailure("#declare Q = function { pigment { spiral1 2 turbulence 0.3 } }\n"
                                "#declare V = Q(1, 2, 3);\n") ==
-        "scene.pov:4:40: error: 'noise_generator 3' is not supported yet");
+        "scene.pov:4:25: error: 'turbulence on spiral1' is not supported yet");
 }
 
 }  // namespace rt::povray

@@ -221,6 +221,11 @@ TEST_CASE("povray scene: a fog's turbulence and its modifiers; the scene's noise
   CHECK(d.fogs[1].turbDepth == 0.5);
   CHECK(failure("fog { distance 5 rgb 1 turbulence 1 warp { repeat x } }\n") ==
         "scene.pov:3:37: error: 'warp' is not supported yet");
+  CHECK(scene("fog { distance 5 rgb 1 turbulence 0.5 }\nglobal_settings { noise_generator 3.5 }\n")
+            .fogs[0]
+            .noise.get() == NoiseGenerator::Perlin);  // POV-Ray drops the fraction
+  CHECK(failure("global_settings { noise_generator 4 }\n") ==
+        "scene.pov:3:19: error: noise_generator in global_settings must be 1, 2 or 3, found 4");
 }
 
 TEST_CASE("povray scene: scene-level media are read as an interior's, in order", "[povray][media]") {
@@ -604,7 +609,7 @@ plane { y, 0 texture { pigment { White } finish { diffuse 0.2 } } translate x te
   }
 }
 
-TEST_CASE("povray scene: turbulence and its modifiers may follow the map; noise_generator 3 is refused", "[povray]") {
+TEST_CASE("povray scene: turbulence and its modifiers may follow the map; a pattern's own noise_generator", "[povray]") {
   const SceneDesc s = scene(R"(
 #declare Grain = pigment { wood color_map { [0 Black] [1 White] } }
 plane { y, 0 pigment { Grain turbulence 0.5 octaves 3 } }
@@ -628,8 +633,10 @@ global_settings { noise_generator 1 }
   // An average's entries without weights weigh 1 each.
   const SceneDesc mixed = scene("plane { y, 0 pigment { average pigment_map { [pigment { Red }] [3 Blue] } } }\n");
   CHECK(mixed.objects[0].texture->at(glm::dvec3(0)).pigment == Color(0.25f, 0, 0.75f));
-  CHECK(failure("plane { y, 0 pigment { bozo noise_generator 3 color_map { [0 Red] [1 Blue] } } }\n") ==
-        "scene.pov:3:29: error: 'noise_generator 3' is not supported yet");
+  // Generator 3 where the scene's is 1: POV-Ray's bozo there is 0.6925634427549031.
+  const SceneDesc perlin = scene("plane { y, 0 pigment { bozo noise_generator 3 color_map { [0 rgb 0] [1 rgb 1] } } }\n"
+                                 "global_settings { noise_generator 1 }\n");
+  CHECK(perlin.objects[0].texture->at(glm::dvec3(0.3, 0.4, 0.7)).pigment.r == Approx(0.6925634427549031).margin(1e-6));
   CHECK(failure("plane { y, 0 pigment { spiral1 2 turbulence 0.3 } }\n") ==
         "scene.pov:3:14: error: 'turbulence on spiral1' is not supported yet");
   CHECK(failure("plane { y, 0 pigment { bozo octaves <1, 2, 3> color_map { [0 Red] [1 Blue] } } }\n") ==
