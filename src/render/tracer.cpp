@@ -428,7 +428,7 @@ Color Tracer<T>::shade(const Ray<T>& ray, const Hit<T>& hit, const Path& path, R
       local.specular += behind.specular;
     }
   }
-  if (w.local > 0) ambientLight = w.local * ambient(hit, m, side, path);
+  if (w.local != 0) ambientLight = w.local * ambient(hit, m, side, path);
   local.diffuse *= w.local;
   local.specular *= w.local;
   const Color secondaryLight = secondary(ray, hit, m, n, w, refracted, path, record);
