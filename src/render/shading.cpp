@@ -111,8 +111,14 @@ Color metallicTint(const Color& pigment, float metallic, float cosTheta) {
 
 Color interiorFade(const Material& m, float distance) {
   const SurfaceExtras& e = *m.extras;
+  if (!std::isfinite(distance)) return Color(1);
   const float d = distance / e.fadeDistance;
-  const float a = e.fadePower >= 1000 ? std::exp(-d) : 1 / (1 + std::pow(d, e.fadePower));
+  if (e.fadePower >= 1000) {
+    Color kept;
+    for (int c = 0; c < 3; ++c) kept[c] = std::exp(-(1 - e.fadeColor[c]) * d);
+    return kept;
+  }
+  const float a = 1 / (1 + std::pow(d, e.fadePower));
   return a + (1 - a) * e.fadeColor;
 }
 

@@ -194,11 +194,32 @@ TEST_CASE("POV-Ray's interior fade: half at the fade distance, tinted by the fad
   CHECK_THAT(slab.g, WithinAbs(0.2, 1e-6));
   CHECK_THAT(slab.b, WithinAbs(0.6, 1e-6));
   CHECK_THAT(interiorFade(m, 1.0f).g, WithinAbs(0.5, 1e-6));
-  // A power of 1000 or more: exp(−d/fade_distance).
+  // A ray that hits nothing inside is not faded (POV-Ray's picture through a plane object, fade_power 2 or 1001,
+  // shows the background unchanged).
+  CHECK(interiorFade(m, std::numeric_limits<float>::infinity()) == Color(1.0f));
+}
+
+TEST_CASE("POV-Ray's exponential interior fade is tinted channel by channel", "[shading]") {
+  Material m;
+  SurfaceExtras e;
+  m.extras = &e;
+  e.fadeDistance = 2;
+  e.fadePower = 1001;
+  e.fadeColor = Color(0.0f, 0.5f, 0.9f);
+  // POV-Ray's linear picture of a slab 3 thick, fade_distance 2, over a white background: 0.2231 0.4724 0.8607,
+  // exp(−(1 − fade_color)·d/fade_distance) per channel.
+  const Color slab = interiorFade(m, 3.0f);
+  CHECK_THAT(slab.r, WithinAbs(0.2231, 1e-4));
+  CHECK_THAT(slab.g, WithinAbs(0.4724, 1e-4));
+  CHECK_THAT(slab.b, WithinAbs(0.8607, 1e-4));
+  // fade_power 1000 is already exponential; a channel of fade_color 1 keeps everything (POV-Ray: 0.1353 1 0.1353).
   e.fadePower = 1000;
-  e.fadeDistance = 0.5f;
-  CHECK_THAT(interiorFade(m, 1.0f).g, WithinAbs(std::exp(-2.0), 1e-6));
-  CHECK(interiorFade(m, std::numeric_limits<float>::infinity()) == e.fadeColor);
+  e.fadeDistance = 1;
+  e.fadeColor = Color(0.0f, 1.0f, 0.0f);
+  const Color thick = interiorFade(m, 2.0f);
+  CHECK_THAT(thick.r, WithinAbs(0.1353, 1e-4));
+  CHECK(thick.g == 1.0f);
+  CHECK(interiorFade(m, std::numeric_limits<float>::infinity()) == Color(1.0f));
 }
 
 TEST_CASE("POV-Ray's faked caustics: up to twice the light where the surface faces it", "[shading]") {

@@ -50,7 +50,8 @@ Color beerAttenuation(const Color& pigment, float distance);
 
 // POV-Ray's interior fade (SurfaceExtras::fadeDistance, POV-Ray 3.7 manual "Attenuation"): the fraction of each
 // channel left after `distance` inside, a + (1 − a)·fadeColor with a = 1/(1 + (distance/fadeDistance)^fadePower),
-// or a = exp(−distance/fadeDistance) for a fadePower of 1000 or more. An infinite path keeps fadeColor.
+// or exp(−(1 − fadeColor)·distance/fadeDistance) for a fadePower of 1000 or more (the manual's exp(−d/fade_distance)
+// tinted channel by channel, as POV-Ray's pictures show). An infinite path (a ray that hits nothing) is not faded.
 Color interiorFade(const Material& m, float distance);
 
 // POV-Ray's faked caustics (SurfaceExtras::caustics, POV-Ray 3.7 manual "Simulated Caustics"): a shadow ray that
