@@ -76,6 +76,14 @@ template <class T> Vec3<T> reflectDirection(const Vec3<T>& d, const Vec3<T>& n) 
   return glm::normalize(d - T(2) * glm::dot(d, n) * n);
 }
 
+template <class T> Vec3<T> reflectBent(const Vec3<T>& d, const Vec3<T>& n, const Vec3<T>& side) {
+  const Vec3<T> r = reflectDirection(d, n);
+  const T into = glm::dot(r, side);
+  if (into >= T(0)) return r;
+  if (glm::dot(d, n) > T(0)) return reflectDirection(d, side);
+  return glm::normalize(r - T(2) * into * side);
+}
+
 template <class T> std::optional<Vec3<T>> refractDirection(const Vec3<T>& d, const Vec3<T>& n, float ior) {
   const bool entering = glm::dot(d, n) <= T(0);
   const T eta = entering ? T(1) / T(ior) : T(ior);
@@ -156,6 +164,8 @@ template float cookTorranceSpecular(const Vec3<float>&, const Vec3<float>&, cons
 template float cookTorranceSpecular(const Vec3<double>&, const Vec3<double>&, const Vec3<double>&, float, float);
 template Vec3<float> reflectDirection(const Vec3<float>&, const Vec3<float>&);
 template Vec3<double> reflectDirection(const Vec3<double>&, const Vec3<double>&);
+template Vec3<float> reflectBent(const Vec3<float>&, const Vec3<float>&, const Vec3<float>&);
+template Vec3<double> reflectBent(const Vec3<double>&, const Vec3<double>&, const Vec3<double>&);
 template std::optional<Vec3<float>> refractDirection(const Vec3<float>&, const Vec3<float>&, float);
 template std::optional<Vec3<double>> refractDirection(const Vec3<double>&, const Vec3<double>&, float);
 

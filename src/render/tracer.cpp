@@ -880,7 +880,9 @@ Color Tracer<T>::secondary(const Ray<T>& ray, const Hit<T>& hit, const Material&
     if (options_.gi.enabled) child.key = childKey(path.key, kReflectionBranch);
     ++counts_.secondary;
     child.mirrored = true;
-    const Ray<T> mirrored = spawnRay(hit, reflectDirection(ray.dir, n), *scene_.arithmetic().offset);
+    const Vec3<T> side = viewerSide(hit, ray);
+    const Vec3<T> dir = n == side ? reflectDirection(ray.dir, n) : reflectBent(ray.dir, n, side);
+    const Ray<T> mirrored = spawnRay(hit, dir, *scene_.arithmetic().offset);
     const Traced r = trace(mirrored, RayRecord::Kind::Reflection, child, sub);
     reflection = w.reflection * reflectTint * r.color;
   }

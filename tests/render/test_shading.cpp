@@ -128,6 +128,26 @@ TEST_CASE("Reflection mirrors the direction about the normal", "[shading]") {
   CHECK_THAT(glm::length(flipped - r), WithinAbs(0.0, 1e-12));
 }
 
+TEST_CASE("A normal bent by a texture never reflects into the surface, as in POV-Ray", "[shading]") {
+  // A mirror plane y = 0 seen along d, its normal bent towards +z (POV-Ray's pictures of `normal { gradient z }`
+  // with a sky coloured by direction: bent by −0.5, d reflected about n goes down at y = −0.0335 and POV-Ray
+  // shows y = +0.0334; bent by −0.8, n faces away from d and POV-Ray shows d reflected about y, 0.0996).
+  const Vec3<double> d = unit(0, -1, 10);
+  const Vec3<double> up(0, 1, 0);
+  const Vec3<double> facing = unit(0, 1, 0.07);
+  const Vec3<double> naive = reflectDirection(d, facing);
+  REQUIRE(naive.y < 0);
+  const Vec3<double> mirrored = reflectBent(d, facing, up);
+  CHECK_THAT(mirrored.y, WithinAbs(-naive.y, 1e-12));
+  CHECK_THAT(mirrored.z, WithinAbs(naive.z, 1e-12));
+  const Vec3<double> raw = reflectBent(d, unit(0, 1, 0.2), up);
+  CHECK_THAT(raw.y, WithinAbs(-d.y, 1e-12));
+  CHECK_THAT(raw.z, WithinAbs(d.z, 1e-12));
+  // A bent normal that reflects out of the surface is kept.
+  const Vec3<double> out = reflectBent(d, unit(0, 1, -0.3), up);
+  CHECK_THAT(glm::length(out - reflectDirection(d, unit(0, 1, -0.3))), WithinAbs(0.0, 1e-12));
+}
+
 TEST_CASE("Refraction follows Snell's law entering and leaving, and reports total internal reflection",
           "[shading]") {
   const Vec3<double> n(0, 1, 0);  // outward

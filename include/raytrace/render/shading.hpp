@@ -39,6 +39,12 @@ float schlick(float cosTheta, float ior);
 // The mirror direction of incoming direction d about n (either orientation): d − 2(d·n)n (§c.3).
 template <class T> Vec3<T> reflectDirection(const Vec3<T>& d, const Vec3<T>& n);
 
+// POV-Ray's mirror direction about a normal n bent by a texture, the surface's own normal `side` facing the ray
+// (measured on POV-Ray's pictures, docs/povray-language.md): where d reflected about n would go into the surface,
+// it is mirrored back out by the surface (r − 2(r·side)·side) if n faces the ray, and d is reflected about
+// `side` instead if n faces away from it.
+template <class T> Vec3<T> reflectBent(const Vec3<T>& d, const Vec3<T>& n, const Vec3<T>& side);
+
 // Snell's law for incoming direction d at a surface with OUTWARD normal n (§c.4). Entering (d·n ≤ 0) bends by
 // 1/ior, leaving by ior about −n. Nothing on total internal reflection (negative radicand, docs/reference/stability.md
 // F9).
