@@ -460,8 +460,13 @@ Weights Tracer<T>::split(const Ray<T>& ray, const Hit<T>& hit, const Material& m
   if (w.transmission != 0) {
     // The outward normal as the shading normal bends it: hit.normal itself where nothing bends it.
     refracted = refractDirection(ray.dir, glm::dot(ray.dir, hit.normal) <= T(0) ? n : -n, m.ior);
-    if (!refracted) {  // total internal reflection: the transmitted share is reflected (§c.4)
-      w.reflection += w.transmission;
+    if (!refracted) {  // total internal reflection: the transmitted share is reflected (§c.4), or all (POV-Ray)
+      if (dialect_.totalReflectionWhole()) {
+        w.reflection = 1;
+        w.reflectionTint = Color(1);
+      } else {
+        w.reflection += w.transmission;
+      }
       w.transmission = 0;
       if (record) record->extraInfo.push_back("total-internal-reflection");
     }

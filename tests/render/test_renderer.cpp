@@ -339,6 +339,44 @@ TEST_CASE("A colour reflection tints what the surface reflects, channel by chann
              Color(0.2f, 0.2f, 0.1f), 1e-6);
 }
 
+TEST_CASE("Total internal reflection reflects whole, whatever reflection, filter and transmit", "[render]") {
+  // Inside a hollow glass half-space, looking up at a grazing angle: the ray cannot leave and is reflected to a
+  // floor of ambient 0.25. POV-Ray's linear values: (1 − f − t)·C·ambient + 0.25 whatever the reflection:
+  // 0.25 for filter 0.9 and reflection 0.7 (not 0.9 + 0.7 of it), 0.65 for rgb 0.5 filter 0.2 reflection 0.3.
+  const auto seen = [](const std::string& surface) {
+    const std::string text = "#version 3.7;\n"
+        "camera { orthographic location 0 direction <0, 0.2, 1> right 0.001*x up 0.001*y }\n"
+        "plane { y, -1 pigment { rgb 1 } finish { ambient 0.25 diffuse 0 } }\n"
+        "plane { y, 1 hollow on " + surface + " interior { ior 1.5 } }\n";
+    return centre(rt::povray::parsePovRay(text, "tir.pov", rt::povray::PovRayOptions{{}, 1, 1, false}));
+  };
+  checkColor(seen("pigment { rgbf <1, 1, 1, 0.9> } finish { ambient 0 diffuse 0 reflection 0.7 }"), Color(0.25f));
+  checkColor(seen("pigment { rgbf <0.5, 0.5, 0.5, 0.2> } finish { ambient 1 diffuse 0 reflection 0.3 }"),
+             Color(0.65f));
+  checkColor(seen("pigment { rgbft <0.5, 0.5, 0.5, 0.3, 0.2> } finish { ambient 1 diffuse 0 reflection 0.3 }"),
+             Color(0.5f));
+  // An opaque surface has nothing to reflect internally: its reflection alone, 0.5·0.5 + 0.3·0.25.
+  checkColor(seen("pigment { rgb 0.5 } finish { ambient 1 diffuse 0 reflection 0.3 }"), Color(0.575f));
+}
+
+TEST_CASE("A mirror whose normal a texture bends into the surface reflects out of it, as POV-Ray does", "[render]") {
+  // A grazing view of a mirror plane, its normal bent by `gradient z`, under a sky coloured by direction
+  // (green 0.5 + 0.5·y). POV-Ray's linear greens: 0.5167 bent by −0.5 (d reflected about the bent normal would go
+  // down at y = −0.0335: mirrored up), 0.5498 bent by −1 (the bent normal faces away: d reflected about y).
+  const auto seen = [](const std::string& bend) {
+    const std::string text = "#version 3.7;\n"
+        "#declare Bend = " + bend + ";\n"
+        "camera { orthographic location <0, 1, -10> look_at 0 right 0.001*x up 0.001*y }\n"
+        "sky_sphere { pigment { function { 0.5 + 0.5*y } color_map { [0 rgb 0] [1 rgb <0, 1, 0>] } } }\n"
+        "plane { y, 0 pigment { rgb 0 } finish { ambient 0 diffuse 0 reflection 1 }\n"
+        "  normal { gradient z Bend scale 100 translate -50*z } }\n";
+    return centre(rt::povray::parsePovRay(text, "bent.pov", rt::povray::PovRayOptions{{}, 1, 1, false}));
+  };
+  CHECK_THAT(seen("-0.5").g, Catch::Matchers::WithinAbs(0.5167, 2e-4));
+  CHECK_THAT(seen("-1").g, Catch::Matchers::WithinAbs(0.5498, 2e-4));
+  CHECK_THAT(seen("1").g, Catch::Matchers::WithinAbs(0.6784, 2e-4));
+}
+
 TEST_CASE("A filter or transmit outside [0, 1] is drawn as written, in eye rays and in shadows", "[render]") {
   // POV-Ray's `transmit 100` trick: the surface adds (1 − t)·ambient·C and t times what is behind, whatever t.
   const auto seen = [](const std::string& pigment) {

@@ -46,6 +46,7 @@ class Dialect {
     d.transparencyDimsReflection_ = false;
     d.filtersShadows_ = true;
     d.tintsEachCrossing_ = true;
+    d.totalReflectionWhole_ = true;
     if (gamma > 0) {
       d.toByte_ = ToByte::Srgb;
       d.gamma_ = float(gamma);
@@ -71,6 +72,11 @@ class Dialect {
     return entering || tintsEachCrossing_ ? pigment : Color(1);
   }
 
+  // Whether a transparent surface that reflects all the light through it (total internal reflection) reflects
+  // with weight 1, untinted, whatever its reflection, filter and transmit (POV-Ray: measured,
+  // docs/povray-language.md), or adds the share it lets through to its reflection (§c.4).
+  bool totalReflectionWhole() const { return totalReflectionWhole_; }
+
   // What a ray's colour becomes before the level above weighs it, and the largest it can be for a colour whose
   // largest channel is at most `brightest`.
   Color bounced(const Color& c) const { return clampsEachBounce_ ? glm::clamp(c, 0.0f, 1.0f) : c; }
@@ -92,6 +98,7 @@ class Dialect {
   bool reflectionTakesPigment_ = true;
   bool transparencyDimsReflection_ = true;
   bool tintsEachCrossing_ = false;
+  bool totalReflectionWhole_ = false;
   bool clampsEachBounce_ = false;
   int depthLimit_ = 5;
   bool shadesAtDepthLimit_ = true;
