@@ -913,6 +913,20 @@ TEST_CASE("A light with media_attenuation is dimmed by the scene's fogs and medi
   }
 }
 
+TEST_CASE("A medium inside an object with a patterned pigment is seen as in a plain one", "[render][media]") {
+  // hollow3.pov's sphere: its checker made the tracer miss the interior's medium, and draw none.
+  const auto seen = [](const char* pigment) {
+    return centre(povray::parsePovRay(std::string("#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+                                                  "camera { orthographic location <0, 0, -5> look_at 0 right x up y }\n"
+                                                  "background { rgb 0 }\nbox { -1, 1 hollow pigment { ") +
+                                          pigment + " } interior { media { emission 0.25 } } }\n",
+                                      "scene.pov", povray::PovRayOptions{{}, 1, 1, false}));
+  };
+  const Color plain = seen("rgbt 1");
+  checkColor(plain, Color(0.5f));  // emission 0.25 over the box's depth of 2
+  checkColor(seen("checker rgbt 1, rgbt 1"), plain);
+}
+
 TEST_CASE("A medium's density moves with its object", "[render][media]") {
   // The gradient's ramp, moved by the box's translate, reads from 0 at the box's near side: as unmoved.
   const auto seen = [](const char* box) {

@@ -92,9 +92,10 @@ template <class T> class Object {
   }
   void setTexture(std::shared_ptr<const Texture> texture) { texture_ = std::move(texture); }
   // Calls f(material) for every material a hit on this object can report: its own, or a group's parts'.
-  // A textured object reports its texture's bound.
+  // A textured object reports its texture's bound, and its own material too, which holds its interior (media).
   virtual void forEachMaterial(const std::function<void(const Material&)>& f) const {
-    f(texture_ ? texture_->bound : material_);
+    if (texture_) f(texture_->bound);
+    f(material_);
   }
   int id() const { return id_; }  // 1-based position in the scene file, as printrays shows it
 
