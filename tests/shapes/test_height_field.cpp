@@ -121,8 +121,8 @@ TEST_CASE("a height field's water level removes what lies under it, and smooth b
   CHECK(hit->normal.z == Approx(-std::sqrt(0.5)));
 }
 
-TEST_CASE("a height field's missing image, a pot file not a GIF, or a function's size below 2 by 2, is an error where it "
-          "is named",
+TEST_CASE("a height field's missing image, a pot file not a GIF, or a function's size below 2 by 2, is an error "
+          "where it is named",
           "[height_field]") {
   const test::TempDir dir;
   const auto failure = [&](const std::string& body) {
@@ -137,7 +137,8 @@ TEST_CASE("a height field's missing image, a pot file not a GIF, or a function's
         dir.file("scene.pov") + ":2:20: error: cannot find the height field image \"nowhere.png\"");
   dir.write("c.pot", kRgb);
   CHECK(failure("height_field { pot \"c.pot\" }\n") ==
-        dir.file("scene.pov") + ":2:20: error: the pot file \"" + dir.file("c.pot") + "\" is not a GIF of an even width");
+        dir.file("scene.pov") + ":2:20: error: the pot file \"" + dir.file("c.pot") +
+            "\" is not a GIF of an even width");
   CHECK(failure("height_field { function 1, 10 { x } }\n") ==
         dir.file("scene.pov") +
             ":2:16: error: a height field function's size must be at least 2 by 2, as in `function 100, 100 { … }`");
