@@ -15,10 +15,26 @@
 
 namespace rt {
 
-HeightImage readHeightImage(const std::string& path, const SourceLoc& at) {
+HeightImage readHeightImage(const std::string& path, const SourceLoc& at, bool pot) {
   std::ifstream in(path, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (!in.good() && !in.eof()) throw ParseError(at, "cannot read the height field image \"" + path + "\"");
+  if (pot) {
+    // Fractint's continuous-potential file: a GIF twice the field's width, the high bytes of 16-bit heights in
+    // its left half and their low bytes in its right half; POV-Ray 3.7 reads (high·256 + low)/65536 (its
+    // trace() on mtmand.pot gives exactly these).
+    const std::optional<PaletteImage> indexed = paletteIndices(bytes);
+    if (!indexed || indexed->width % 2 != 0) {
+      throw ParseError(at, "the pot file \"" + path + "\" is not a GIF of an even width");
+    }
+    const int w = indexed->width / 2;
+    HeightImage image{w, indexed->height, {}};
+    for (int y = 0; y < indexed->height; ++y) {
+      const int* row = indexed->indices.data() + size_t(y) * size_t(indexed->width);
+      for (int x = 0; x < w; ++x) image.heights.push_back((row[x] * 256 + row[w + x]) / 65536.0);
+    }
+    return image;
+  }
   if (std::optional<PaletteImage> indexed = paletteIndices(bytes)) {
     // What POV-Ray 3.7 gives a palette index: index/256 (measured with trace() on its height fields).
     HeightImage image{indexed->width, indexed->height, {}};

@@ -69,6 +69,21 @@ TEST_CASE("a height field's pixels: a palette's index over 256, a grey over its 
         std::vector<double>{153 * 256 / 65536.0, (1 * 256 + 2) / 65536.0});
 }
 
+TEST_CASE("a pot height field: a GIF twice as wide, high bytes on the left and low bytes on the right",
+          "[height_field]") {
+  // As POV-Ray reads mtmand.pot: its trace() gives (high·256 + low)/65536 at each point of the half-width grid.
+  const test::TempDir dir;
+  const SourceLoc at{std::string("scene.pov"), 1, 1};
+  const HeightImage pot = readHeightImage(dir.write("s.pot", kGif), at, true);
+  CHECK(pot.width == 2);
+  CHECK(pot.height == 3);
+  CHECK(pot.heights == std::vector<double>{(8 * 256 + 5) / 65536.0, (4 * 256 + 7) / 65536.0, (1 * 256 + 10) / 65536.0,
+                                           (3 * 256 + 9) / 65536.0, (6 * 256 + 2) / 65536.0, (0 * 256 + 11) / 65536.0});
+  const SceneDesc s = povIn(dir, "height_field { pot \"s.pot\" }\n");
+  const auto hf = makeObject<double>(s.objects[0], SphereMethod::Auto, 1, false);
+  CHECK(heightAt(*hf, 1, 1) == Approx((4 * 256 + 7) / 65536.0));
+}
+
 TEST_CASE("a height field lies over the unit square, the image's top row at z = 1, each square split from "
           "(x + 1, z) to (x, z + 1)", "[height_field]") {
   const test::TempDir dir;
@@ -106,7 +121,8 @@ TEST_CASE("a height field's water level removes what lies under it, and smooth b
   CHECK(hit->normal.z == Approx(-std::sqrt(0.5)));
 }
 
-TEST_CASE("a height field's missing image, or a function's size below 2 by 2, is an error where it is named",
+TEST_CASE("a height field's missing image, a pot file not a GIF, or a function's size below 2 by 2, is an error "
+          "where it is named",
           "[height_field]") {
   const test::TempDir dir;
   const auto failure = [&](const std::string& body) {
@@ -119,6 +135,10 @@ TEST_CASE("a height field's missing image, or a function's size below 2 by 2, is
   };
   CHECK(failure("height_field { png \"nowhere.png\" }\n") ==
         dir.file("scene.pov") + ":2:20: error: cannot find the height field image \"nowhere.png\"");
+  dir.write("c.pot", kRgb);
+  CHECK(failure("height_field { pot \"c.pot\" }\n") ==
+        dir.file("scene.pov") + ":2:20: error: the pot file \"" + dir.file("c.pot") +
+            "\" is not a GIF of an even width");
   CHECK(failure("height_field { function 1, 10 { x } }\n") ==
         dir.file("scene.pov") +
             ":2:16: error: a height field function's size must be at least 2 by 2, as in `function 100, 100 { … }`");

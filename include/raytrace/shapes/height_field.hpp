@@ -20,8 +20,9 @@ struct HeightImage {
   std::vector<double> heights;
 };
 
-// The heights of the image file at `path`; a ParseError at `at` when it cannot be read.
-HeightImage readHeightImage(const std::string& path, const SourceLoc& at);
+// The heights of the image file at `path`, a Fractint `pot` file when `pot`; a ParseError at `at` when it cannot
+// be read.
+HeightImage readHeightImage(const std::string& path, const SourceLoc& at, bool pot = false);
 
 // The heights of POV-Ray's `function W, H { … }`: f(x, y, 0) at x = i/(W − 1), y = j/(H − 1), the row j = 0 the
 // image's top row, kept in 16 bits as POV-Ray keeps them; a ParseError at `at` when the size is below 2 by 2 or
@@ -36,8 +37,12 @@ MeshData heightFieldMesh(const HeightImage& image, bool smooth, double waterLeve
 template <class Reader> MeshData readHeightField(Reader& r) {
   static constexpr std::string_view kTypes[] = {"exr", "gif", "hdr", "iff", "jpeg", "pgm", "png",
                                                 "pot", "ppm", "sys", "tga", "tiff"};
+  bool pot = false;
   for (std::string_view type : kTypes) {
-    if (r.keyword(type)) break;
+    if (r.keyword(type)) {
+      pot = type == "pot";
+      break;
+    }
   }
   const SourceLoc at = r.here();
   HeightImage image;
@@ -50,7 +55,7 @@ template <class Reader> MeshData readHeightField(Reader& r) {
     const std::string name = r.string("the height field's image file");
     const std::string path = r.findFile(name);
     if (path.empty()) throw ParseError(at, "cannot find the height field image \"" + name + "\"");
-    image = readHeightImage(path, at);
+    image = readHeightImage(path, at, pot);
   }
   bool smooth = false;
   double waterLevel = 0;
