@@ -46,10 +46,17 @@ void CsgDesc::describe(std::ostream& out) const {
   for (const ObjectDesc& c : children) out << "  - " << shapeName(c.shape) << "\n";
 }
 
+// POV-Ray inverts a union as the intersection of its inverted children (De Morgan), and a difference's later
+// children are inverted: there a union shows no surface inside another of its children, as POV-Ray's pictures
+// show (qtvr/qtvrpanorama.pov's bored box) — a merge, which is the same solid.
 template <class T> std::unique_ptr<Object<T>> CsgDesc::make(const ObjectBuild& b) const {
   std::vector<std::unique_ptr<Object<T>>> made;
-  for (const ObjectDesc& c : children) made.push_back(makeObject<T>(c, b.sphere, b.id, b.course));
-  return std::make_unique<Csg<T>>(op, std::move(made), name(), b.material, b.id);
+  for (size_t i = 0; i < children.size(); ++i) {
+    const bool inverted = b.inverted != (op == CsgOp::Difference && i > 0);
+    made.push_back(makeObject<T>(children[i], b.sphere, b.id, b.course, inverted));
+  }
+  const CsgOp madeOp = op == CsgOp::Union && b.inverted ? CsgOp::Merge : op;
+  return std::make_unique<Csg<T>>(madeOp, std::move(made), name(), b.material, b.id);
 }
 
 template std::unique_ptr<Object<float>> CsgDesc::make<float>(const ObjectBuild&) const;

@@ -38,10 +38,11 @@ std::optional<ObjectDesc> foldSimilarityIntoSphere(const ObjectDesc& desc) {
 }  // namespace
 
 template <class T>
-std::unique_ptr<Object<T>> makeObject(const ObjectDesc& desc, SphereMethod sphere, int id, bool course) {
+std::unique_ptr<Object<T>> makeObject(const ObjectDesc& desc, SphereMethod sphere, int id, bool course,
+                                      bool inverted) {
   const std::optional<ObjectDesc> folded = course ? std::nullopt : foldSimilarityIntoSphere(desc);
   const ObjectDesc& o = folded ? *folded : desc;
-  const ObjectBuild build{o.material, id, sphere, course};
+  const ObjectBuild build{o.material, id, sphere, course, inverted != o.inverse};
   auto object = std::visit([&](const auto& k) { return k.template make<T>(build); }, o.shape);
   object->setTexture(o.texture);
   const Mat4<T> m = course ? composeTransforms<T>(o.transforms) : Mat4<T>(o.worldFromObject());
@@ -58,7 +59,7 @@ std::unique_ptr<Object<T>> makeObject(const ObjectDesc& desc, SphereMethod spher
   return std::make_unique<Clipped<T>>(std::move(object), std::move(clips), o.material, id);
 }
 
-template std::unique_ptr<Object<float>> makeObject<float>(const ObjectDesc&, SphereMethod, int, bool);
-template std::unique_ptr<Object<double>> makeObject<double>(const ObjectDesc&, SphereMethod, int, bool);
+template std::unique_ptr<Object<float>> makeObject<float>(const ObjectDesc&, SphereMethod, int, bool, bool);
+template std::unique_ptr<Object<double>> makeObject<double>(const ObjectDesc&, SphereMethod, int, bool, bool);
 
 }  // namespace rt

@@ -8,6 +8,7 @@
 #include "raytrace/parse/pov_parser.hpp"
 #include "raytrace/parse/povray/scene_builder.hpp"
 #include "raytrace/scene/arithmetic.hpp"
+#include "raytrace/shapes/box.hpp"
 #include "raytrace/shapes/csg.hpp"
 #include "raytrace/shapes/make_object.hpp"
 #include "shape_oracle.hpp"
@@ -103,6 +104,34 @@ TEMPLATE_TEST_CASE("a union keeps inner walls and a merge removes them", "[csg]"
   CHECK(fused->intersect(fromLeft, Interval<T>{})->t == Approx(3.6).epsilon(1e-6));
   CHECK(join->inside({T(1.2), 0, 0}));
   CHECK_FALSE(join->inside({T(1.5), 0, 0}));
+}
+
+// POV-Ray inverts a union as the intersection of its inverted children, and a difference inverts its later
+// children: no inner wall of such a union is seen (POV-Ray's pictures of both: qtvr/qtvrpanorama.pov's bored box).
+TEMPLATE_TEST_CASE("an inverted union and a union cut away show no inner walls", "[csg]", float, double) {
+  using T = TestType;
+  ObjectDesc pair;
+  pair.shape = CsgDesc{CsgOp::Union, {sphere({-0.4, 0, 0}, 1, kRed), sphere({0.4, 0, 0}, 1, kGreen)}};
+  // From the origin along +x, A's far side at x = 0.6 is a wall inside B; B's at x = 1.4 is the outside.
+  const Ray<T> fromCentre{{0, 0, 0}, {1, 0, 0}};
+  ObjectDesc notPair = pair;
+  notPair.inverse = true;
+  const auto hole = makeObject<T>(notPair, SphereMethod::Robust, 1, false);
+  const auto outside = hole->intersect(fromCentre, Interval<T>{});
+  REQUIRE(outside);
+  CHECK(outside->t == Approx(1.4).epsilon(1e-6));
+  CHECK(outside->object->material().pigment == kGreen);
+  CHECK(outside->normal.x == Approx(-1));  // into B, out of the inverted solid's inside
+  CHECK_FALSE(hole->inside({T(1.2), 0, 0}));
+  CHECK(hole->inside({T(1.5), 0, 0}));
+  // A box from x = 0 to 3 less the pair: along +x from the origin, the cut's far side at 1.4 is the hit.
+  ObjectDesc box;
+  box.shape = BoxDesc{{0, -2, -2}, {3, 2, 2}};
+  const auto cut = csg<T>(CsgOp::Difference, {box, pair});
+  const auto far = cut->intersect(fromCentre, Interval<T>{});
+  REQUIRE(far);
+  CHECK(far->t == Approx(1.4).epsilon(1e-6));
+  CHECK(far->object->material().pigment == kGreen);
 }
 
 TEMPLATE_TEST_CASE("a moved CSG child keeps its own material and the group's transform moves all", "[csg]", float,

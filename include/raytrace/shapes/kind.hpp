@@ -46,6 +46,7 @@ struct ObjectBuild {
   int id;               // 1-based position in the scene file
   SphereMethod sphere;  // the quadratic chosen for the scene (scene/arithmetic)
   bool course;          // the course tier's transforms (shapes/make_object.hpp)
+  bool inverted = false;  // under an odd number of inversions (an `inverse`, a difference's later child)
 };
 
 // The calls a kind's read() makes on the scene parser. Each names what it reads ("the sphere radius") for the
